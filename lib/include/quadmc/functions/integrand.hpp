@@ -1,0 +1,100 @@
+// The integrand interface: what every test function provides and every rule/estimator consumes.
+//
+// Batch contract (the layout of cubature's integrand_v): a batch of n points in s dimensions is
+// one contiguous row-major block, x[i*s + j] = coordinate j of point i, and the integrand writes
+// f(point i) into y[i]; y.size() == n == x.size() / s. Points are in the integrand's own domain
+// (its box), not in [0,1)^s: mapping the unit cube to the box is the caller's job. Kernels take
+// integrands as template parameters (static dispatch, inlined); the runner uses any_integrand,
+// which costs one virtual call per batch, never per point.
+//
+// Metadata (integrand_info) travels with each function so that a convergence study never needs
+// to look a reference value up elsewhere: the exact integral, the smoothness class that decides
+// the theoretical rate, and derivative bounds M_k = max|f^(k)| that the a-priori error bounds of
+// the rules need.
+#pragma once
+
+#include "quadmc/core/errors.hpp"
+
+#include <array>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+// How regular f is on its domain: decides which convergence rate theory predicts.
+enum class smoothness {
+  analytic,       // e.g. Genz oscillatory, Gaussian: every rule reaches its full order
+  smooth,         // C^k for the k in integrand_info::continuous_derivatives (finite)
+  c0,             // continuous with a kink (|x − c|, Genz continuous, Sobol' g)
+  discontinuous,  // jumps (step, indicators, Genz discontinuous, occluded irradiance)
+  singular,       // unbounded derivative or value at the boundary (√x, 1/√x, log x)
+};
+
+constexpr const char* to_string(smoothness s) noexcept {
+  switch (s) {
+    case smoothness::analytic: return "analytic";
+    case smoothness::smooth: return "smooth";
+    case smoothness::c0: return "C0";
+    case smoothness::discontinuous: return "discontinuous";
+    case smoothness::singular: return "singular";
+  }
+  return "?";
+}
+
+// An axis-aligned box Π[lower_j, upper_j].
+struct box {
+  std::vector<double> lower;
+  std::vector<double> upper;
+
+  std::size_t dimension() const noexcept { return lower.size(); }
+  double volume() const noexcept {
+    double v = 1.0;
+    for (std::size_t j = 0; j < lower.size(); ++j) v *= upper[j] - lower[j];
+    return v;
+  }
+  static box unit(std::size_t s) { return box{std::vector<double>(s, 0.0), std::vector<double>(s, 1.0)}; }
+};
+
+struct integrand_info {
+  std::string name;         // catalogue name as used in scenes, e.g. "genz_gaussian"
+  std::string formula;      // one line, for `quadmc list` and the README catalogue
+  box domain;               // integration domain; its dimension is s
+  double exact = NAN;       // the reference value ∫ f over the domain
+  std::string reference;    // how `exact` was obtained, e.g. "closed form", "Lambert polygon"
+  smoothness regularity = smoothness::analytic;
+  int continuous_derivatives = -1;  // k for smoothness::smooth (C^k); -1 = not applicable
+  // M_k = max over the domain of |∂^k f| along one coordinate (1D: |f^(k)|), k = 0…4, where
+  // known exactly; empty where unbounded or unknown. Used by the rules' a-priori bounds.
+  std::array<std::optional<double>, 5> derivative_bound{};
+
+  std::size_t dimension() const noexcept { return domain.dimension(); }
+};
+
+// Anything that evaluates a batch of points. info() is required so every integrand can say
+// what it is and what its integral is.
+template <class F>
+concept integrand = requires(const F& f, std::span<const double> x, std::span<double> y) {
+  { f.dimension() } -> std::convertible_to<std::size_t>;
+  { f.evaluate(x, y) } -> std::same_as<void>;
+  { f.info() } -> std::convertible_to<integrand_info>;
+};
+
+// Reports the first non-finite value of a batch with the point that produced it. One pass over
+// the batch after evaluation: the branch is never taken in a healthy run, so it costs a compare
+// per value, not a check inside the integrand.
+inline void check_finite_batch(std::string_view name, std::span<const double> x,
+                               std::span<const double> y, std::size_t s) {
+  bool all_finite = true;
+  for (double v : y) all_finite &= std::isfinite(v);
+  if (all_finite) [[likely]] return;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    if (!std::isfinite(y[i])) throw non_finite_value(name, x.subspan(i * s, s), y[i]);
+  }
+}
+
+}  // namespace quadmc
