@@ -10,10 +10,12 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 namespace quadmc {
 
@@ -21,12 +23,11 @@ namespace quadmc {
 class invalid_argument : public std::invalid_argument {
  public:
   invalid_argument(std::string_view parameter, std::string_view value, std::string_view expected)
-      : std::invalid_argument(fmt::format("invalid {} = {}: expected {}", parameter, value,
-                                          expected)),
+      : std::invalid_argument(
+            fmt::format("invalid {} = {}: expected {}", parameter, value, expected)),
         parameter_(parameter) {}
   // For messages that do not fit the parameter/value/expected shape (e.g. scene files).
-  explicit invalid_argument(const std::string& message)
-      : std::invalid_argument(message) {}
+  explicit invalid_argument(const std::string& message) : std::invalid_argument(message) {}
 
   const std::string& parameter() const noexcept { return parameter_; }
 
@@ -42,12 +43,13 @@ class non_finite_value : public std::domain_error {
                                       fmt::join(point, ", "))) {}
 };
 
-// Formats a value for an invalid_argument message; 17 significant digits so that the value
-// quoted is the value given, not a rounded neighbour.
+// Formats a value for an invalid_argument message with max_digits10 significant digits (17 for
+// a double, 9 for a float, 21 for x87 long double) so that the value quoted is the value given,
+// not a rounded neighbour.
 template <class T>
 std::string quote(const T& value) {
   if constexpr (std::is_floating_point_v<T>) {
-    return fmt::format("{:.17g}", value);
+    return fmt::format("{:.{}g}", value, std::numeric_limits<T>::max_digits10);
   } else {
     return fmt::format("{}", value);
   }

@@ -31,30 +31,42 @@ inline unsigned resolve_threads(unsigned requested) noexcept {
 
 // result = combine(…combine(combine(init, chunk_fn(0)), chunk_fn(1))…, chunk_fn(chunks − 1)).
 // chunk_fn(std::size_t) -> T must be safe to call concurrently for distinct chunks; combine(T&,
-// const T&) folds a chunk result into the accumulator. An exception thrown by any chunk is
-// rethrown here (the first one caught), after all threads have joined.
+// const T&) folds a chunk result into the accumulator. An exception thrown by a chunk is rethrown
+// here after all threads have joined: that of the lowest-numbered failing chunk, as a serial run
+// would throw. (After a failure no new chunk is handed out, but every chunk numbered below it
+// was handed out earlier and still runs to its end, so the lowest failure is always seen and the
+// error, like the result, does not depend on the thread count.)
 template <class T, class ChunkFn, class Combine>
 T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_fn,
                   Combine&& combine) {
   threads = resolve_threads(threads);
   constexpr std::size_t window = 4096;
-  std::vector<T> slots(std::min(chunks, window));
+  // One slot per chunk of the window, each written by one thread. Wrapped in a struct so that
+  // T = bool does not get std::vector<bool>, whose packed bits would make those writes a race.
+  struct slot {
+    T value;
+  };
+  std::vector<slot> slots(std::min(chunks, window));
   for (std::size_t begin = 0; begin < chunks; begin += window) {
     const std::size_t count = std::min(window, chunks - begin);
     const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(threads, count));
     if (workers <= 1) {
-      for (std::size_t c = 0; c < count; ++c) slots[c] = chunk_fn(begin + c);
+      for (std::size_t c = 0; c < count; ++c) slots[c].value = chunk_fn(begin + c);
     } else {
       std::atomic<std::size_t> next{0};
       std::exception_ptr failure;
+      std::size_t failed_chunk = count;
       std::mutex failure_mutex;
       auto work = [&] {
         for (std::size_t c = next.fetch_add(1); c < count; c = next.fetch_add(1)) {
           try {
-            slots[c] = chunk_fn(begin + c);
+            slots[c].value = chunk_fn(begin + c);
           } catch (...) {
             const std::lock_guard lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
+            if (c < failed_chunk) {
+              failed_chunk = c;
+              failure = std::current_exception();
+            }
             next.store(count);  // stop handing out chunks
           }
         }
@@ -66,7 +78,7 @@ T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_
       pool.clear();  // joins
       if (failure) std::rethrow_exception(failure);
     }
-    for (std::size_t c = 0; c < count; ++c) combine(init, slots[c]);
+    for (std::size_t c = 0; c < count; ++c) combine(init, slots[c].value);
   }
   return init;
 }

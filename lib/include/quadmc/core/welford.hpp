@@ -51,9 +51,7 @@ class welford {
                       : m2_ / static_cast<double>(count_ - 1);
   }
   // Standard error of the mean, √(s²/n).
-  double std_error() const noexcept {
-    return std::sqrt(variance() / static_cast<double>(count_));
-  }
+  double std_error() const noexcept { return std::sqrt(variance() / static_cast<double>(count_)); }
 
  private:
   std::uint64_t count_ = 0;

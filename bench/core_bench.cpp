@@ -1,0 +1,89 @@
+// Throughput of the numeric core: uniform doubles per second from philox_stream::fill_uniform
+// and terms per second for naive, pairwise and Neumaier summation.
+//
+// Use it to see what the hot-path building blocks cost per sample (a budget for point sets and
+// estimators), not for accuracy: the accuracy of these is tested in tests/core/. Counters are
+// items per second (Google Benchmark's kIsIterationInvariantRate), one item = one uniform or one
+// summed term. Source of the generator: Salmon et al., SC'11 (Philox4x32-10).
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "quadmc/core/rng.hpp"
+#include "quadmc/core/summation.hpp"
+
+namespace {
+
+// fill_uniform over a batch of `range(0)` values; batch 256 is what the estimators use.
+void BM_fill_uniform(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const quadmc::philox_stream rng(1, quadmc::stream_id({1}));
+  std::vector<double> out(n);
+  std::uint64_t first = 0;
+  for (auto _ : state) {
+    rng.fill_uniform(first, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+    first += n;
+  }
+  state.counters["uniforms_per_second"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_fill_uniform)->Arg(256)->Arg(4096)->Arg(1 << 20);
+
+// uniform(i) one at a time: what a caller pays for not batching.
+void BM_uniform_one_at_a_time(benchmark::State& state) {
+  const quadmc::philox_stream rng(1, quadmc::stream_id({2}));
+  std::uint64_t i = 0;
+  for (auto _ : state) {
+    double s = 0;
+    for (int k = 0; k < 256; ++k) s += rng.uniform(i++);
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["uniforms_per_second"] =
+      benchmark::Counter(256, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_uniform_one_at_a_time);
+
+std::vector<double> terms(std::size_t n) {
+  std::vector<double> x(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double d = static_cast<double>(k + 1);
+    x[k] = 1.0 / (d * d);
+  }
+  return x;
+}
+
+void BM_naive_sum(benchmark::State& state) {
+  const auto x = terms(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(quadmc::naive_sum(x));
+  state.counters["terms_per_second"] = benchmark::Counter(
+      static_cast<double>(x.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_naive_sum)->Arg(4096)->Arg(1 << 22);
+
+void BM_pairwise_sum(benchmark::State& state) {
+  const auto x = terms(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(quadmc::pairwise_sum(x));
+  state.counters["terms_per_second"] = benchmark::Counter(
+      static_cast<double>(x.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_pairwise_sum)->Arg(4096)->Arg(1 << 22);
+
+void BM_neumaier_sum(benchmark::State& state) {
+  const auto x = terms(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    quadmc::neumaier_sum s;
+    for (const double v : x) s.add(v);
+    benchmark::DoNotOptimize(s.value());
+  }
+  state.counters["terms_per_second"] = benchmark::Counter(
+      static_cast<double>(x.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_neumaier_sum)->Arg(4096)->Arg(1 << 22);
+
+}  // namespace
+
+BENCHMARK_MAIN();
