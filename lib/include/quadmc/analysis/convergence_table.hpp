@@ -1,0 +1,82 @@
+// The convergence table of one (integrand, s, method) series: every cell's statistics, the
+// rounding floor, the fitted slope with its interval, the theoretical slope, the verdict and the
+// work-precision row. The unit the report layer writes (DESIGN.md: "Estimates ──analyse──▶
+// ConvergenceTable per (integrand, method)").
+//
+// Use analyse_convergence once per series after the runner has all its cells. Not incremental:
+// the floor rule and the fit look at the whole ladder.
+//
+// The error of a cell is its RMSE over repetitions (|error| for one repetition), the x axis its
+// evaluations per repetition (THEORY.md: N = total function evaluations). Floor points, flagged by
+// rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
+// fitted error is > 0). The floor scale is |reference|; when the reference is 0 it falls back to
+// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table).
+#pragma once
+
+#include "quadmc/analysis/cell_statistics.hpp"
+#include "quadmc/analysis/power_law_fit.hpp"
+#include "quadmc/analysis/rounding_floor.hpp"
+#include "quadmc/analysis/slope_verdict.hpp"
+#include "quadmc/analysis/theoretical_rate.hpp"
+#include "quadmc/analysis/work_precision.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+// Input: one cell of the ladder — the scene's N and the repetitions run at it.
+struct convergence_cell {
+  std::uint64_t n = 0;  // the N the scene asked for (the plan's ladder value)
+  std::vector<repetition_result> repetitions;
+};
+
+// Input: one series, as the runner assembles it.
+struct convergence_series {
+  std::string integrand;
+  std::size_t s = 1;
+  std::string method;      // scene name, e.g. "midpoint"
+  std::string smoothness;  // quadmc::to_string(integrand_info::regularity)
+  double reference = 0.0;  // integrand_info::exact
+  std::vector<convergence_cell> cells;
+};
+
+struct analysis_options {
+  double confidence = 0.95;
+  double verdict_tolerance = 0.1;  // r of slope_verdict.hpp
+  rounding_floor_options floor;
+  std::vector<double> error_targets{default_error_targets.begin(), default_error_targets.end()};
+};
+
+struct convergence_row {
+  std::uint64_t n = 0;
+  cell_statistics stats;
+  bool floor = false;  // at the rounding floor: excluded from the fit
+};
+
+struct convergence_table {
+  std::string integrand;
+  std::size_t s = 1;
+  std::string method;
+  std::string smoothness;
+  double reference = 0.0;
+  std::vector<convergence_row> rows;  // in increasing N
+  rounding_floor floor;
+  power_law_fit fit;
+  theoretical_rate theory;
+  slope_verdict verdict = slope_verdict::no_fit;
+  std::vector<time_to_error> work_precision;
+
+  std::size_t points_used() const noexcept { return fit.points; }
+  std::size_t floor_points() const noexcept { return floor.count(); }
+};
+
+// Sorts the cells by N and analyses them. Throws invalid_argument for no cells, a cell without
+// repetitions, repeated N, evaluations that do not increase with N, an unknown smoothness class
+// or s = 0 (and whatever compute_cell_statistics rejects, naming the cell).
+convergence_table analyse_convergence(const convergence_series& series,
+                                      const analysis_options& options = {});
+
+}  // namespace quadmc

@@ -1,0 +1,43 @@
+// The table of theoretical convergence rates: the slope of RMSE (or |error| for a deterministic
+// rule) against N = total evaluations, for a method × smoothness class × dimension s.
+//
+// Use it to put a "theory" column beside every fitted slope and to decide the verdict
+// (slope_verdict.hpp). Every entry carries its source, taken from /work/shared/THEORY.md. Not a
+// bound with a constant: only the exponent; pre-asymptotic ladders can show other slopes
+// (THEORY.md: "fit slopes, do not compare with the asymptotic formula" for (log N)^s/N).
+//
+// Methods are the scene names: left_rectangle, right_rectangle, midpoint, trapezoid, simpson,
+// gauss_legendre, romberg, plain_mc, jittered, unjittered, padded_jittered, latin_hypercube,
+// importance. Smoothness classes are quadmc::to_string(smoothness): analytic, smooth, C0,
+// discontinuous, singular (taken as a string so this layer needs only core).
+// Deterministic rules are tensor products with n nodes per axis, N = nˢ, so a 1D rate n^−r
+// becomes N^(−r/s). Assumptions the class string cannot carry are stated in the note:
+// "smooth" means smooth enough for the rule's full order; "singular" means an integrable
+// endpoint singularity of the √x kind (THEORY.md's √x row), and plain Monte Carlo needs finite
+// variance (1/√x has none).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace quadmc {
+
+struct theoretical_rate {
+  std::optional<double> slope;  // empty: no finite algebraic slope (exponential) or no entry
+  std::string note;             // the assumption or why there is no slope
+  std::string source;           // where the rate comes from
+};
+
+// Throws invalid_argument for an unknown smoothness class or s = 0. An unknown method returns an
+// empty slope with the note "no entry for method …", so a new method never stops a run.
+theoretical_rate theoretical_slope(std::string_view method, std::string_view smoothness,
+                                   std::size_t s);
+
+// The method names and smoothness classes the table knows, in table order.
+std::span<const std::string_view> tabulated_methods() noexcept;
+std::span<const std::string_view> smoothness_classes() noexcept;
+
+}  // namespace quadmc

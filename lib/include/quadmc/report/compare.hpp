@@ -1,0 +1,79 @@
+// Compares two results folders (A = baseline, B = candidate): slopes side by side, the error
+// ratio at equal N and the time-to-error ratio, and a regression flag for `quadmc compare`
+// (which exits 1 on a regression).
+//
+// Use it on folders written by write_results_folder (it reads only convergence.csv and slopes.csv,
+// so folders from older versions with fewer added columns compare fine). Not a timing benchmark:
+// time ratios come from the convergence runs' wall clocks and vary with machine load; only slopes
+// decide the regression flag.
+//
+// Regression rule: for a series (integrand, s, method) fitted in both, B regresses when its slope
+// is shallower than A's by more than
+//     allowed = max(tolerance, √(h_A² + h_B²)),
+// h = half-width of the 95% CI. The root-sum-square is the half-width of the difference of two
+// independent estimates (normal approximation), so two runs of the same method differing only in
+// noise pass; `tolerance` (default 0.1) is the smallest slope loss worth failing a build over on
+// clean deterministic ladders whose CIs are ~0. A series that lost its fit in B, or is missing
+// from one side, is reported but is not a regression (scene changes do that).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+struct slope_comparison {
+  std::string integrand;
+  std::size_t s = 0;
+  std::string method;
+  std::optional<double> slope_a, slope_b;  // empty: missing or not fitted on that side
+  double half_width_a = 0.0, half_width_b = 0.0;
+  std::optional<double> theory;
+  double allowed = 0.0;  // max(tolerance, √(h_A² + h_B²))
+  bool regression = false;
+  std::string status;  // "ok", "steeper in B", "regression", "missing in A", "missing in B",
+                       // "no fit in A", "no fit in B"
+};
+
+struct error_comparison {
+  std::string integrand;
+  std::size_t s = 0;
+  std::string method;
+  std::uint64_t n = 0;
+  double rmse_a = 0.0, rmse_b = 0.0;
+  double ratio = 0.0;  // rmse_b / rmse_a (NaN when rmse_a = 0)
+};
+
+struct time_comparison {
+  std::string integrand;
+  std::size_t s = 0;
+  std::string method;
+  double target = 0.0;
+  std::optional<double> seconds_a, seconds_b;  // empty: not reached
+  std::optional<double> ratio;                 // seconds_b / seconds_a when both reached
+};
+
+struct compare_result {
+  std::filesystem::path a, b;
+  double tolerance = 0.1;
+  std::vector<slope_comparison> slopes;
+  std::vector<error_comparison> errors;
+  std::vector<time_comparison> times;
+  bool regression = false;
+  std::size_t regressions = 0;
+};
+
+// Reads a/{convergence,slopes}.csv and b/{…}; throws invalid_argument when a file is missing or
+// malformed (naming file and column) or tolerance is not finite and >= 0.
+compare_result compare_results(const std::filesystem::path& a, const std::filesystem::path& b,
+                               double tolerance = 0.1);
+
+// Markdown: a verdict line, the slope table, per-series error ratios (geometric mean and worst)
+// and time-to-error ratios.
+std::string render_compare_markdown(const compare_result& result);
+
+}  // namespace quadmc

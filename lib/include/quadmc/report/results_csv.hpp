@@ -1,0 +1,90 @@
+// The two CSV files of a results folder and their fixed column contract.
+//
+//   convergence.csv  one row per cell (integrand, s, method, N):
+//     scene, integrand, s, method, N, evaluations, repetitions, reference, estimate_mean, rmse,
+//     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
+//     then added columns: floor, smoothness
+//   slopes.csv  one row per series (integrand, s, method):
+//     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
+//     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note
+//
+// Contract: columns may be added at the end, never renamed or removed (compare reads old folders
+// with new code). Missing values (NaN: no std_error, no coverage for a deterministic rule, no
+// theory, no fit) are empty fields. `reference` has 17 significant digits (every double round
+// trips); other numbers use the shortest text that reads back to the same double. `evaluations`
+// is per repetition, `seconds` the total over repetitions (cell_statistics.hpp); `floor` is 1 for
+// a rounding-floor point (rounding_floor.hpp).
+//
+// Use the readers for compare and tests; they accept added columns and throw naming the file and
+// the column when one of the contract's columns is missing.
+#pragma once
+
+#include "quadmc/analysis/convergence_table.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace quadmc {
+
+inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
+    "scene",          "integrand",         "s",           "method",        "N",
+    "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
+    "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
+inline constexpr std::array<std::string_view, 2> convergence_csv_added_columns = {"floor",
+                                                                                  "smoothness"};
+inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
+    "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
+    "ci_high", "theory",    "verdict", "points_used", "floor_points"};
+inline constexpr std::array<std::string_view, 4> slopes_csv_added_columns = {
+    "smoothness", "fit_status", "attainable_accuracy", "theory_note"};
+
+// Text of the two files (header line first).
+std::string convergence_csv_text(std::string_view scene, std::span<const convergence_table> tables);
+std::string slopes_csv_text(std::string_view scene, std::span<const convergence_table> tables);
+
+// One row of convergence.csv as read back. NaN for empty numeric fields.
+struct convergence_record {
+  std::string scene;
+  std::string integrand;
+  std::size_t s = 0;
+  std::string method;
+  std::uint64_t n = 0;
+  std::uint64_t evaluations = 0;
+  std::size_t repetitions = 0;
+  double reference = 0.0;
+  double estimate_mean = 0.0;
+  double rmse = 0.0;
+  double mean_abs_error = 0.0;
+  double std_error_of_rmse = 0.0;
+  double coverage_95 = 0.0;
+  double seconds = 0.0;
+  double evals_per_second = 0.0;
+  bool floor = false;  // false when the column is absent (a file from before it was added)
+};
+
+// One row of slopes.csv as read back. NaN for empty numeric fields.
+struct slope_record {
+  std::string scene;
+  std::string integrand;
+  std::size_t s = 0;
+  std::string method;
+  double slope = 0.0;
+  double ci_low = 0.0;
+  double ci_high = 0.0;
+  double theory = 0.0;
+  std::string verdict;
+  std::size_t points_used = 0;
+  std::size_t floor_points = 0;
+};
+
+// Throw invalid_argument naming file, line and column for a missing column or unparsable value.
+std::vector<convergence_record> read_convergence_csv(const std::filesystem::path& file);
+std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file);
+
+}  // namespace quadmc

@@ -1,0 +1,38 @@
+// Writes a results folder: results/<scene>/{convergence.csv, slopes.csv, README.md}; the SVGs
+// are added by bench/plot.py, run as plot_command_line(script, folder) after this.
+//
+// Use it once per run, after analyse_convergence on every series. Not for partial output: the
+// three files are written together from the same tables, so they never disagree.
+#pragma once
+
+#include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/report/markdown_report.hpp"
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+// Which files to write ("outputs not asked for are not produced", DESIGN.md). bench/plot.py
+// reads the CSV files, so a scene that wants plots needs csv = true.
+struct results_outputs {
+  bool csv = true;       // convergence.csv and slopes.csv
+  bool markdown = true;  // README.md
+};
+
+// Creates `folder` if needed and (over)writes the files asked for. Throws invalid_argument naming
+// the file that cannot be written.
+void write_results_folder(const std::filesystem::path& folder, const run_info& info,
+                          std::span<const convergence_table> tables,
+                          const results_outputs& outputs = {});
+
+// argv of the plot step: {python, script, folder}, e.g.
+// {"/usr/bin/python3", "bench/plot.py", "results/default"}. Debian's python3 with
+// python3-matplotlib (run.sh installs it), never a pyenv one.
+std::vector<std::string> plot_command_line(const std::filesystem::path& script,
+                                           const std::filesystem::path& folder,
+                                           const std::string& python = "/usr/bin/python3");
+
+}  // namespace quadmc

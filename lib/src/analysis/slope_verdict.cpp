@@ -1,0 +1,55 @@
+// Slope verdict; the rule and why is in slope_verdict.hpp.
+#include "quadmc/analysis/slope_verdict.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace quadmc {
+
+const char* to_string(slope_verdict verdict) noexcept {
+  switch (verdict) {
+    case slope_verdict::agrees:
+      return "agrees";
+    case slope_verdict::steeper:
+      return "steeper";
+    case slope_verdict::shallower:
+      return "shallower";
+    case slope_verdict::no_theory:
+      return "no_theory";
+    case slope_verdict::no_fit:
+      return "no_fit";
+  }
+  return "?";
+}
+
+slope_verdict parse_slope_verdict(std::string_view text) {
+  for (slope_verdict v : {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
+                          slope_verdict::no_theory, slope_verdict::no_fit}) {
+    if (text == to_string(v)) return v;
+  }
+  throw invalid_argument("verdict", std::string(text),
+                         "one of agrees, steeper, shallower, no_theory, no_fit");
+}
+
+double verdict_band(const power_law_fit& fit, std::optional<double> theory,
+                    double relative_tolerance) {
+  if (!fit.ok() || !theory) return std::numeric_limits<double>::quiet_NaN();
+  return std::max(fit.half_width(), relative_tolerance * std::abs(*theory));
+}
+
+slope_verdict judge_slope(const power_law_fit& fit, std::optional<double> theory,
+                          double relative_tolerance) {
+  require(std::isfinite(relative_tolerance) && relative_tolerance >= 0.0, "relative_tolerance",
+          relative_tolerance, "finite and >= 0");
+  if (!fit.ok()) return slope_verdict::no_fit;
+  if (!theory) return slope_verdict::no_theory;
+  const double band = verdict_band(fit, theory, relative_tolerance);
+  if (std::abs(fit.slope - *theory) <= band) return slope_verdict::agrees;
+  return fit.slope < *theory ? slope_verdict::steeper : slope_verdict::shallower;
+}
+
+}  // namespace quadmc

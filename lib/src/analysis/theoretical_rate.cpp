@@ -1,0 +1,130 @@
+// Theoretical slopes; the table's conventions are in theoretical_rate.hpp, its rows in THEORY.md.
+#include "quadmc/analysis/theoretical_rate.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace quadmc {
+namespace {
+
+constexpr std::array<std::string_view, 13> methods = {
+    "left_rectangle",  "right_rectangle", "midpoint",  "trapezoid", "simpson",
+    "gauss_legendre",  "romberg",         "plain_mc",  "jittered",  "unjittered",
+    "padded_jittered", "latin_hypercube", "importance"};
+constexpr std::array<std::string_view, 5> classes = {"analytic", "smooth", "C0", "discontinuous",
+                                                     "singular"};
+
+constexpr const char* newton_cotes_source =
+    "Burden & Faires §4.4; tensor product N = n^s: lecture §1.2 (THEORY.md)";
+constexpr const char* jump_source = "any Newton–Cotes rule, jump in f: O(n^-1) (THEORY.md)";
+constexpr const char* kink_source = "C0 kink row of THEORY.md";
+constexpr const char* sqrt_source = "√x on [0,1] row of THEORY.md: O(n^-1.5)";
+
+// A tensor Newton–Cotes rule of order r on smooth f; the other classes cap the order.
+theoretical_rate newton_cotes(int order, std::string_view cls, double s) {
+  if (cls == "analytic" || cls == "smooth") {
+    return {-order / s, fmt::format("order {} rule, f ∈ C^{} assumed", order, order),
+            newton_cotes_source};
+  }
+  if (cls == "C0") {
+    // A kink costs O(h²) in its panel; rules of order < 2 keep their own order.
+    const int r = std::min(order, 2);
+    return {-r / s, "piecewise C² with a kink: order capped at 2", kink_source};
+  }
+  if (cls == "discontinuous") {
+    return {-1.0 / s, "jump: O(n^-1), not monotone in n", jump_source};
+  }
+  // singular: √x-type endpoint singularity. Rectangles keep O(h) (f monotone, bounded variation).
+  if (order == 1) {
+    return {-1.0 / s, "√x-type singularity: f of bounded variation keeps O(h)",
+            "rectangle bound (b−a)h·V(f) for monotone f; Burden & Faires §4.4"};
+  }
+  return {-1.5 / s, "√x-type endpoint singularity assumed", sqrt_source};
+}
+
+}  // namespace
+
+std::span<const std::string_view> tabulated_methods() noexcept {
+  return methods;
+}
+std::span<const std::string_view> smoothness_classes() noexcept {
+  return classes;
+}
+
+theoretical_rate theoretical_slope(std::string_view method, std::string_view cls,
+                                   std::size_t dimension) {
+  require(std::find(classes.begin(), classes.end(), cls) != classes.end(), "smoothness",
+          std::string(cls), "one of analytic, smooth, C0, discontinuous, singular");
+  require(dimension >= 1, "s", dimension, "a dimension >= 1");
+  const double s = static_cast<double>(dimension);
+
+  if (method == "left_rectangle" || method == "right_rectangle") return newton_cotes(1, cls, s);
+  if (method == "midpoint" || method == "trapezoid") {
+    theoretical_rate rate = newton_cotes(2, cls, s);
+    if (method == "trapezoid" && cls == "analytic") {
+      rate.note += "; exponential instead if f is periodic (Trefethen & Weideman 2014, Thm 3.2)";
+    }
+    return rate;
+  }
+  if (method == "simpson") return newton_cotes(4, cls, s);
+  if (method == "unjittered") {
+    // pbrt's unjittered stratified sampler puts one point at each cell centre: a midpoint grid.
+    theoretical_rate rate = newton_cotes(2, cls, s);
+    rate.note = "cell-centre grid = tensor midpoint rule; " + rate.note;
+    return rate;
+  }
+  if (method == "gauss_legendre" || method == "romberg") {
+    if (cls == "analytic") {
+      return {std::nullopt, "exponential convergence: no finite algebraic slope",
+              "Trefethen, Approximation Theory and Approximation Practice, Thm 19.3"};
+    }
+    if (cls == "smooth") {
+      return {std::nullopt, "algebraic of the order of f's smoothness, unknown from the class",
+              "Trefethen, ATAP Thm 19.3"};
+    }
+    if (method == "romberg") {
+      // Richardson extrapolation assumes the Euler–Maclaurin expansion in h²; a kink, jump or
+      // √x breaks it past its first term, leaving the trapezoid rate.
+      theoretical_rate rate = newton_cotes(2, cls, s);
+      rate.note = "extrapolation gains nothing past the trapezoid rate; " + rate.note;
+      return rate;
+    }
+    if (cls == "discontinuous") {
+      return {-1.0 / s, "jump: O(node spacing) for nodes of density ~n", jump_source};
+    }
+    return {std::nullopt, "not tabulated for Gauss–Legendre on this class",
+            "ATAP Thm 19.3 bounds only"};
+  }
+  if (method == "plain_mc") {
+    return {-0.5, "σ/√N, finite variance assumed", "lecture §2.2.2 (THEORY.md)"};
+  }
+  if (method == "jittered" || (method == "padded_jittered" && dimension <= 2)) {
+    if (cls == "discontinuous") {
+      return {-0.5 - 1.0 / (2.0 * s), "indicator of a smooth-boundary region",
+              "Mitchell 1996; Pilleboue et al. 2015 (THEORY.md)"};
+    }
+    if (cls == "singular") {
+      return {std::nullopt, "not tabulated for a singular f", "Pilleboue et al. 2015"};
+    }
+    return {-0.5 - 1.0 / s, "one point per cell, N = m^s; f Lipschitz (C0 kinks included)",
+            "Mitchell 1996; Pilleboue et al. 2015 (THEORY.md)"};
+  }
+  if (method == "padded_jittered") {
+    return {-0.5,
+            "padding stratifies only 2D projections: plain MC rate unless f is a sum of 2D parts",
+            "pbrt-v4 §8.5 (padded samplers); stratified ≤ plain MC (Veach thesis eq. 2.26)"};
+  }
+  if (method == "latin_hypercube") {
+    return {-0.5, "removes the additive part of f; O(N^-1/2) in general",
+            "McKay et al. 1979; Stein 1987; Owen 1992 (THEORY.md)"};
+  }
+  if (method == "importance") {
+    return {-0.5, "(∫f²/p − I²)/N; zero variance (no slope, rounding floor) iff p ∝ f ≥ 0",
+            "lecture §4.1 (THEORY.md)"};
+  }
+  return {std::nullopt, fmt::format("no entry for method {}", method), ""};
+}
+
+}  // namespace quadmc

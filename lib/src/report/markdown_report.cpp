@@ -1,0 +1,167 @@
+// The results README page; layout and file-name contract in markdown_report.hpp.
+#include "quadmc/report/markdown_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace quadmc {
+namespace {
+
+// A table cell: '|' would end the cell, a line break the row.
+std::string cell(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') {
+      out += "\\|";
+    } else if (c == '\n' || c == '\r') {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string sci(double x) {
+  return std::isnan(x) ? "—" : fmt::format("{:.3e}", x);
+}
+std::string short_number(double x) {
+  return std::isnan(x) ? "—" : fmt::format("{:.3g}", x);
+}
+
+std::string slope_text(const power_law_fit& fit) {
+  if (!fit.ok()) return fmt::format("no fit ({})", to_string(fit.status));
+  return fmt::format("{:.3f} ± {:.3f}", fit.slope, fit.half_width());
+}
+
+std::string theory_text(const theoretical_rate& theory) {
+  return theory.slope ? fmt::format("{:.3f}", *theory.slope) : std::string("—");
+}
+
+std::string time_to_error_text(const time_to_error& t) {
+  switch (t.status) {
+    case target_status::reached:
+      return fmt::format("{:.3g}", *t.seconds);
+    case target_status::reached_at_first_point:
+      return fmt::format("≤ {:.3g}", *t.seconds);
+    case target_status::not_reached:
+      return "not reached";
+  }
+  return "?";
+}
+
+void append_method_table(std::string& out, const convergence_table& t) {
+  out += fmt::format("### {}\n\n", cell(t.method));
+  const bool deterministic = !t.rows.empty() && t.rows.front().stats.repetitions == 1;
+  out += fmt::format(
+      "Slope {} (theory {}: {}); {}; attainable accuracy {}.\n\n", slope_text(t.fit),
+      theory_text(t.theory), to_string(t.verdict),
+      t.floor.reached()
+          ? fmt::format("rounding floor from N = {} ({} points, level ≈ {})",
+                        t.rows[*t.floor.first].n, t.floor_points(), sci(t.floor.floor_level))
+          : std::string("no rounding floor reached"),
+      sci(t.floor.attainable_accuracy));
+  out += fmt::format(
+      "| N | evaluations | {} | std error | coverage 95% | time (s) | evals/s | floor |\n",
+      deterministic ? "\\|error\\|" : "RMSE");
+  out += "|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+  for (const convergence_row& row : t.rows) {
+    const cell_statistics& c = row.stats;
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", row.n, c.evaluations,
+                       sci(c.rmse), sci(c.std_error_of_rmse),
+                       std::isnan(c.coverage_95) ? "—" : fmt::format("{:.2f}", c.coverage_95),
+                       short_number(c.seconds), short_number(c.evals_per_second),
+                       row.floor ? "▼" : "");
+  }
+  out += '\n';
+}
+
+}  // namespace
+
+std::string plot_stem(std::string_view integrand) {
+  std::string out(integrand);
+  for (char& c : out) {
+    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '.' || c == '-';
+    if (!safe) c = '_';
+  }
+  return out;
+}
+
+std::string convergence_plot_file(std::string_view integrand, std::size_t s) {
+  return fmt::format("{}_s{}.svg", plot_stem(integrand), s);
+}
+
+std::string work_precision_plot_file(std::string_view integrand, std::size_t s) {
+  return fmt::format("work_precision_{}_s{}.svg", plot_stem(integrand), s);
+}
+
+std::string render_results_markdown(const run_info& info,
+                                    std::span<const convergence_table> tables) {
+  std::string out = fmt::format("# Results: {}\n\n", info.scene);
+  out += fmt::format("- seed: {}\n- threads: {}\n", info.seed, info.threads);
+  if (!info.machine.empty()) out += fmt::format("- machine: {}\n", info.machine);
+  if (!info.compiler.empty()) out += fmt::format("- compiler: {}\n", info.compiler);
+  out += fmt::format("- run time: {:.3g} s\n\n", info.run_seconds);
+  out +=
+      "Slopes are of the RMSE over repetitions (|error| for a deterministic rule, which runs "
+      "once per N) against N = total integrand evaluations, fitted by least squares in log-log "
+      "with a 95% Student-t interval; rounding-floor points (▼) are excluded. A slope *agrees* "
+      "when |slope − theory| ≤ max(CI half-width, 0.1·|theory|). Data: `convergence.csv`, "
+      "`slopes.csv`.\n\n";
+  if (!info.skipped.empty()) {
+    out += "Skipped by the plan:\n\n";
+    for (const std::string& s : info.skipped) out += fmt::format("- {}\n", s);
+    out += '\n';
+  }
+
+  out += "## Slopes\n\n";
+  out += "| integrand | s | method | slope ± 95% CI | theory | verdict | points (floor) |\n";
+  out += "|---|---:|---|---:|---:|---|---:|\n";
+  for (const convergence_table& t : tables) {
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} ({}) |\n", cell(t.integrand), t.s,
+                       cell(t.method), slope_text(t.fit), theory_text(t.theory),
+                       to_string(t.verdict), t.points_used(), t.floor_points());
+  }
+  out += '\n';
+
+  // Groups in order of first appearance.
+  std::vector<std::pair<std::string, std::size_t>> groups;
+  for (const convergence_table& t : tables) {
+    const std::pair<std::string, std::size_t> key{t.integrand, t.s};
+    if (std::find(groups.begin(), groups.end(), key) == groups.end()) groups.push_back(key);
+  }
+  for (const auto& [integrand, s] : groups) {
+    out += fmt::format("## {} (s = {})\n\n", cell(integrand), s);
+    out += fmt::format("![error against N]({})\n\n", convergence_plot_file(integrand, s));
+    out += fmt::format("![work-precision]({})\n\n", work_precision_plot_file(integrand, s));
+    std::vector<double> targets;
+    for (const convergence_table& t : tables) {
+      if (t.integrand != integrand || t.s != s) continue;
+      append_method_table(out, t);
+      if (targets.empty()) {
+        for (const time_to_error& e : t.work_precision) targets.push_back(e.target);
+      }
+    }
+    out += "### Work-precision: seconds per estimate to reach an error\n\n| method |";
+    for (double target : targets) out += fmt::format(" {:.0e} |", target);
+    out += "\n|---|";
+    for (std::size_t k = 0; k < targets.size(); ++k) out += "---:|";
+    out += '\n';
+    for (const convergence_table& t : tables) {
+      if (t.integrand != integrand || t.s != s) continue;
+      out += fmt::format("| {} |", cell(t.method));
+      for (const time_to_error& e : t.work_precision) {
+        out += fmt::format(" {} |", time_to_error_text(e));
+      }
+      out += '\n';
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace quadmc

@@ -1,0 +1,174 @@
+// convergence.csv and slopes.csv: writers and readers; the column contract is in results_csv.hpp.
+#include "quadmc/report/results_csv.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/report/csv.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace quadmc {
+namespace {
+
+// Shortest text that reads back to the same double; empty for NaN.
+std::string number(double x) {
+  return std::isnan(x) ? std::string() : fmt::format("{}", x);
+}
+
+std::vector<std::string> header_of(std::span<const std::string_view> contract,
+                                   std::span<const std::string_view> added) {
+  std::vector<std::string> header(contract.begin(), contract.end());
+  header.insert(header.end(), added.begin(), added.end());
+  return header;
+}
+
+// Reads field `name` of row `r` of a table with error messages naming file, line and column.
+class record_reader {
+ public:
+  record_reader(const csv_table& table, std::size_t r) : table_(table), r_(r) {}
+
+  const std::string& text(std::string_view name) const {
+    return table_.rows[r_][table_.column(name)];
+  }
+  double real(std::string_view name) const {
+    const std::string& t = text(name);
+    if (t.empty()) return std::numeric_limits<double>::quiet_NaN();
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec != std::errc() || end != t.data() + t.size()) fail(name, t, "a number");
+    return value;
+  }
+  std::uint64_t count(std::string_view name) const {
+    const std::string& t = text(name);
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (t.empty() || ec != std::errc() || end != t.data() + t.size()) {
+      fail(name, t, "a non-negative integer");
+    }
+    return value;
+  }
+
+ private:
+  [[noreturn]] void fail(std::string_view name, const std::string& t,
+                         std::string_view expected) const {
+    // Data row r is record r + 2 of the file (the header is record 1).
+    throw invalid_argument(fmt::format("{}: record {}, column '{}' = '{}': expected {}",
+                                       table_.source, r_ + 2, name, t, expected));
+  }
+  const csv_table& table_;
+  std::size_t r_;
+};
+
+void require_columns(const csv_table& table, std::span<const std::string_view> columns) {
+  for (std::string_view name : columns) table.column(name);  // throws naming file and column
+}
+
+}  // namespace
+
+std::string convergence_csv_text(std::string_view scene,
+                                 std::span<const convergence_table> tables) {
+  std::string out = csv_line(header_of(convergence_csv_columns, convergence_csv_added_columns));
+  for (const convergence_table& t : tables) {
+    for (const convergence_row& row : t.rows) {
+      const cell_statistics& c = row.stats;
+      const std::vector<std::string> fields = {std::string(scene),
+                                               t.integrand,
+                                               fmt::format("{}", t.s),
+                                               t.method,
+                                               fmt::format("{}", row.n),
+                                               fmt::format("{}", c.evaluations),
+                                               fmt::format("{}", c.repetitions),
+                                               fmt::format("{:.17g}", t.reference),
+                                               number(c.estimate_mean),
+                                               number(c.rmse),
+                                               number(c.mean_abs_error),
+                                               number(c.std_error_of_rmse),
+                                               number(c.coverage_95),
+                                               number(c.seconds),
+                                               number(c.evals_per_second),
+                                               row.floor ? "1" : "0",
+                                               t.smoothness};
+      out += csv_line(fields);
+    }
+  }
+  return out;
+}
+
+std::string slopes_csv_text(std::string_view scene, std::span<const convergence_table> tables) {
+  std::string out = csv_line(header_of(slopes_csv_columns, slopes_csv_added_columns));
+  for (const convergence_table& t : tables) {
+    const double theory = t.theory.slope.value_or(std::numeric_limits<double>::quiet_NaN());
+    const std::vector<std::string> fields = {std::string(scene),
+                                             t.integrand,
+                                             fmt::format("{}", t.s),
+                                             t.method,
+                                             number(t.fit.slope),
+                                             number(t.fit.ci_low),
+                                             number(t.fit.ci_high),
+                                             number(theory),
+                                             to_string(t.verdict),
+                                             fmt::format("{}", t.points_used()),
+                                             fmt::format("{}", t.floor_points()),
+                                             t.smoothness,
+                                             to_string(t.fit.status),
+                                             number(t.floor.attainable_accuracy),
+                                             t.theory.note};
+    out += csv_line(fields);
+  }
+  return out;
+}
+
+std::vector<convergence_record> read_convergence_csv(const std::filesystem::path& file) {
+  const csv_table table = read_csv_file(file);
+  require_columns(table, convergence_csv_columns);
+  const bool has_floor = table.has_column("floor");
+  std::vector<convergence_record> out;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const record_reader f(table, r);
+    convergence_record rec;
+    rec.scene = f.text("scene");
+    rec.integrand = f.text("integrand");
+    rec.s = f.count("s");
+    rec.method = f.text("method");
+    rec.n = f.count("N");
+    rec.evaluations = f.count("evaluations");
+    rec.repetitions = f.count("repetitions");
+    rec.reference = f.real("reference");
+    rec.estimate_mean = f.real("estimate_mean");
+    rec.rmse = f.real("rmse");
+    rec.mean_abs_error = f.real("mean_abs_error");
+    rec.std_error_of_rmse = f.real("std_error_of_rmse");
+    rec.coverage_95 = f.real("coverage_95");
+    rec.seconds = f.real("seconds");
+    rec.evals_per_second = f.real("evals_per_second");
+    rec.floor = has_floor && f.text("floor") == "1";
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file) {
+  const csv_table table = read_csv_file(file);
+  require_columns(table, slopes_csv_columns);
+  std::vector<slope_record> out;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const record_reader f(table, r);
+    slope_record rec;
+    rec.scene = f.text("scene");
+    rec.integrand = f.text("integrand");
+    rec.s = f.count("s");
+    rec.method = f.text("method");
+    rec.slope = f.real("slope");
+    rec.ci_low = f.real("ci_low");
+    rec.ci_high = f.real("ci_high");
+    rec.theory = f.real("theory");
+    rec.verdict = f.text("verdict");
+    rec.points_used = f.count("points_used");
+    rec.floor_points = f.count("floor_points");
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace quadmc

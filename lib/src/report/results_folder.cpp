@@ -1,0 +1,41 @@
+// write_results_folder: the three text files of a results folder (results_folder.hpp).
+#include "quadmc/report/results_folder.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/report/results_csv.hpp"
+
+#include <fstream>
+
+namespace quadmc {
+namespace {
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw invalid_argument("file", file.string(), "a writable path");
+}
+
+}  // namespace
+
+void write_results_folder(const std::filesystem::path& folder, const run_info& info,
+                          std::span<const convergence_table> tables,
+                          const results_outputs& outputs) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    throw invalid_argument("folder", folder.string(), "a creatable directory: " + ec.message());
+  if (outputs.csv) {
+    write_text(folder / "convergence.csv", convergence_csv_text(info.scene, tables));
+    write_text(folder / "slopes.csv", slopes_csv_text(info.scene, tables));
+  }
+  if (outputs.markdown) write_text(folder / "README.md", render_results_markdown(info, tables));
+}
+
+std::vector<std::string> plot_command_line(const std::filesystem::path& script,
+                                           const std::filesystem::path& folder,
+                                           const std::string& python) {
+  return {python, script.string(), folder.string()};
+}
+
+}  // namespace quadmc

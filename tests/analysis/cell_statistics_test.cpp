@@ -1,0 +1,98 @@
+// Tests for cell_statistics.hpp on data small enough to check by hand.
+#include "quadmc/analysis/cell_statistics.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace quadmc {
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+TEST(CellStatistics, HandComputedFourRepetitions) {
+  // I = 1; errors 0.1, −0.2, 0, 0.3; every std_error 0.1, so the 95% interval is ±0.19600.
+  const std::vector<repetition_result> reps = {
+      {1.1, 0.1, 100, 0.5}, {0.8, 0.1, 100, 0.5}, {1.0, 0.1, 100, 0.5}, {1.3, 0.1, 100, 0.5}};
+  const cell_statistics c = compute_cell_statistics(reps, 1.0);
+  EXPECT_EQ(c.repetitions, 4u);
+  EXPECT_EQ(c.evaluations, 100u);
+  EXPECT_EQ(c.total_evaluations, 400u);
+  EXPECT_NEAR(c.estimate_mean, 1.05, 4 * eps);
+  // MSE = (0.01 + 0.04 + 0 + 0.09)/4 = 0.035.
+  EXPECT_NEAR(c.rmse, std::sqrt(0.035), 8 * eps);
+  EXPECT_NEAR(c.mean_abs_error, 0.15, 4 * eps);
+  // e² deviations from 0.035: −0.025, 0.005, −0.035, 0.055; Σ² = 0.0049; var = 0.0049/3;
+  // se(MSE) = √(var/4); se(RMSE) = se(MSE)/(2√0.035).
+  const double se_mse = std::sqrt(0.0049 / 3.0 / 4.0);
+  EXPECT_NEAR(c.std_error_of_rmse, se_mse / (2.0 * std::sqrt(0.035)), 1e-14);
+  // |e| ≤ 0.196 for 0.1 and 0 only: 2 of 4.
+  EXPECT_DOUBLE_EQ(c.coverage_95, 0.5);
+  EXPECT_NEAR(c.seconds, 2.0, 4 * eps);
+  EXPECT_NEAR(c.evals_per_second, 200.0, 1e-12);
+  EXPECT_NEAR(c.seconds_per_repetition(), 0.5, 4 * eps);
+}
+
+TEST(CellStatistics, NormalQuantileIsTheTabulatedValue) {
+  // Φ⁻¹(0.975) = 1.959963984540054 (Abramowitz & Stegun table 26.5, to 16 digits).
+  EXPECT_NEAR(normal_quantile_975(), 1.959963984540054, 4 * eps);
+}
+
+TEST(CellStatistics, DeterministicRuleHasNoSpreadAndNoCoverage) {
+  const std::vector<repetition_result> reps = {{0.75, nan, 17, 0.0}};
+  const cell_statistics c = compute_cell_statistics(reps, 1.0);
+  EXPECT_DOUBLE_EQ(c.rmse, 0.25);
+  EXPECT_DOUBLE_EQ(c.mean_abs_error, 0.25);
+  EXPECT_TRUE(std::isnan(c.std_error_of_rmse)) << "one repetition has no spread";
+  EXPECT_TRUE(std::isnan(c.coverage_95)) << "a rule has no std_error";
+  EXPECT_TRUE(std::isnan(c.evals_per_second)) << "zero time: no rate";
+}
+
+TEST(CellStatistics, CoverageIsEmptyWhenAnyRepetitionLacksStdError) {
+  const std::vector<repetition_result> reps = {{1.0, 0.1, 10, 1.0}, {1.0, nan, 10, 1.0}};
+  EXPECT_TRUE(std::isnan(compute_cell_statistics(reps, 1.0).coverage_95));
+}
+
+TEST(CellStatistics, ExactRepetitionsHaveZeroSpread) {
+  const std::vector<repetition_result> reps = {{2.0, 0.0, 10, 1.0}, {2.0, 0.0, 10, 1.0}};
+  const cell_statistics c = compute_cell_statistics(reps, 2.0);
+  EXPECT_EQ(c.rmse, 0.0);
+  EXPECT_EQ(c.std_error_of_rmse, 0.0);
+  EXPECT_EQ(c.coverage_95, 1.0) << "|e| = 0 ≤ z·0";
+}
+
+TEST(CellStatistics, CompensatedSumsKeepTinyErrorsOfLargeValues) {
+  // 1000 repetitions of I + 1e-9 with I = 1e6: the naive mean of values would lose ~1e-10·…;
+  // the RMSE must be the error itself to ~1e-16 relative of I (the rounding of v − I itself).
+  const double reference = 1e6;
+  std::vector<repetition_result> reps(1000, {reference + 1e-9, 1e-9, 1, 1e-3});
+  const cell_statistics c = compute_cell_statistics(reps, reference);
+  const double error = (reference + 1e-9) - reference;  // the representable error
+  EXPECT_NEAR(c.rmse, error, 4 * eps * error);
+  EXPECT_NEAR(c.estimate_mean, reference + 1e-9, 2 * eps * reference);
+}
+
+TEST(CellStatistics, RejectsBadInputNamingTheRepetition) {
+  EXPECT_THROW(compute_cell_statistics({}, 1.0), invalid_argument);
+  const std::vector<repetition_result> good = {{1.0, 0.1, 1, 0.1}};
+  EXPECT_THROW(compute_cell_statistics(good, nan), invalid_argument);
+  const std::vector<repetition_result> bad = {{1.0, 0.1, 1, 0.1}, {nan, 0.1, 1, 0.1}};
+  try {
+    compute_cell_statistics(bad, 1.0);
+    FAIL() << "a NaN value must be rejected";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("repetitions[1].value"), std::string::npos) << e.what();
+  }
+  const std::vector<repetition_result> negative_time = {{1.0, 0.1, 1, -1.0}};
+  EXPECT_THROW(compute_cell_statistics(negative_time, 1.0), invalid_argument);
+  const std::vector<repetition_result> negative_se = {{1.0, -0.1, 1, 1.0}};
+  EXPECT_THROW(compute_cell_statistics(negative_se, 1.0), invalid_argument);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -1,0 +1,107 @@
+// Tests for convergence_table.hpp: a whole series from repetitions to verdict.
+#include "quadmc/analysis/convergence_table.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace quadmc {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// A deterministic midpoint-like series: value = I + 0.1·N⁻² + a rounding floor of 4e-16 that
+// alternates in sign, N = 2^1 … 2^28, cells given in reverse order to check the sort.
+convergence_series midpoint_series() {
+  convergence_series series{"genz_gaussian", 1, "midpoint", "analytic", 0.5, {}};
+  for (int k = 28; k >= 1; --k) {
+    const double n = std::ldexp(1.0, k);
+    const double value = 0.5 + 0.1 / (n * n) + (k % 2 == 0 ? 4e-16 : -4e-16);
+    series.cells.push_back(
+        {static_cast<std::uint64_t>(n), {{value, nan, static_cast<std::uint64_t>(n), 1e-9 * n}}});
+  }
+  return series;
+}
+
+TEST(ConvergenceTable, DeterministicSeriesWithFloor) {
+  const convergence_table table = analyse_convergence(midpoint_series());
+  ASSERT_EQ(table.rows.size(), 28u);
+  for (std::size_t k = 1; k < table.rows.size(); ++k) {
+    EXPECT_GT(table.rows[k].n, table.rows[k - 1].n) << "rows sorted by N";
+  }
+  EXPECT_TRUE(table.floor.reached());
+  EXPECT_GT(table.floor_points(), 0u);
+  EXPECT_TRUE(table.rows.back().floor);
+  EXPECT_FALSE(table.rows.front().floor);
+  EXPECT_EQ(table.points_used() + table.floor_points(), table.rows.size());
+  ASSERT_TRUE(table.fit.ok());
+  EXPECT_NEAR(table.fit.slope, -2.0, 0.05);
+  ASSERT_TRUE(table.theory.slope.has_value());
+  EXPECT_EQ(*table.theory.slope, -2.0);
+  EXPECT_EQ(table.verdict, slope_verdict::agrees);
+  // Time per repetition 1e-9·N; error 0.1·N⁻² reaches 1e-2 at N = √10: between the first two
+  // points (N = 2: 2.5e-2; N = 4: 6.25e-3), so the target is reached by interpolation.
+  ASSERT_EQ(table.work_precision.size(), 7u);
+  EXPECT_EQ(table.work_precision[0].status, target_status::reached);
+  // t ∝ N and e ∝ N⁻² between the points: t(1e-2) = 1e-9·√10 exactly under the log-log model.
+  EXPECT_NEAR(*table.work_precision[0].seconds, 1e-9 * std::sqrt(10.0), 1e-20);
+}
+
+TEST(ConvergenceTable, MonteCarloSeriesUsesRmseAndCoverage) {
+  // Four repetitions per N with errors ±c/√N (two each sign) and std_error c/√N: RMSE = c/√N
+  // exactly, coverage 1 (|e| = se ≤ 1.96·se), slope −1/2 exactly.
+  convergence_series series{"genz_oscillatory", 2, "plain_mc", "analytic", 1.0, {}};
+  for (int k = 4; k <= 12; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const double se = 0.3 / std::sqrt(n);
+    convergence_cell cell{static_cast<std::uint64_t>(n), {}};
+    for (double sign : {1.0, -1.0, 1.0, -1.0}) {
+      cell.repetitions.push_back({1.0 + sign * se, se, static_cast<std::uint64_t>(n), 1e-6});
+    }
+    series.cells.push_back(cell);
+  }
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_FALSE(table.floor.reached());
+  EXPECT_NEAR(table.fit.slope, -0.5, 1e-6);
+  EXPECT_EQ(table.verdict, slope_verdict::agrees);
+  for (const convergence_row& row : table.rows) {
+    EXPECT_EQ(row.stats.repetitions, 4u);
+    EXPECT_DOUBLE_EQ(row.stats.coverage_95, 1.0) << "N = " << row.n;
+  }
+}
+
+TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
+  convergence_series series = midpoint_series();
+  series.cells.resize(2);  // N = 2^28 and 2^27: both at the floor, nothing to fit
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_EQ(table.fit.status, fit_status::too_few_points);
+  EXPECT_EQ(table.verdict, slope_verdict::no_fit);
+}
+
+TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
+  convergence_series empty{"f", 1, "midpoint", "smooth", 1.0, {}};
+  EXPECT_THROW(analyse_convergence(empty), invalid_argument);
+
+  convergence_series duplicate = midpoint_series();
+  duplicate.cells.push_back(duplicate.cells.front());
+  EXPECT_THROW(analyse_convergence(duplicate), invalid_argument);
+
+  convergence_series bad_class = midpoint_series();
+  bad_class.smoothness = "wiggly";
+  EXPECT_THROW(analyse_convergence(bad_class), invalid_argument);
+
+  convergence_series no_reps = midpoint_series();
+  no_reps.cells[3].repetitions.clear();
+  try {
+    analyse_convergence(no_reps);
+    FAIL() << "a cell without repetitions must be rejected";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("cell N = "), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace quadmc

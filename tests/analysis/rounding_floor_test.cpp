@@ -1,0 +1,176 @@
+// Tests for rounding_floor.hpp: synthetic floors are flagged, clean ladders are not.
+#include "quadmc/analysis/rounding_floor.hpp"
+
+#include "quadmc/analysis/power_law_fit.hpp"
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/rng.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+namespace quadmc {
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+std::vector<double> doubling_ladder(int first, int last) {
+  std::vector<double> n;
+  for (int k = first; k <= last; ++k) n.push_back(std::ldexp(1.0, k));
+  return n;
+}
+
+TEST(RoundingFloor, FlagsAFlatNoisyFloorAndRecoversTheSlopeBeforeIt) {
+  // A midpoint-like ladder 0.1·N⁻² reaching a flat floor of rounding noise 3e-16·(1 + ½ sin k)
+  // (|I| = 1): the curve crosses the floor near N = 2^23.
+  const std::vector<double> n = doubling_ladder(1, 30);
+  std::vector<double> error;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    error.push_back(0.1 / (n[k] * n[k]) + 3e-16 * (1.0 + 0.5 * std::sin(static_cast<double>(k))));
+  }
+  const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_TRUE(floor.reached());
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const double method_error = 0.1 / (n[k] * n[k]);
+    // Points whose method error is below half the smallest noise value are pure floor.
+    if (method_error < 0.5 * 1.5e-16) {
+      EXPECT_TRUE(floor.flags[k]) << "k = " << k;
+    }
+    // Points a thousand times above the noise are the method's own.
+    if (method_error > 1e3 * 4.5e-16) {
+      EXPECT_FALSE(floor.flags[k]) << "k = " << k;
+    }
+  }
+  // Every point from the first floor point on is flagged.
+  for (std::size_t k = *floor.first; k < n.size(); ++k) EXPECT_TRUE(floor.flags[k]) << k;
+  EXPECT_EQ(floor.count(), n.size() - *floor.first);
+  EXPECT_GT(floor.attainable_accuracy, 0.0);
+  EXPECT_LT(floor.attainable_accuracy, 1e-13);
+  EXPECT_GE(floor.floor_level, 1.5e-16);
+  EXPECT_LE(floor.floor_level, 1e-14);
+
+  // With the floor excluded the fit sees the clean rate: on the last unflagged point (error
+  // ≥ ℓ ≈ 1e-14) the noise (≤ 4.5e-16) is a few per cent, so −2 within 0.05.
+  std::vector<double> fit_n, fit_e;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    if (!floor.flags[k]) {
+      fit_n.push_back(n[k]);
+      fit_e.push_back(error[k]);
+    }
+  }
+  const double clean_slope = fit_power_law(fit_n, fit_e).slope;
+  EXPECT_NEAR(clean_slope, -2.0, 0.05);
+  EXPECT_GT(fit_power_law(n, error).slope, clean_slope + 0.1)
+      << "without the exclusion the floor flattens the fit";
+}
+
+TEST(RoundingFloor, FlagsARisingFloorOfNaiveSummation) {
+  // N⁻² until naive summation's ε·√N·… rounding takes over and grows: error = N⁻² + ε·N/100.
+  const std::vector<double> n = doubling_ladder(2, 30);
+  std::vector<double> error;
+  for (double nk : n) error.push_back(1.0 / (nk * nk) + eps * nk / 100.0);
+  const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_TRUE(floor.reached());
+  // The minimum of N⁻² + εN/100 is near N = (200/ε)^(1/3) ≈ 2^20; the rise from there on
+  // must be flagged, the steep part (N ≤ 2^14, error ≥ 3.7e-9) must not.
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    if (n[k] >= std::ldexp(1.0, 21)) {
+      EXPECT_TRUE(floor.flags[k]) << "N = " << n[k];
+    }
+    if (n[k] <= std::ldexp(1.0, 14)) {
+      EXPECT_FALSE(floor.flags[k]) << "N = " << n[k];
+    }
+  }
+}
+
+TEST(RoundingFloor, FlagsARandomFloorGrowingLikeSqrtN) {
+  // Method error 0.05·N⁻² plus rounding noise ε·√N·|Z| (a random-walk rounding error, Z standard
+  // normal from Philox seed 99, stream 3). The two are equal near N = 2^19 ((0.05/ε)^0.4). The
+  // floor must start within a few points of that crossover: a noise point stalls (neither of the
+  // next two improves by 2) with probability ≈ 0.5 each, so starting more than 5 points late has
+  // probability ≲ 2^-5 for a random seed; this seed is fixed, not chosen.
+  const philox_stream stream(99, 3);
+  const std::vector<double> n = doubling_ladder(1, 30);
+  std::vector<double> error;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const double u1 = 1.0 - stream.uniform(2 * k), u2 = stream.uniform(2 * k + 1);
+    const double z = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    error.push_back(0.05 / (n[k] * n[k]) + eps * std::sqrt(n[k]) * std::abs(z));
+  }
+  const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_TRUE(floor.reached());
+  const double first_n = n[*floor.first];
+  EXPECT_GE(first_n, std::ldexp(1.0, 14)) << "method error ≥ 6000× the noise scale up to 2^14";
+  EXPECT_LE(first_n, std::ldexp(1.0, 24)) << "at most 5 points past the crossover";
+}
+
+TEST(RoundingFloor, LeavesCleanLaddersUnflagged) {
+  // An exact N⁻² ladder down to 1e-12: converging all the way, no floor.
+  const std::vector<double> n = doubling_ladder(1, 20);
+  std::vector<double> power, monte_carlo, jump;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    power.push_back(1.0 / (n[k] * n[k]));
+    // Monte Carlo-like RMSE with ±30% wobble, and a Newton–Cotes rule across a jump whose error
+    // is O(1/n) but not monotone in n (THEORY.md).
+    monte_carlo.push_back(0.3 / std::sqrt(n[k]) * (1.0 + 0.3 * std::sin(3.0 * k)));
+    jump.push_back((1.0 + 0.9 * std::sin(static_cast<double>(k))) / n[k]);
+  }
+  for (const auto* ladder : {&power, &monte_carlo, &jump}) {
+    const rounding_floor floor = detect_rounding_floor(n, *ladder, 1.0);
+    EXPECT_FALSE(floor.reached()) << "first flagged index " << floor.first.value_or(0);
+    EXPECT_EQ(std::count(floor.flags.begin(), floor.flags.end(), true), 0);
+    EXPECT_EQ(floor.attainable_accuracy, *std::min_element(ladder->begin(), ladder->end()));
+    EXPECT_TRUE(std::isnan(floor.floor_level));
+  }
+}
+
+TEST(RoundingFloor, ExactZeroIsAlwaysAFloorPoint) {
+  // A rule exact for this integrand from N = 8 on (e.g. Simpson on a cubic): error 0 exactly.
+  const std::vector<double> n = {2.0, 4.0, 8.0, 16.0};
+  const std::vector<double> error = {1e-3, 1e-5, 0.0, 0.0};
+  for (double scale : {1.0, 0.0}) {
+    const rounding_floor floor = detect_rounding_floor(n, error, scale);
+    ASSERT_TRUE(floor.reached()) << "scale " << scale;
+    EXPECT_EQ(*floor.first, 2u);
+    EXPECT_EQ(floor.attainable_accuracy, 1e-5);
+    EXPECT_EQ(floor.floor_level, 0.0);
+  }
+}
+
+TEST(RoundingFloor, FloorAtTheFirstPointReportsTheBestFloorError) {
+  const std::vector<double> n = {10.0, 20.0, 40.0};
+  const std::vector<double> error = {2e-16, 1e-16, 3e-16};  // e.g. importance with p ∝ f
+  const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_TRUE(floor.reached());
+  EXPECT_EQ(*floor.first, 0u);
+  EXPECT_EQ(floor.attainable_accuracy, 1e-16);
+  EXPECT_EQ(floor.floor_level, 2e-16);
+}
+
+TEST(RoundingFloor, RoundingLevelFollowsTheFormula) {
+  // ℓ(N) = 2·ε·S·log₂N: N = 2^20, S = 3.
+  EXPECT_DOUBLE_EQ(rounding_level(std::ldexp(1.0, 20), 3.0), 2.0 * eps * 3.0 * 20.0);
+  EXPECT_DOUBLE_EQ(rounding_level(1.0, 1.0), 2.0 * eps) << "log₂ clamps at 1";
+}
+
+TEST(RoundingFloor, RejectsBadLadders) {
+  const std::vector<double> e = {1e-2, 1e-3, 1e-4};
+  EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 4.0, 2.0}, e, 1.0), invalid_argument);
+  EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 2.0}, e, 1.0), invalid_argument);
+  EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 2.0, 4.0},
+                                     std::vector<double>{1e-2, -1.0, 1e-4}, 1.0),
+               invalid_argument);
+  EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 2.0, 4.0}, e, -1.0),
+               invalid_argument);
+  EXPECT_THROW(
+      detect_rounding_floor(std::vector<double>{1.0, 2.0, 4.0}, e, 1.0,
+                            {.kappa = 2.0, .band = 1e4, .stall_factor = 1.0, .stall_window = 2}),
+      invalid_argument);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -1,0 +1,119 @@
+// Tests for compare.hpp: an identical pair passes, a shallower slope is a regression, noise
+// within the intervals is not.
+#include "quadmc/report/compare.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/report/results_folder.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <random>
+
+namespace quadmc {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+struct temporary_directory {
+  fs::path path;
+  temporary_directory() {
+    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
+    path = fs::temp_directory_path() /
+           fmt::format("quadmc_compare_{}_{}", tick, std::random_device{}());
+  }
+  ~temporary_directory() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+// A midpoint series with error c·N^rate (exact power law: CI half-width ~0) and time 1e-8·N,
+// plus a Monte Carlo series with rate −1/2.
+void write_folder(const fs::path& folder, double midpoint_rate, double time_factor) {
+  convergence_series rule{"genz_gaussian", 1, "midpoint", "analytic", 1.0, {}};
+  convergence_series mc{"genz_gaussian", 1, "plain_mc", "analytic", 1.0, {}};
+  for (int k = 2; k <= 12; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const auto nk = static_cast<std::uint64_t>(n);
+    rule.cells.push_back(
+        {nk, {{1.0 + 0.1 * std::pow(n, midpoint_rate), nan, nk, time_factor * 1e-8 * n}}});
+    mc.cells.push_back({nk, {{1.0 + 0.5 / std::sqrt(n), 0.5 / std::sqrt(n), nk, 1e-7 * n}}});
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(rule),
+                                                 analyse_convergence(mc)};
+  run_info info;
+  info.scene = "compare_test";
+  write_results_folder(folder, info, tables);
+}
+
+TEST(Compare, IdenticalFoldersPass) {
+  const temporary_directory dir;
+  write_folder(dir.path / "a", -2.0, 1.0);
+  write_folder(dir.path / "b", -2.0, 1.0);
+  const compare_result r = compare_results(dir.path / "a", dir.path / "b", 0.1);
+  EXPECT_FALSE(r.regression);
+  EXPECT_EQ(r.regressions, 0u);
+  ASSERT_EQ(r.slopes.size(), 2u);
+  for (const slope_comparison& c : r.slopes) EXPECT_EQ(c.status, "ok") << c.method;
+  ASSERT_EQ(r.errors.size(), 22u);
+  for (const error_comparison& e : r.errors) EXPECT_EQ(e.ratio, 1.0) << e.method << " N=" << e.n;
+  for (const time_comparison& t : r.times) {
+    if (t.ratio) {
+      EXPECT_NEAR(*t.ratio, 1.0, 1e-12) << t.method << " " << t.target;
+    }
+  }
+  const std::string md = render_compare_markdown(r);
+  EXPECT_NE(md.find("No slope regression"), std::string::npos);
+}
+
+TEST(Compare, ShallowerSlopeIsARegression) {
+  const temporary_directory dir;
+  write_folder(dir.path / "a", -2.0, 1.0);
+  write_folder(dir.path / "b", -1.5, 2.0);  // midpoint got shallower (−2 → −1.5) and slower
+  const compare_result r = compare_results(dir.path / "a", dir.path / "b", 0.1);
+  EXPECT_TRUE(r.regression);
+  EXPECT_EQ(r.regressions, 1u);
+  const slope_comparison& mid = r.slopes[0];
+  EXPECT_EQ(mid.method, "midpoint");
+  EXPECT_TRUE(mid.regression);
+  EXPECT_NEAR(*mid.slope_b - *mid.slope_a, 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(mid.allowed, 0.1) << "exact power laws: CI half-widths ~0, tolerance rules";
+  EXPECT_FALSE(r.slopes[1].regression) << "plain_mc unchanged";
+  // The error ratio at N = 2^12: (2^12)^(−1.5)/(2^12)^(−2) = 2^6 = 64. Each error is read off
+  // 1 + e, rounded to ε/2 absolute, so the ratio carries a relative error ≤ ε/e_A with
+  // e_A = 0.1·2^−24.
+  bool found = false;
+  for (const error_comparison& e : r.errors) {
+    if (e.method == "midpoint" && e.n == 4096) {
+      const double e_a = 0.1 * std::ldexp(1.0, -24);
+      EXPECT_NEAR(e.ratio, 64.0, 64.0 * std::numeric_limits<double>::epsilon() / e_a);
+      found = true;
+    }
+  }
+  EXPECT_TRUE(found);
+  const std::string md = render_compare_markdown(r);
+  EXPECT_NE(md.find("**REGRESSION**"), std::string::npos) << md;
+  // Reversing the roles is an improvement, not a regression.
+  const compare_result back = compare_results(dir.path / "b", dir.path / "a", 0.1);
+  EXPECT_FALSE(back.regression);
+  EXPECT_EQ(back.slopes[0].status, "steeper in B");
+}
+
+TEST(Compare, SmallSlopeChangeWithinToleranceAndMissingSeries) {
+  const temporary_directory dir;
+  write_folder(dir.path / "a", -2.0, 1.0);
+  write_folder(dir.path / "b", -1.95, 1.0);  // 0.05 shallower: within the 0.1 tolerance
+  EXPECT_FALSE(compare_results(dir.path / "a", dir.path / "b", 0.1).regression);
+  EXPECT_TRUE(compare_results(dir.path / "a", dir.path / "b", 0.01).regression);
+  EXPECT_THROW(compare_results(dir.path / "a", dir.path / "missing", 0.1), invalid_argument);
+  EXPECT_THROW(compare_results(dir.path / "a", dir.path / "b", -1.0), invalid_argument);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -1,0 +1,93 @@
+// Tests for markdown_report.hpp: header, slope summary, per-integrand tables, plot links.
+#include "quadmc/report/markdown_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace quadmc {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<convergence_table> sample_tables() {
+  convergence_series rule{"genz|odd", 1, "trapezoid", "analytic", 2.0, {}};
+  convergence_series mc{"genz|odd", 1, "plain_mc", "analytic", 2.0, {}};
+  for (int k = 1; k <= 26; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const auto nk = static_cast<std::uint64_t>(n);
+    // Trapezoid-like 0.5·N⁻² reaching a floor of ±5e-16.
+    rule.cells.push_back(
+        {nk, {{2.0 + 0.5 / (n * n) + (k % 2 ? 5e-16 : -5e-16), nan, nk, 1e-8 * n}}});
+    if (k <= 12) {
+      mc.cells.push_back({nk,
+                          {{2.0 + 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n},
+                           {2.0 - 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n}}});
+    }
+  }
+  return {analyse_convergence(rule), analyse_convergence(mc)};
+}
+
+TEST(MarkdownReport, PlotFileNamesArePredictable) {
+  EXPECT_EQ(convergence_plot_file("genz_gaussian", 3), "genz_gaussian_s3.svg");
+  EXPECT_EQ(work_precision_plot_file("genz_gaussian", 3), "work_precision_genz_gaussian_s3.svg");
+  EXPECT_EQ(plot_stem("disk indicator/r=0.3"), "disk_indicator_r_0.3");
+}
+
+TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
+  run_info info;
+  info.scene = "default";
+  info.seed = 42;
+  info.threads = 2;
+  info.compiler = "GCC 12.2.0";
+  info.run_seconds = 12.5;
+  info.skipped = {"simpson s = 6: 7^6 > budget"};
+  const auto tables = sample_tables();
+  const std::string page = render_results_markdown(info, tables);
+  EXPECT_EQ(page.rfind("# Results: default\n", 0), 0u);
+  EXPECT_NE(page.find("- seed: 42"), std::string::npos);
+  EXPECT_NE(page.find("- threads: 2"), std::string::npos);
+  EXPECT_NE(page.find("- compiler: GCC 12.2.0"), std::string::npos);
+  EXPECT_EQ(page.find("- machine:"), std::string::npos) << "empty fields are omitted";
+  EXPECT_NE(page.find("- simpson s = 6: 7^6 > budget"), std::string::npos);
+  // Summary rows: the integrand's '|' is escaped so the table keeps its columns.
+  EXPECT_NE(page.find("| genz\\|odd | 1 | trapezoid | -2.0"), std::string::npos) << page;
+  EXPECT_NE(page.find("| genz\\|odd | 1 | plain_mc | -0.500 ± 0.000 | -0.500 | agrees |"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("![error against N](genz_odd_s1.svg)"), std::string::npos);
+  EXPECT_NE(page.find("![work-precision](work_precision_genz_odd_s1.svg)"), std::string::npos);
+  // One section for the (integrand, s) group, with both methods and a work-precision table.
+  EXPECT_NE(page.find("## genz\\|odd (s = 1)"), std::string::npos);
+  EXPECT_EQ(page.find("## genz\\|odd (s = 1)"), page.rfind("## genz\\|odd (s = 1)"));
+  EXPECT_NE(page.find("### trapezoid"), std::string::npos);
+  EXPECT_NE(page.find("### plain_mc"), std::string::npos);
+  EXPECT_NE(page.find("| \\|error\\| |"), std::string::npos) << "deterministic: |error|";
+  EXPECT_NE(page.find("| RMSE |"), std::string::npos) << "repetitions: RMSE";
+  EXPECT_NE(page.find("▼"), std::string::npos) << "the trapezoid floor points are marked";
+  EXPECT_NE(page.find("rounding floor from N = "), std::string::npos);
+  EXPECT_NE(page.find("| method | 1e-02 | 1e-03 |"), std::string::npos) << page;
+  EXPECT_NE(page.find("not reached"), std::string::npos) << "MC never reaches 1e-8 at N = 4096";
+  // Every table row has the header's number of cells: count '|' outside escapes per line.
+  std::size_t start = 0;
+  std::size_t expected = 0;
+  while (start < page.size()) {
+    const std::size_t end = page.find('\n', start);
+    const std::string line = page.substr(start, end - start);
+    start = end + 1;
+    if (line.empty() || line[0] != '|') {
+      expected = 0;
+      continue;
+    }
+    std::size_t bars = 0;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
+    }
+    if (expected == 0) expected = bars;
+    EXPECT_EQ(bars, expected) << line;
+  }
+}
+
+}  // namespace
+}  // namespace quadmc

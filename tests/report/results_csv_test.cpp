@@ -1,0 +1,188 @@
+// Tests for results_csv.hpp: the exact header lines, writer → reader round trip, tolerance of
+// added columns, strictness about missing ones.
+#include "quadmc/report/results_csv.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+
+namespace quadmc {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// A fresh directory under the system temp dir, removed at the end of the test.
+struct temporary_directory {
+  fs::path path;
+  temporary_directory() {
+    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
+    path = fs::temp_directory_path() /
+           fmt::format("quadmc_results_csv_{}_{}", tick, std::random_device{}());
+    fs::create_directories(path);
+  }
+  ~temporary_directory() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+void write(const fs::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+// Two series: a deterministic rule (no std_error, coverage empty) with an awkward integrand name,
+// and a Monte Carlo method with coverage.
+std::vector<convergence_table> sample_tables() {
+  convergence_series rule{"step, \"shifted\"", 1, "midpoint", "discontinuous", 1.0 / 3.0, {}};
+  convergence_series mc{"genz_gaussian", 2, "plain_mc", "analytic", 0.7, {}};
+  for (int k = 2; k <= 6; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const auto nk = static_cast<std::uint64_t>(n);
+    rule.cells.push_back({nk, {{1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n}}});
+    mc.cells.push_back({nk,
+                        {{0.7 + 0.2 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 1e-6},
+                         {0.7 - 0.3 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 2e-6}}});
+  }
+  return {analyse_convergence(rule), analyse_convergence(mc)};
+}
+
+TEST(ResultsCsv, ExactHeaderLines) {
+  const auto tables = sample_tables();
+  const std::string conv = convergence_csv_text("default", tables);
+  EXPECT_EQ(conv.substr(0, conv.find('\n')),
+            "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
+            "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
+            "smoothness");
+  const std::string slopes = slopes_csv_text("default", tables);
+  EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
+            "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
+            "floor_points,smoothness,fit_status,attainable_accuracy,theory_note");
+}
+
+TEST(ResultsCsv, DeterministicRowHasEmptyCoverageAndFullReference) {
+  const auto tables = sample_tables();
+  const std::string conv = convergence_csv_text("default", tables);
+  // First data row: the quoted name, N = 4, reference 1/3 to 17 digits, empty std error and
+  // coverage.
+  const std::string first =
+      conv.substr(conv.find('\n') + 1, conv.find('\n', conv.find('\n') + 1) - conv.find('\n') - 1);
+  EXPECT_EQ(
+      first.rfind("default,\"step, \"\"shifted\"\"\",1,midpoint,4,4,1,0.33333333333333331,", 0), 0u)
+      << first;
+  EXPECT_NE(first.find(",,,"), std::string::npos)
+      << "std_error_of_rmse and coverage empty: " << first;
+}
+
+TEST(ResultsCsv, RoundTripThroughFiles) {
+  const temporary_directory dir;
+  const auto tables = sample_tables();
+  write(dir.path / "convergence.csv", convergence_csv_text("default", tables));
+  write(dir.path / "slopes.csv", slopes_csv_text("default", tables));
+
+  const auto rows = read_convergence_csv(dir.path / "convergence.csv");
+  ASSERT_EQ(rows.size(), 10u);
+  std::size_t i = 0;
+  for (const convergence_table& t : tables) {
+    for (const convergence_row& row : t.rows) {
+      const convergence_record& r = rows[i++];
+      EXPECT_EQ(r.scene, "default");
+      EXPECT_EQ(r.integrand, t.integrand);
+      EXPECT_EQ(r.s, t.s);
+      EXPECT_EQ(r.method, t.method);
+      EXPECT_EQ(r.n, row.n);
+      EXPECT_EQ(r.evaluations, row.stats.evaluations);
+      EXPECT_EQ(r.repetitions, row.stats.repetitions);
+      // Shortest round-trip text and 17 digits: every double reads back bit for bit.
+      EXPECT_EQ(r.reference, t.reference);
+      EXPECT_EQ(r.rmse, row.stats.rmse);
+      EXPECT_EQ(r.estimate_mean, row.stats.estimate_mean);
+      EXPECT_EQ(r.mean_abs_error, row.stats.mean_abs_error);
+      EXPECT_EQ(r.seconds, row.stats.seconds);
+      EXPECT_EQ(std::isnan(r.coverage_95), std::isnan(row.stats.coverage_95));
+      if (!std::isnan(r.coverage_95)) {
+        EXPECT_EQ(r.coverage_95, row.stats.coverage_95);
+      }
+      EXPECT_EQ(r.floor, row.floor);
+    }
+  }
+
+  const auto slopes = read_slopes_csv(dir.path / "slopes.csv");
+  ASSERT_EQ(slopes.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(slopes[k].integrand, tables[k].integrand);
+    EXPECT_EQ(slopes[k].slope, tables[k].fit.slope);
+    EXPECT_EQ(slopes[k].ci_low, tables[k].fit.ci_low);
+    EXPECT_EQ(slopes[k].ci_high, tables[k].fit.ci_high);
+    EXPECT_EQ(slopes[k].theory, *tables[k].theory.slope);
+    EXPECT_EQ(slopes[k].verdict, to_string(tables[k].verdict));
+    EXPECT_EQ(slopes[k].points_used, tables[k].points_used());
+    EXPECT_EQ(slopes[k].floor_points, tables[k].floor_points());
+  }
+}
+
+TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
+  const temporary_directory dir;
+  write(dir.path / "slopes.csv",
+        "extra,scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
+        "floor_points,later\n"
+        "zz,x,f,2,jittered,-1.01,-1.1,-0.92,,no_theory,7,0,q\n");
+  const auto slopes = read_slopes_csv(dir.path / "slopes.csv");
+  ASSERT_EQ(slopes.size(), 1u);
+  EXPECT_EQ(slopes[0].slope, -1.01);
+  EXPECT_TRUE(std::isnan(slopes[0].theory));
+  EXPECT_EQ(slopes[0].points_used, 7u);
+
+  // A convergence.csv without the added `floor` column (an older folder) reads with floor = false.
+  const auto tables = sample_tables();
+  std::string text = convergence_csv_text("default", tables);
+  std::string old;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    std::string line = text.substr(start, end - start);
+    // Drop the last two columns (floor, smoothness): smoothness has no comma in these tables.
+    line = line.substr(0, line.rfind(','));
+    line = line.substr(0, line.rfind(','));
+    old += line + '\n';
+    start = end + 1;
+  }
+  write(dir.path / "convergence.csv", old);
+  const auto rows = read_convergence_csv(dir.path / "convergence.csv");
+  ASSERT_EQ(rows.size(), 10u);
+  for (const auto& r : rows) EXPECT_FALSE(r.floor);
+}
+
+TEST(ResultsCsv, MissingColumnOrBadNumberNamesFileAndColumn) {
+  const temporary_directory dir;
+  const fs::path file = dir.path / "slopes.csv";
+  write(file, "scene,integrand,s,method,slope,ci_low,ci_high,verdict,points_used,floor_points\n");
+  try {
+    read_slopes_csv(file);
+    FAIL() << "theory column is missing";
+  } catch (const invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("'theory'"), std::string::npos) << what;
+  }
+  write(file,
+        "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,floor_points\n"
+        "x,f,1,midpoint,-2.0x,-2.1,-1.9,-2,agrees,5,0\n");
+  try {
+    read_slopes_csv(file);
+    FAIL() << "slope is not a number";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'slope' = '-2.0x'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace quadmc

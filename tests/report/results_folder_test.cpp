@@ -1,0 +1,79 @@
+// Tests for results_folder.hpp: the three files appear together and agree.
+#include "quadmc/report/results_folder.hpp"
+
+#include "quadmc/report/results_csv.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <random>
+
+namespace quadmc {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct temporary_directory {
+  fs::path path;
+  temporary_directory() {
+    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
+    path = fs::temp_directory_path() /
+           fmt::format("quadmc_results_folder_{}_{}", tick, std::random_device{}());
+  }
+  ~temporary_directory() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+TEST(ResultsFolder, WritesThreeAgreeingFiles) {
+  const temporary_directory dir;
+  convergence_series s{"f", 2, "simpson", "smooth", 1.0, {}};
+  for (std::uint64_t n : {9u, 25u, 81u, 289u}) {
+    s.cells.push_back(
+        {n, {{1.0 + 1.0 / (n * n), std::numeric_limits<double>::quiet_NaN(), n, 1e-6}}});
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(s)};
+  run_info info;
+  info.scene = "unit";
+  const fs::path folder = dir.path / "results" / "unit";  // nested: created on demand
+  write_results_folder(folder, info, tables);
+  EXPECT_TRUE(fs::exists(folder / "README.md"));
+  EXPECT_EQ(read_convergence_csv(folder / "convergence.csv").size(), 4u);
+  const auto slopes = read_slopes_csv(folder / "slopes.csv");
+  ASSERT_EQ(slopes.size(), 1u);
+  EXPECT_EQ(slopes[0].scene, "unit");
+  // Error N⁻²; the theory for Simpson in s = 2 is −4/2 = −2: agrees. The errors are read off
+  // 1 + N⁻² (rounded to ε/2 ≈ 1e-16 against e ≥ 1.2e-5, relative ≤ 1e-11), so the slope is −2
+  // to ~1e-11, not to ε.
+  EXPECT_NEAR(slopes[0].slope, -2.0, 1e-10);
+  EXPECT_EQ(slopes[0].verdict, "agrees");
+}
+
+TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
+  const temporary_directory dir;
+  convergence_series s{"f", 1, "plain_mc", "smooth", 1.0, {}};
+  s.cells.push_back({16, {{1.1, 0.1, 16, 1e-6}}});
+  const std::vector<convergence_table> tables = {analyse_convergence(s)};
+  run_info info;
+  info.scene = "unit";
+  write_results_folder(dir.path, info, tables, {.csv = false, .markdown = true});
+  EXPECT_TRUE(fs::exists(dir.path / "README.md"));
+  EXPECT_FALSE(fs::exists(dir.path / "convergence.csv"));
+  EXPECT_FALSE(fs::exists(dir.path / "slopes.csv"));
+}
+
+TEST(ResultsFolder, PlotCommandLine) {
+  const auto argv = plot_command_line("bench/plot.py", "results/default");
+  ASSERT_EQ(argv.size(), 3u);
+  EXPECT_EQ(argv[0], "/usr/bin/python3");
+  EXPECT_EQ(argv[1], "bench/plot.py");
+  EXPECT_EQ(argv[2], "results/default");
+}
+
+}  // namespace
+}  // namespace quadmc
