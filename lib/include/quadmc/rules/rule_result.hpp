@@ -10,7 +10,8 @@ namespace quadmc {
 struct rule_result {
   double value = 0.0;
   // A-posteriori error estimate where the rule has one (Romberg: difference of the last two
-  // extrapolants; Gauss–Legendre: difference to the rule with half the panels); NaN otherwise.
+  // diagonal extrapolants); NaN for the fixed rules of tensor_product.hpp, whose accuracy is
+  // stated a priori by error_bounds.hpp instead.
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t evaluations = 0;
 };

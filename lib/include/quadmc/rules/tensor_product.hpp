@@ -1,0 +1,209 @@
+// Tensor-product quadrature over a box: the one kernel behind every rule of this layer, 1D
+// included.
+//
+// Q(f) = Π(b_j − a_j) · Σ_{k_1…k_s} w_{k_1}⋯w_{k_s} f(a_1 + (b_1 − a_1)t_{k_1}, …), the product of
+// a 1D rule with m nodes along each of the s axes, N = m^s evaluations (lecture seed 004 §1.2,
+// eq. 2). Use it for smooth integrands in a few dimensions; its error is O(N^(−r/s)) for a rule
+// of order r, so past s ≈ 4 Monte Carlo and QMC win (THEORY.md table: "curse of
+// dimensionality"), and a jump across a non-axis surface gives only O(N^(−1/s)).
+//
+// How it runs (DESIGN.md hot-path contract):
+//  - the grid is never stored: a chunk decodes its first flat index into a multi-index (last
+//    axis fastest) and walks on like an odometer, recomputing a node only when its axis moves;
+//  - points go to the integrand in batches of 256 (row-major x[i*s + j]); each batch's terms
+//    w_i·f_i are summed pairwise and batches are added with Neumaier's compensated sum, so the
+//    rounding error stays O(ε·Σ|w f|) for any N (summation.hpp);
+//  - chunks of 2^14 points are the unit of parallel work; their boundaries depend only on N, and
+//    parallel_reduce folds them in chunk order, so any thread count gives the same bits.
+#pragma once
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/summation.hpp"
+#include "quadmc/functions/integrand.hpp"
+#include "quadmc/rules/rule.hpp"
+#include "quadmc/rules/rule_result.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+namespace quadmc {
+
+// Points handed to the integrand per call (the project-wide batch, ≥ 256 per virtual call).
+inline constexpr std::size_t rule_batch_size = 256;
+// Points per parallel chunk: 64 batches, large enough that thread start-up (tens of µs) is paid
+// back even for a cheap integrand, small enough that 2 cores stay busy on a 100×100×100 grid.
+inline constexpr std::uint64_t tensor_chunk_points = std::uint64_t{1} << 14;
+
+// m^s, the number of points of an s-dimensional tensor grid with m nodes per axis. Throws
+// invalid_argument if it is not representable in 64 bits: checked before each multiplication
+// (p > (2^64 − 1)/m ⇔ p·m ≥ 2^64), so the test is exact, not a floating-point estimate.
+inline std::uint64_t tensor_grid_size(std::uint64_t nodes_per_axis, std::size_t s) {
+  require(s >= 1, "dimension s", s, "at least 1");
+  require(nodes_per_axis >= 1, "nodes per axis", nodes_per_axis, "at least 1");
+  constexpr std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
+  std::uint64_t points = 1;
+  for (std::size_t j = 0; j < s; ++j) {
+    if (points > limit / nodes_per_axis) {
+      throw invalid_argument(
+          "nodes per axis", quote(nodes_per_axis),
+          fmt::format("nodes^s ≤ 2^64 − 1 for s = {}: the grid has too many points to count in "
+                      "64 bits (use fewer panels or a Monte Carlo method)",
+                      s));
+    }
+    points *= nodes_per_axis;
+  }
+  return points;
+}
+
+// Checks a box for a tensor rule: finite bounds, lower ≤ upper (a reversed axis is rejected, not
+// read as a sign flip), finite widths.
+inline void require_integration_box(const box& domain) {
+  require(domain.upper.size() == domain.lower.size(), "domain.upper size", domain.upper.size(),
+          fmt::format("the size of domain.lower, {}", domain.lower.size()));
+  for (std::size_t j = 0; j < domain.lower.size(); ++j) {
+    const double a = domain.lower[j];
+    const double b = domain.upper[j];
+    require_finite(a, fmt::format("domain.lower[{}]", j));
+    require_finite(b, fmt::format("domain.upper[{}]", j));
+    require(a <= b, fmt::format("domain.upper[{}]", j), b,
+            fmt::format("≥ domain.lower[{}] = {} (a reversed interval is not integrated with a "
+                        "minus sign; swap the bounds)",
+                        j, quote(a)));
+    require(std::isfinite(b - a), fmt::format("domain width upper[{0}] − lower[{0}]", j), b - a,
+            "a finite number (the bounds are too far apart for double)");
+  }
+}
+
+// ∫ f over f.info().domain by the tensor product of `rule` with n panels per axis. 1D is s = 1.
+// threads = 0 uses every core; the result is bitwise the same for every thread count.
+// Throws invalid_argument for bad n, domain or grid size, non_finite_value if f returns NaN/±inf
+// (the message names the point). error_estimate is NaN: a fixed rule has no a-posteriori
+// estimate (see error_bounds.hpp for a-priori bounds, romberg.hpp for an estimate).
+template <integrand F, rule R>
+rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threads = 1) {
+  const integrand_info info = f.info();
+  const std::size_t s = f.dimension();
+  require(s >= 1, "integrand dimension s", s, "at least 1");
+  require(info.domain.dimension() == s, "integrand domain dimension", info.domain.dimension(),
+          fmt::format("the integrand's dimension {}", s));
+  require_integration_box(info.domain);
+  const auto q = rule.nodes(n);
+  const std::uint64_t m = q.size();
+  const std::uint64_t total = tensor_grid_size(m, s);
+
+  std::vector<double> lower = info.domain.lower;
+  std::vector<double> width(s);
+  for (std::size_t j = 0; j < s; ++j) width[j] = info.domain.upper[j] - info.domain.lower[j];
+
+  const std::size_t chunks =
+      static_cast<std::size_t>(total / tensor_chunk_points + (total % tensor_chunk_points != 0));
+
+  auto chunk_sum = [&](std::size_t c) {
+    const std::uint64_t begin = static_cast<std::uint64_t>(c) * tensor_chunk_points;
+    const std::uint64_t end = std::min(begin + tensor_chunk_points, total);
+    // Buffers once per chunk (2^14 points), never per point.
+    std::vector<double> x(rule_batch_size * s);
+    std::vector<double> y(rule_batch_size);
+    std::vector<double> terms(rule_batch_size);
+    std::vector<std::uint64_t> index(s);
+    std::vector<double> coordinate(s);
+    std::vector<double> axis_weight(s);
+    auto place = [&](std::size_t j) {
+      coordinate[j] = lower[j] + width[j] * q.node(index[j]);
+      axis_weight[j] = q.weight(index[j]);
+    };
+    std::uint64_t rest = begin;
+    for (std::size_t j = s; j-- > 0;) {
+      index[j] = rest % m;
+      rest /= m;
+      place(j);
+    }
+
+    neumaier_sum sum;
+    for (std::uint64_t p = begin; p < end;) {
+      const std::size_t count =
+          static_cast<std::size_t>(std::min<std::uint64_t>(rule_batch_size, end - p));
+      for (std::size_t i = 0; i < count; ++i) {
+        // The product weight is formed left to right from the same factors wherever the chunk
+        // starts, so it does not depend on the chunking either.
+        double w = 1.0;
+        for (std::size_t j = 0; j < s; ++j) {
+          x[i * s + j] = coordinate[j];
+          w *= axis_weight[j];
+        }
+        terms[i] = w;
+        for (std::size_t j = s; j-- > 0;) {  // odometer step, last axis fastest
+          if (++index[j] < m) {
+            place(j);
+            break;
+          }
+          index[j] = 0;
+          place(j);
+        }
+      }
+      const std::span<const double> xs(x.data(), count * s);
+      const std::span<double> ys(y.data(), count);
+      f.evaluate(xs, ys);
+      check_finite_batch(info.name, xs, ys, s);
+      for (std::size_t i = 0; i < count; ++i) terms[i] *= y[i];
+      sum.add(pairwise_sum(std::span<const double>(terms.data(), count)));
+      p += count;
+    }
+    return sum;
+  };
+
+  const neumaier_sum sum =
+      parallel_reduce(chunks, threads, neumaier_sum{}, chunk_sum,
+                      [](neumaier_sum& acc, const neumaier_sum& part) { acc.merge(part); });
+
+  rule_result result;
+  result.value = info.domain.volume() * sum.value();
+  result.evaluations = total;
+  return result;
+}
+
+namespace detail {
+
+// A plain callable double(double) on [a, b] seen as a 1D integrand, so that the convenience form
+// below runs the same kernel (one inlined call per point, no type erasure).
+template <class G>
+class interval_function {
+ public:
+  interval_function(const G& g, double a, double b) : g_(&g) {
+    info_.name = "function";
+    info_.domain = box{{a}, {b}};
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = (*g_)(x[i]);
+  }
+  const integrand_info& info() const noexcept { return info_; }
+
+ private:
+  const G* g_;
+  integrand_info info_;
+};
+
+}  // namespace detail
+
+// ∫_a^b g(x) dx for a plain callable, by the same kernel (the batch integrand path above is the
+// one the runner uses; this form is for tests and quick use).
+template <class G, rule R>
+requires std::is_invocable_r_v<double, const G&, double> rule_result
+integrate(const G& g, double a, double b, const R& rule, std::uint64_t n, unsigned threads = 1) {
+  require_finite(a, "a");
+  require_finite(b, "b");
+  require(a <= b, "b", b,
+          fmt::format("≥ a = {} (swap the bounds for a reversed interval)", quote(a)));
+  return integrate(detail::interval_function<G>(g, a, b), rule, n, threads);
+}
+
+}  // namespace quadmc
