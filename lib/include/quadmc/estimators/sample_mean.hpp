@@ -1,0 +1,162 @@
+// The kernel every Monte Carlo estimator of this library runs: the mean of Y over a point set,
+// computed in fixed chunks in parallel, with the error estimate the point set allows.
+//
+// Use it to write an estimator: give it a point set and a batch function that turns a batch of
+// points of [0,1)^s into values Y (f mapped to a box times its volume, f/p for importance
+// sampling, a radiance estimate for rendering). Not for deterministic rules (rules/).
+//
+// Why it looks like this (DESIGN.md hot-path contract):
+//  - Chunks of chunk_points = 12288 points (48 batches of 256), boundaries a function of N and the
+//    point set only, folded in chunk order by quadmc::parallel_reduce: bitwise identical results
+//    for any thread count. 12288 is a multiple of 3 so the triples of stratum_differences never
+//    straddle a chunk; for m points per stratum a chunk is a whole number of strata.
+//  - The value is Σ Y / N with Neumaier summation (error independent of N to first order: Boost's
+//    naive_monte_carlo explains that a plain sum's εN error eventually exceeds σ/√N); the sample
+//    variance is Welford's, merged by Chan et al.'s formula (core/welford.hpp).
+//  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
+#pragma once
+
+#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/summation.hpp"
+#include "quadmc/core/welford.hpp"
+#include "quadmc/estimators/estimate.hpp"
+#include "quadmc/sampling/point_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace quadmc {
+
+inline constexpr std::uint64_t chunk_points = 12288;
+inline constexpr std::size_t batch_points = 256;
+
+// Running statistics of the values Y of one chunk (or of several chunks merged in order).
+class sample_statistics {
+ public:
+  explicit sample_statistics(variance_structure structure = {}) : structure_(structure) {}
+
+  // Y of point `index`; within a chunk, points arrive in index order and groups start aligned.
+  void add(std::uint64_t index, double y) noexcept {
+    sum_.add(y);
+    all_.add(y);
+    switch (structure_.kind) {
+      case variance_kind::within_strata:
+        stratum_.add(y);
+        if ((index + 1) % structure_.group == 0) {
+          group_sum_.add(stratum_.variance());
+          ++groups_;
+          stratum_ = welford{};
+        }
+        break;
+      case variance_kind::stratum_differences: {
+        const std::uint64_t position = index % 3;
+        triple_[position] = y;
+        // A triple of neighbours lies in one row of `group` strata along the last axis.
+        if (position == 2 && ((index - 2) % structure_.group) + 2 < structure_.group) {
+          const double d = triple_[0] - 2.0 * triple_[1] + triple_[2];
+          group_sum_.add(d * d / 6.0);
+          ++groups_;
+        }
+        break;
+      }
+      default:
+        break;
+    }
+  }
+
+  void merge(const sample_statistics& other) noexcept {
+    sum_.merge(other.sum_);
+    all_.merge(other.all_);
+    group_sum_.merge(other.group_sum_);
+    groups_ += other.groups_;
+  }
+
+  // The estimate of the mean of Y and of its standard error (see variance_kind for each case).
+  // `variance` is the per-point variance V̂[Y]_eff = N·std_error², so that std_error =
+  // √(variance/N) holds for every point set and the Chebyshev interval can use it.
+  estimate result() const noexcept {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::uint64_t n = all_.count();
+    const double nd = static_cast<double>(n);
+    estimate e;
+    e.evaluations = n;
+    e.value = sum_.value() / nd;
+    double variance_of_mean = nan;
+    switch (structure_.kind) {
+      case variance_kind::independent:
+      case variance_kind::independent_bound:
+        variance_of_mean = all_.variance() / nd;
+        break;
+      case variance_kind::within_strata: {
+        // Σ vᵢ²σ̂ᵢ²/nᵢ with vᵢ = 1/K, nᵢ = m: Σσ̂ᵢ²/(K²m).
+        const double strata = static_cast<double>(groups_);
+        variance_of_mean =
+            groups_ == 0
+                ? nan
+                : group_sum_.value() / (strata * strata * static_cast<double>(structure_.group));
+        break;
+      }
+      case variance_kind::stratum_differences:
+        // (1/N²)Σσᵢ² with σᵢ² estimated by the mean of the second differences.
+        variance_of_mean =
+            groups_ == 0 ? nan : group_sum_.value() / static_cast<double>(groups_) / nd;
+        break;
+      case variance_kind::not_estimable:
+        break;
+    }
+    e.std_error = std::sqrt(variance_of_mean);
+    e.variance = variance_of_mean * nd;
+    return e;
+  }
+
+ private:
+  variance_structure structure_;
+  neumaier_sum sum_;
+  welford all_;
+  neumaier_sum group_sum_;
+  std::uint64_t groups_ = 0;
+  welford stratum_;
+  double triple_[3] = {0.0, 0.0, 0.0};
+};
+
+// Mean of Y over `points`. batch_values(first, u, y) receives a batch of points u (row-major,
+// y.size() points starting at index `first`) and writes Y for each into y; it may overwrite u
+// (e.g. map it to a box in place). It must be safe to call concurrently (it is called from several
+// threads on distinct chunks).
+template <point_set P, class BatchValues>
+estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_values) {
+  const std::uint64_t n = points.size();
+  const std::size_t s = points.dimension();
+  const variance_structure structure = points.variance();
+  const std::uint64_t group = structure.points_per_group();
+  const std::uint64_t chunk = group * std::max<std::uint64_t>(1, chunk_points / group);
+  const std::uint64_t chunks = (n + chunk - 1) / chunk;
+  const sample_statistics total = parallel_reduce(
+      static_cast<std::size_t>(chunks), threads, sample_statistics(structure),
+      [&](std::size_t c) {
+        sample_statistics stats(structure);
+        std::vector<double> u(batch_points * s);
+        std::vector<double> y(batch_points);
+        const std::uint64_t begin = c * chunk;
+        const std::uint64_t end = std::min(n, begin + chunk);
+        for (std::uint64_t first = begin; first < end; first += batch_points) {
+          const auto count =
+              static_cast<std::size_t>(std::min<std::uint64_t>(batch_points, end - first));
+          const std::span<double> ub(u.data(), count * s);
+          const std::span<double> yb(y.data(), count);
+          points.generate(first, ub);
+          batch_values(first, ub, yb);
+          for (std::size_t i = 0; i < count; ++i) stats.add(first + i, yb[i]);
+        }
+        return stats;
+      },
+      [](sample_statistics& acc, const sample_statistics& part) { acc.merge(part); });
+  return total.result();
+}
+
+}  // namespace quadmc

@@ -1,0 +1,51 @@
+// Points in the unit disk from two uniforms (lecture §3.1.3; PBRT 3rd ed. §13.6.2).
+//
+//  - uniform_disk_warp: r = √U₁, θ = 2πU₂. The area element is r dr dθ, so P(r) = r² and
+//    inversion gives r = √U₁; density 1/π with respect to area. Use it for area lights shaped
+//    like disks, lens samples, or as the first step of cosine-weighted hemisphere sampling.
+//  - naive_disk_warp: r = U₁, θ = 2πU₂. DELIBERATELY WRONG, kept so that a plot and a test can
+//    show the clumping at the centre the lecture warns of: its true density is 1/(2πr), not the
+//    1/π its pdf() claims, so an estimator using it is biased. Never use it for estimation.
+// Neither preserves stratification perfectly (Shirley & Chiu's concentric map does better); the
+// polar map is the lecture's and is enough for the convergence study.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <span>
+
+namespace quadmc {
+
+class uniform_disk_warp {
+ public:
+  std::size_t input_dimension() const noexcept { return 2; }
+  std::size_t output_dimension() const noexcept { return 2; }
+  void sample(std::span<const double> u, std::span<double> x) const noexcept {
+    const double r = std::sqrt(u[0]);
+    const double theta = 2.0 * std::numbers::pi * u[1];
+    x[0] = r * std::cos(theta);
+    x[1] = r * std::sin(theta);
+  }
+  double pdf(std::span<const double> x) const noexcept {
+    return x[0] * x[0] + x[1] * x[1] <= 1.0 ? std::numbers::inv_pi : 0.0;
+  }
+};
+
+class naive_disk_warp {
+ public:
+  std::size_t input_dimension() const noexcept { return 2; }
+  std::size_t output_dimension() const noexcept { return 2; }
+  void sample(std::span<const double> u, std::span<double> x) const noexcept {
+    const double r = u[0];  // WRONG on purpose: should be √U₁
+    const double theta = 2.0 * std::numbers::pi * u[1];
+    x[0] = r * std::cos(theta);
+    x[1] = r * std::sin(theta);
+  }
+  // The density the naive warp is wrongly believed to have (uniform); the truth is 1/(2πr).
+  double pdf(std::span<const double> x) const noexcept {
+    return x[0] * x[0] + x[1] * x[1] <= 1.0 ? std::numbers::inv_pi : 0.0;
+  }
+};
+
+}  // namespace quadmc

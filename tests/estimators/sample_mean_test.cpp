@@ -1,0 +1,103 @@
+#include "quadmc/estimators/sample_mean.hpp"
+
+#include "quadmc/sampling/independent_points.hpp"
+#include "quadmc/sampling/jittered_points.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace {
+
+using namespace quadmc;
+
+// Y = x₀ + x₁²: any deterministic function of the point will do.
+auto values = [](std::uint64_t, std::span<double> u, std::span<double> y) {
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = u[2 * i] + u[2 * i + 1] * u[2 * i + 1];
+};
+
+bool bitwise_equal(const estimate& a, const estimate& b) {
+  return std::memcmp(&a.value, &b.value, sizeof(double)) == 0 &&
+         std::memcmp(&a.std_error, &b.std_error, sizeof(double)) == 0 &&
+         std::memcmp(&a.variance, &b.variance, sizeof(double)) == 0 &&
+         a.evaluations == b.evaluations;
+}
+
+// 100 003 points = 9 chunks of 12288 and a partial one: any thread count folds them in order.
+TEST(SampleMean, IsBitwiseIdenticalForAnyThreadCount) {
+  const independent_points p(2, 100003, 1, 2);
+  const estimate one = sample_mean(p, 1, values);
+  for (unsigned t : {2u, 3u, 8u}) {
+    const estimate e = sample_mean(p, t, values);
+    EXPECT_TRUE(bitwise_equal(one, e)) << t << " threads: " << e.value << " vs " << one.value;
+  }
+  const jittered_points j(stratum_grid(2, 100), 3, 1, 2);  // 30 000 points, 3 per stratum
+  const estimate jone = sample_mean(j, 1, values);
+  for (unsigned t : {2u, 3u, 8u}) EXPECT_TRUE(bitwise_equal(jone, sample_mean(j, t, values)));
+}
+
+// The value is the plain mean, the independent error is √(s²/N).
+TEST(SampleMean, IndependentPointsReportTheSampleVariance) {
+  const independent_points p(2, 1000, 3, 3);
+  std::vector<double> u(2000), y(1000);
+  p.generate(0, u);
+  values(0, u, y);
+  welford w;
+  double sum = 0;
+  for (double v : y) {
+    w.add(v);
+    sum += v;
+  }
+  const estimate e = sample_mean(p, 1, values);
+  EXPECT_NEAR(e.value, sum / 1000, 1e-15);
+  EXPECT_NEAR(e.variance, w.variance(), 1e-14);
+  EXPECT_NEAR(e.std_error, std::sqrt(w.variance() / 1000), 1e-15);
+  EXPECT_EQ(e.evaluations, 1000u);
+}
+
+// m = 4 points in each of K = 9 strata: V̂[F] = Σσ̂ᵢ²/(K²m), computed here by hand.
+TEST(SampleMean, WithinStrataVarianceIsTheStratifiedFormula) {
+  const jittered_points p(stratum_grid(2, 3), 4, 5, 5);
+  std::vector<double> u(72), y(36);
+  p.generate(0, u);
+  values(0, u, y);
+  double sum_var = 0;
+  for (int k = 0; k < 9; ++k) {
+    welford w;
+    for (int j = 0; j < 4; ++j) w.add(y[4 * k + j]);
+    sum_var += w.variance();
+  }
+  const estimate e = sample_mean(p, 1, values);
+  EXPECT_NEAR(e.std_error * e.std_error, sum_var / (81.0 * 4.0), 1e-15);
+  EXPECT_NEAR(e.variance, 36 * sum_var / (81.0 * 4.0), 1e-14);
+}
+
+// One point per stratum: second differences within rows of k strata. k = 5: triples (0,1,2) of
+// each row are used, (3,4,5) straddles rows and is skipped.
+TEST(SampleMean, StratumDifferencesUseTriplesInsideARow) {
+  const jittered_points p(2, 25, 1, 1);
+  std::vector<double> u(50), y(25);
+  p.generate(0, u);
+  values(0, u, y);
+  double sum = 0;
+  int triples = 0;
+  for (int t = 0; t + 2 < 25; t += 3) {
+    if (t % 5 + 2 >= 5) continue;
+    const double d = y[t] - 2 * y[t + 1] + y[t + 2];
+    sum += d * d / 6;
+    ++triples;
+  }
+  EXPECT_EQ(triples, 5);  // starting at t = 0, 6, 12, 15, 21
+  const estimate e = sample_mean(p, 1, values);
+  EXPECT_NEAR(e.std_error * e.std_error, sum / triples / 25, 1e-16);
+}
+
+// k < 3: no triple in a row, no estimate; NaN rather than a made-up number.
+TEST(SampleMean, TooFewStrataForDifferencesGiveNaN) {
+  const jittered_points p(2, 4, 1, 1);
+  EXPECT_TRUE(std::isnan(sample_mean(p, 1, values).std_error));
+}
+
+}  // namespace

@@ -1,0 +1,64 @@
+#include "quadmc/sampling/padded_jittered_points.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace {
+
+using namespace quadmc;
+
+// Every 2D group (axes 2g, 2g+1) is stratified on the kx × ky grid and a trailing 1D group on N
+// rows, for any s.
+void expect_groups_stratified(std::size_t s, std::uint64_t n) {
+  const padded_jittered_points p(s, n, 3, 3);
+  const std::uint64_t kx = p.grid_columns(), ky = p.grid_rows();
+  ASSERT_EQ(kx * ky, n);
+  std::vector<double> x(n * s);
+  p.generate(0, x);
+  for (std::size_t j = 0; j < s; j += 2) {
+    std::vector<int> hits(n, 0);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const double* xi = &x[i * s];
+      const std::uint64_t cell =
+          j + 1 < s ? std::uint64_t(xi[j] * double(kx)) * ky + std::uint64_t(xi[j + 1] * double(ky))
+                    : std::uint64_t(xi[j] * double(n));
+      ++hits[cell];
+    }
+    for (std::uint64_t c = 0; c < n; ++c) {
+      ASSERT_EQ(hits[c], 1) << "s = " << s << ", N = " << n << ", group " << j / 2 << ", cell "
+                            << c;
+    }
+  }
+}
+
+TEST(PaddedJitteredPoints, EveryGroupIsStratified) {
+  expect_groups_stratified(2, 64);
+  expect_groups_stratified(5, 256);
+  expect_groups_stratified(6, 100);
+  expect_groups_stratified(3, 96);  // not a square: 8 × 12
+}
+
+TEST(PaddedJitteredPoints, NonSquareNUsesTheMostSquareFactorisation) {
+  EXPECT_EQ(padded_jittered_points(2, 96, 1, 1).grid_columns(), 8u);
+  EXPECT_EQ(padded_jittered_points(2, 13, 1, 1).grid_columns(), 1u);  // prime: 1 × 13
+  expect_groups_stratified(4, 13);
+}
+
+// Groups are associated at random: the strata of group 0 and group 1 of the same point do not
+// follow each other (for the identity they would agree for all N points).
+TEST(PaddedJitteredPoints, GroupsAreShuffledAgainstEachOther) {
+  const std::uint64_t n = 1024;
+  const padded_jittered_points p(4, n, 1, 1);
+  std::vector<double> x(4 * n);
+  p.generate(0, x);
+  int same = 0;
+  for (std::uint64_t i = 0; i < n; ++i) {
+    same += std::uint64_t(x[4 * i] * 32) == std::uint64_t(x[4 * i + 2] * 32) &&
+            std::uint64_t(x[4 * i + 1] * 32) == std::uint64_t(x[4 * i + 3] * 32);
+  }
+  // A random permutation has Poisson(1) fixed points; P(≥ 10) < 1.2e-7.
+  EXPECT_LT(same, 10);
+}
+
+}  // namespace
