@@ -1,0 +1,60 @@
+// The catalogue of test integrands: every family of this layer by name, with the parameter keys
+// it accepts, and make_integrand to build any of them from a flat parameter set. The scene parser
+// maps a scene's TOML keys 1:1 onto integrand_params, so the keys documented here are the scene
+// keys.
+//
+// Use it where the integrand is chosen at run time (scenes, `quadmc list`). Kernels that know the
+// family at compile time construct the concrete type (genz.hpp, classic_1d.hpp, …) instead and
+// skip the type erasure.
+//
+// Rules: unknown names, unknown keys and keys of the wrong kind (a vector given as a scalar or
+// the reverse) are quadmc::invalid_argument naming them; a family's own validation reports bad
+// values. Omitted Genz a/u are drawn from `seed` (genz_random_parameters) and normalised.
+#pragma once
+
+#include "quadmc/functions/any_integrand.hpp"
+#include "quadmc/functions/irradiance.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace quadmc {
+
+struct integrand_params {
+  // s; 0 = the family's default: 2 for the irradiance integrands, 1 for everything else. The 1D
+  // classics accept only 1, the irradiance integrands only 2.
+  std::size_t dimension = 0;
+  std::map<std::string, std::vector<double>, std::less<>> vectors;
+  std::map<std::string, double, std::less<>> scalars;
+  std::uint64_t seed = 0;  // for parameters drawn at random (Genz a, u)
+};
+
+struct catalogue_entry {
+  std::string_view name;
+  std::string_view description;  // formula and domain
+  std::string_view smoothness;   // to_string(quadmc::smoothness) of a default instance
+  std::span<const std::string_view> vector_keys;
+  std::span<const std::string_view> scalar_keys;
+  std::string_view parameters;  // what each key means, its default and constraints
+};
+
+// All families, in a fixed order (Genz, classic 1D, geometry, rendering).
+std::span<const catalogue_entry> integrand_catalogue();
+
+// The catalogue entry named `name`; throws invalid_argument("integrand", name, list of names).
+const catalogue_entry& find_catalogue_entry(std::string_view name);
+
+// Builds the catalogue member `name` from `params` (validated as described above).
+any_integrand make_integrand(std::string_view name, const integrand_params& params);
+
+// The geometry behind the irradiance integrands (keys `occluder`, `radiance`), for the
+// estimators that sample directions or the light instead of the integrand's own [0,1]² map.
+irradiance_setup make_irradiance_setup(const integrand_params& params);
+
+}  // namespace quadmc

@@ -1,0 +1,207 @@
+// The classic one-dimensional test integrands of numerical-analysis textbooks (Burden & Faires,
+// "Numerical Analysis", §4.3–4.4; Davis & Rabinowitz, "Methods of Numerical Integration"), each
+// with its exact integral and the exact maxima M_k = max|f⁽ᵏ⁾| on its interval that the
+// Newton–Cotes error terms need (midpoint/trapezoid use M₂, Simpson M₄; THEORY.md).
+//
+//   catalogue name      f(x)              interval      smoothness     ∫
+//   poly                x⁵                [lo, hi]      analytic       (hi⁶ − lo⁶)/6
+//   exp                 eˣ                [lo, hi]      analytic       e^hi − e^lo
+//   sin                 sin x             [lo, hi]      analytic       cos lo − cos hi
+//   inverse_quadratic   1/(1 + x²)        [0, 1]        analytic       π/4
+//   sqrt                √x                [0, 1]        singular       2/3   (f' unbounded at 0)
+//   abs_kink            |x − c|           [0, 1]        C⁰             (c² + (1 − c)²)/2
+//   step                1 if x ≥ c else 0 [0, 1]        discontinuous  1 − c
+//
+// Use them to reproduce the 1D rates of THEORY.md (O(h²) midpoint, O(h⁴) Simpson, O(n^−1.5) for
+// √x, O(n^−1) for a jump). x⁵ is the lowest monomial Simpson does not integrate exactly. Not for
+// multi-dimensional studies (dimension() is 1). Derivative bounds are exact maxima; a bound is
+// absent where the derivative is unbounded or undefined (√x from k = 1; the kink and the step
+// beyond the order they are smooth on either side of c, where f' or f'' is a Dirac).
+#pragma once
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/functions/integrand.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <span>
+#include <string>
+
+namespace quadmc {
+
+namespace detail {
+
+inline void validate_interval(double lo, double hi) {
+  require_finite(lo, "lower");
+  require_finite(hi, "upper");
+  require(lo < hi, "upper", hi, fmt::format("upper > lower = {}", lo));
+}
+
+inline integrand_info info_1d(std::string name, std::string formula, double lo, double hi,
+                              double exact, smoothness regularity) {
+  return integrand_info{.name = std::move(name),
+                        .formula = std::move(formula),
+                        .domain = box{{lo}, {hi}},
+                        .exact = exact,
+                        .reference = "closed form",
+                        .regularity = regularity};
+}
+
+// max |sin x| over [lo, hi]: 1 if the interval holds a point π/2 + kπ, else the larger end value
+// (|sin| is monotone between its extrema).
+inline double max_abs_sin(double lo, double hi) {
+  const double k = std::ceil((lo - std::numbers::pi / 2) / std::numbers::pi);
+  if (std::numbers::pi / 2 + k * std::numbers::pi <= hi) return 1.0;
+  return std::max(std::abs(std::sin(lo)), std::abs(std::sin(hi)));
+}
+
+}  // namespace detail
+
+class poly_1d {
+ public:
+  explicit poly_1d(double lower = 0.0, double upper = 1.0) : lo_(lower), hi_(upper) {
+    detail::validate_interval(lo_, hi_);
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      const double x2 = x[i] * x[i];
+      y[i] = x2 * x2 * x[i];
+    }
+  }
+  integrand_info info() const {
+    auto info = detail::info_1d("poly", "x⁵", lo_, hi_, (std::pow(hi_, 6) - std::pow(lo_, 6)) / 6.0,
+                                smoothness::analytic);
+    // f⁽ᵏ⁾ = 5!/(5−k)!·x^(5−k): |·| is largest where |x| is.
+    const double m = std::max(std::abs(lo_), std::abs(hi_));
+    const double falling[5] = {1.0, 5.0, 20.0, 60.0, 120.0};
+    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = falling[k] * std::pow(m, 5 - k);
+    return info;
+  }
+
+ private:
+  double lo_, hi_;
+};
+
+class exp_1d {
+ public:
+  explicit exp_1d(double lower = 0.0, double upper = 1.0) : lo_(lower), hi_(upper) {
+    detail::validate_interval(lo_, hi_);
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = std::exp(x[i]);
+  }
+  integrand_info info() const {
+    auto info =
+        detail::info_1d("exp", "eˣ", lo_, hi_, std::exp(hi_) - std::exp(lo_), smoothness::analytic);
+    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = std::exp(hi_);
+    return info;
+  }
+
+ private:
+  double lo_, hi_;
+};
+
+class sin_1d {
+ public:
+  explicit sin_1d(double lower = 0.0, double upper = std::numbers::pi) : lo_(lower), hi_(upper) {
+    detail::validate_interval(lo_, hi_);
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = std::sin(x[i]);
+  }
+  integrand_info info() const {
+    auto info = detail::info_1d("sin", "sin x", lo_, hi_, std::cos(lo_) - std::cos(hi_),
+                                smoothness::analytic);
+    // Even derivatives are ±sin, odd ones ±cos = ±sin(· + π/2).
+    const double ms = detail::max_abs_sin(lo_, hi_);
+    const double mc = detail::max_abs_sin(lo_ + std::numbers::pi / 2, hi_ + std::numbers::pi / 2);
+    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = k % 2 == 0 ? ms : mc;
+    return info;
+  }
+
+ private:
+  double lo_, hi_;
+};
+
+class inverse_quadratic_1d {
+ public:
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = 1.0 / (1.0 + x[i] * x[i]);
+  }
+  integrand_info info() const {
+    auto info = detail::info_1d("inverse_quadratic", "1/(1 + x²)", 0.0, 1.0, std::numbers::pi / 4,
+                                smoothness::analytic);
+    // f' = −2x/(1+x²)², extreme at x = 1/√3: 3√3/8.  f'' = (6x² − 2)/(1+x²)³: |·| max 2 at 0.
+    // f''' = 24x(1 − x²)/(1+x²)⁴, extreme where 5x⁴ − 10x² + 1 = 0, x² = 1 − 2/√5.
+    // f'''' = 24(5x⁴ − 10x² + 1)/(1+x²)⁵: |·| max 24 at 0 (at x = 1 it is 3).
+    const double t2 = 1.0 - 2.0 / std::sqrt(5.0);
+    const double t = std::sqrt(t2);
+    info.derivative_bound = {1.0, 3.0 * std::sqrt(3.0) / 8.0, 2.0,
+                             24.0 * t * (1.0 - t2) / std::pow(1.0 + t2, 4), 24.0};
+    return info;
+  }
+};
+
+class sqrt_1d {
+ public:
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = std::sqrt(x[i]);
+  }
+  integrand_info info() const {
+    auto info = detail::info_1d("sqrt", "√x", 0.0, 1.0, 2.0 / 3.0, smoothness::singular);
+    info.derivative_bound[0] = 1.0;  // f' = 1/(2√x) is unbounded at 0
+    return info;
+  }
+};
+
+class abs_kink_1d {
+ public:
+  explicit abs_kink_1d(double c = 0.3) : c_(c) {
+    require(c >= 0.0 && c <= 1.0, "c", c, "the kink c in [0, 1]");
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = std::abs(x[i] - c_);
+  }
+  integrand_info info() const {
+    auto info = detail::info_1d("abs_kink", "|x − c|", 0.0, 1.0,
+                                (c_ * c_ + (1.0 - c_) * (1.0 - c_)) / 2.0, smoothness::c0);
+    info.derivative_bound[0] = std::max(c_, 1.0 - c_);
+    info.derivative_bound[1] = 1.0;  // |f'| = 1 on both sides; f'' is a Dirac at c
+    return info;
+  }
+  double c() const noexcept { return c_; }
+
+ private:
+  double c_;
+};
+
+class step_1d {
+ public:
+  explicit step_1d(double c = 0.3) : c_(c) {
+    require(c >= 0.0 && c <= 1.0, "c", c, "the jump c in [0, 1]");
+  }
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] = x[i] >= c_ ? 1.0 : 0.0;
+  }
+  integrand_info info() const {
+    auto info =
+        detail::info_1d("step", "1 if x ≥ c else 0", 0.0, 1.0, 1.0 - c_, smoothness::discontinuous);
+    info.derivative_bound[0] = 1.0;
+    return info;
+  }
+  double c() const noexcept { return c_; }
+
+ private:
+  double c_;
+};
+
+}  // namespace quadmc

@@ -1,0 +1,432 @@
+// Genz's six test families on [0,1]^s (A. Genz, "Testing multidimensional integration routines",
+// in Tools, Methods and Languages for Scientific and Engineering Computation, 1984, 81–94; and
+// "A package for testing multiple integration subroutines", 1987), with closed-form integrals:
+//
+//   oscillatory    cos(2πu₁ + Σ aᵢxᵢ)                ∫ = cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)
+//   product_peak   Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)            ∫ = Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]
+//   corner_peak    (1 + Σ aᵢxᵢ)^−(s+1)                ∫ = Σ_{v∈{0,1}^s} (−1)^{|v|}/(1 + a·v) /
+//   (s!·Π aᵢ) gaussian       exp(−Σ aᵢ²(xᵢ − uᵢ)²)              ∫ = Π √π/(2aᵢ)[erf(aᵢ(1 − uᵢ)) +
+//   erf(aᵢuᵢ)] continuous     exp(−Σ aᵢ|xᵢ − uᵢ|)                ∫ = Π [2 − e^{−aᵢuᵢ} −
+//   e^{−aᵢ(1−uᵢ)}]/aᵢ discontinuous  0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ)
+//                                                     ∫ = Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ ·
+//                                                     Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ
+// The oscillatory form is Re[e^{i2πu₁} Π (e^{iaⱼ} − 1)/(iaⱼ)] with (e^{ia} − 1)/(ia) =
+// e^{ia/2}·sin(a/2)/(a/2), which has no cancellation for small a. The product-peak convention is
+// aᵢ⁻² (Genz's own code). The discontinuous family cuts x₁ and x₂ by default (Genz's code; only
+// x₁ when s = 1); `cut` = {1, …, s} gives the every-coordinate convention of other collections.
+//
+// Corner peak accuracy: its closed form is an alternating sum over 2^s vertices that cancels
+// catastrophically (THEORY.md). Measured (tests/functions/genz_test.cpp, random weights with
+// Genz's Σa = 1.85, against 100-digit arithmetic): summed in double it errs 5.5e-12 relative at
+// s = 8, 2.2e-10 at s = 10, 8e-7 at s = 14, 1.6e-5 at s = 16; in long double 8e-15, 8e-14, 6e-10
+// and 1.5e-8. So it is summed in 50-digit arithmetic (inclusion_exclusion.hpp): exact to double
+// precision (≤ 2e-16 relative) for every s ≤ 14 measured against 100 digits; its rounding bound
+// is 7e-32 at s = 16 and 2e-27 at s = 20. The constructor still computes that bound and throws
+// unless it is ≤ 1e-10 relative (it fires only for extreme a, e.g. aᵢ = 1e-6 at s = 12). s > 20
+// is rejected for cost (2^s terms: ~1 s at s = 20 at -O2).
+//
+// Difficulty normalisation (Genz 1987, used in many comparisons): aᵢ = b·wᵢ/Σw with
+// b = (9.0, 7.25, 1.85, 7.03, 20.4, 4.3) for the six families in the order above
+// (genz_normalise). genz_random_parameters draws w and u from a philox_stream.
+//
+// Use them for multi-dimensional convergence studies with known answers. Derivative bounds in
+// info() are max over the cube of |∂ᵏf/∂xⱼᵏ| maximised over j; where only an upper bound is known
+// it is said below. Not for s where the closed form is untrustworthy (corner peak, see above).
+#pragma once
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/rng.hpp"
+#include "quadmc/functions/inclusion_exclusion.hpp"
+#include "quadmc/functions/integrand.hpp"
+
+#include <boost/math/special_functions/sinc.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace quadmc {
+
+enum class genz_family {
+  oscillatory,
+  product_peak,
+  corner_peak,
+  gaussian,
+  continuous,
+  discontinuous
+};
+
+constexpr std::string_view to_string(genz_family f) noexcept {
+  constexpr std::array<std::string_view, 6> names = {"genz_oscillatory", "genz_product_peak",
+                                                     "genz_corner_peak", "genz_gaussian",
+                                                     "genz_continuous",  "genz_discontinuous"};
+  return names[static_cast<std::size_t>(f)];
+}
+
+// Genz's difficulty b_f: the value of Σaᵢ after normalisation.
+constexpr double genz_difficulty(genz_family f) noexcept {
+  constexpr std::array<double, 6> b = {9.0, 7.25, 1.85, 7.03, 20.4, 4.3};
+  return b[static_cast<std::size_t>(f)];
+}
+
+// aᵢ = b_f·wᵢ/Σw. Requires w non-empty, finite, wᵢ ≥ 0 and Σw > 0.
+inline std::vector<double> genz_normalise(genz_family f, std::span<const double> w) {
+  require(!w.empty(), "w", w.size(), "at least one weight");
+  double total = 0.0;
+  for (double wi : w) {
+    require(std::isfinite(wi) && wi >= 0.0, "w", wi, "finite weights ≥ 0");
+    total += wi;
+  }
+  require(total > 0.0, "w", total, "a positive sum of weights");
+  std::vector<double> a(w.size());
+  for (std::size_t i = 0; i < w.size(); ++i) a[i] = genz_difficulty(f) * w[i] / total;
+  return a;
+}
+
+struct genz_parameters {
+  std::vector<double> a;  // difficulty, normalised so that Σa = genz_difficulty(family)
+  std::vector<double> u;  // shift, in [0,1)
+};
+
+// w_j = 1 − U_j (in (0,1], so no aᵢ is 0: the product peak and Gaussian need aᵢ > 0) and
+// u_j = U_{s+j}, U_k = philox_stream(seed, stream_id({family})).uniform(k); then normalised.
+inline genz_parameters genz_random_parameters(genz_family f, std::size_t s, std::uint64_t seed) {
+  require(s >= 1, "dimension", s, "s ≥ 1");
+  const philox_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
+  std::vector<double> w(s), u(s);
+  for (std::size_t j = 0; j < s; ++j) {
+    w[j] = 1.0 - rng.uniform(j);
+    u[j] = rng.uniform(s + j);
+  }
+  return {genz_normalise(f, w), std::move(u)};
+}
+
+namespace detail {
+
+// Checks a and u of one Genz family; a_positive for families whose formula divides by aᵢ.
+inline void validate_genz(std::span<const double> a, std::span<const double> u, bool a_positive) {
+  require(!a.empty(), "a", a.size(), "a non-empty vector (its length is the dimension s ≥ 1)");
+  require(u.size() == a.size(), "u", fmt::format("a vector of length {}", u.size()),
+          fmt::format("length s = {} (the length of a)", a.size()));
+  for (double ai : a) {
+    require(std::isfinite(ai) && (!a_positive || ai > 0.0), "a", ai,
+            a_positive ? "finite aᵢ > 0" : "finite aᵢ");
+  }
+  for (double ui : u) require(ui >= 0.0 && ui <= 1.0, "u", ui, "uᵢ in [0, 1]");
+}
+
+inline double max_abs(std::span<const double> a) {
+  double m = 0.0;
+  for (double v : a) m = std::max(m, std::abs(v));
+  return m;
+}
+
+inline integrand_info genz_info(genz_family f, std::string formula, std::size_t s, double exact,
+                                std::string reference, smoothness regularity) {
+  return integrand_info{.name = std::string(to_string(f)),
+                        .formula = std::move(formula),
+                        .domain = box::unit(s),
+                        .exact = exact,
+                        .reference = std::move(reference),
+                        .regularity = regularity};
+}
+
+}  // namespace detail
+
+class genz_oscillatory {
+ public:
+  genz_oscillatory(std::vector<double> a, std::vector<double> u)
+      : a_(std::move(a)), u_(std::move(u)) {
+    detail::validate_genz(a_, u_, false);
+    phase_ = 2.0 * std::numbers::pi * u_[0];
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double t = phase_;
+      for (std::size_t j = 0; j < s; ++j) t += a_[j] * x[i * s + j];
+      y[i] = std::cos(t);
+    }
+  }
+  integrand_info info() const {
+    double half_sum = 0.0, product = 1.0;
+    for (double ai : a_) {
+      half_sum += 0.5 * ai;
+      product *= boost::math::sinc_pi(0.5 * ai);
+    }
+    auto info =
+        detail::genz_info(genz_family::oscillatory, "cos(2πu₁ + Σ aᵢxᵢ)", a_.size(),
+                          std::cos(phase_ + half_sum) * product,
+                          "closed form cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)", smoothness::analytic);
+    // |∂ᵏf/∂xⱼᵏ| = |aⱼ|ᵏ·|cos or sin| ≤ |aⱼ|ᵏ (an upper bound, attained when the phase allows).
+    const double m = detail::max_abs(a_);
+    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = std::pow(m, k);
+    return info;
+  }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+
+ private:
+  std::vector<double> a_, u_;
+  double phase_;
+};
+
+class genz_product_peak {
+ public:
+  genz_product_peak(std::vector<double> a, std::vector<double> u)
+      : a_(std::move(a)), u_(std::move(u)) {
+    detail::validate_genz(a_, u_, true);
+    for (double ai : a_) inv_a2_.push_back(1.0 / (ai * ai));
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double p = 1.0;
+      for (std::size_t j = 0; j < s; ++j) {
+        const double d = x[i * s + j] - u_[j];
+        p *= 1.0 / (inv_a2_[j] + d * d);
+      }
+      y[i] = p;
+    }
+  }
+  integrand_info info() const {
+    double exact = 1.0, peak = 1.0;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      exact *= a_[j] * (std::atan(a_[j] * (1.0 - u_[j])) + std::atan(a_[j] * u_[j]));
+      peak *= a_[j] * a_[j];
+    }
+    auto info =
+        detail::genz_info(genz_family::product_peak, "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)", a_.size(), exact,
+                          "closed form Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]", smoothness::analytic);
+    info.derivative_bound[0] = peak;  // at x = u, inside the cube
+    return info;
+  }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+
+ private:
+  std::vector<double> a_, u_, inv_a2_;
+};
+
+class genz_corner_peak {
+ public:
+  // Largest s accepted before the accuracy test: the closed form costs 2^s terms.
+  static constexpr std::size_t max_dimension = 20;
+  // Largest accepted rounding bound of the closed form, relative.
+  static constexpr double max_relative_error = 1e-10;
+
+  genz_corner_peak(std::vector<double> a, std::vector<double> u)
+      : a_(std::move(a)), u_(std::move(u)) {
+    detail::validate_genz(a_, u_, true);
+    const std::size_t s = a_.size();
+    require(s <= max_dimension, "dimension", s,
+            "s ≤ 20 (the corner-peak closed form sums 2^s terms)");
+    const auto [exact, bound] = closed_form(a_);
+    exact_ = exact;
+    error_bound_ = bound;
+    require(
+        bound <= max_relative_error, "a",
+        fmt::format("[{}] (s = {}, relative rounding bound {:.3g})", fmt::join(a_, ", "), s, bound),
+        "parameters whose inclusion–exclusion closed form is accurate to 1e-10 relative "
+        "(larger aᵢ or a smaller s)");
+  }
+  // The closed form and a bound on its relative rounding error (of the 50-digit sum, before the
+  // final rounding to double), for any a > 0.
+  static std::pair<double, double> closed_form(std::span<const double> a) {
+    const std::size_t s = a.size();
+    const wide_float eps = std::numeric_limits<wide_float>::epsilon();
+    // g(t) = 1/(1 + t) after s integrations; |Δg| ≤ g²·|Δt| plus one rounding of the division.
+    const vertex_sum sum =
+        alternating_vertex_sum(a, [&](const wide_float& t, const wide_float& dt) {
+          wide_float g = 1 / (1 + t);
+          wide_float error = g * g * dt + eps * g;
+          return std::pair{std::move(g), std::move(error)};
+        });
+    wide_float denominator = 1;
+    for (std::size_t j = 0; j < s; ++j) denominator *= static_cast<double>(j + 1) * a[j];
+    // + 2s·ε for the s!·Π aᵢ divisor.
+    const wide_float relative =
+        sum.error_bound / boost::multiprecision::abs(sum.value) + 2 * static_cast<double>(s) * eps;
+    return {static_cast<double>(sum.value / denominator), static_cast<double>(relative)};
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    const double exponent = -static_cast<double>(s + 1);
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double t = 1.0;
+      for (std::size_t j = 0; j < s; ++j) t += a_[j] * x[i * s + j];
+      y[i] = std::pow(t, exponent);
+    }
+  }
+  integrand_info info() const {
+    auto info = detail::genz_info(
+        genz_family::corner_peak, "(1 + Σ aᵢxᵢ)^−(s+1)", a_.size(), exact_,
+        fmt::format("closed form Σ_v (−1)^|v|/(1 + a·v)/(s!·Π aᵢ) over the 2^s vertices, 50 "
+                    "digits, relative rounding bound {:.2g}",
+                    error_bound_),
+        smoothness::analytic);
+    // |∂ᵏf/∂xⱼᵏ| = (s+1)(s+2)…(s+k)·aⱼᵏ·(1 + a·x)^−(s+1+k), largest at x = 0.
+    const double m = detail::max_abs(a_);
+    double rising = 1.0;
+    for (int k = 0; k <= 4; ++k) {
+      info.derivative_bound[k] = rising * std::pow(m, k);
+      rising *= static_cast<double>(a_.size() + 1 + static_cast<std::size_t>(k));
+    }
+    return info;
+  }
+  double relative_error_bound() const noexcept { return error_bound_; }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+
+ private:
+  std::vector<double> a_, u_;
+  double exact_, error_bound_;
+};
+
+class genz_gaussian {
+ public:
+  genz_gaussian(std::vector<double> a, std::vector<double> u) : a_(std::move(a)), u_(std::move(u)) {
+    detail::validate_genz(a_, u_, true);
+    for (double ai : a_) a2_.push_back(ai * ai);
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double e = 0.0;
+      for (std::size_t j = 0; j < s; ++j) {
+        const double d = x[i * s + j] - u_[j];
+        e += a2_[j] * d * d;
+      }
+      y[i] = std::exp(-e);
+    }
+  }
+  integrand_info info() const {
+    double exact = 1.0;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      exact *= std::sqrt(std::numbers::pi) / (2.0 * a_[j]) *
+               (std::erf(a_[j] * (1.0 - u_[j])) + std::erf(a_[j] * u_[j]));
+    }
+    auto info = detail::genz_info(genz_family::gaussian, "exp(−Σ aᵢ²(xᵢ − uᵢ)²)", a_.size(), exact,
+                                  "closed form Π √π/(2aᵢ)[erf(aᵢ(1 − uᵢ)) + erf(aᵢuᵢ)]",
+                                  smoothness::analytic);
+    // d^k/dt^k e^{−a²t²} = (−a)^k H_k(at) e^{−a²t²}: |·| peaks at t = 0 for k = 0, 2, 4 (values
+    // 1, 2a², 12a⁴, attained at x = u); for k = 1 the sup over ℝ, √2·e^{−1/2}·a, is an upper bound.
+    const double m = detail::max_abs(a_);
+    info.derivative_bound[0] = 1.0;
+    info.derivative_bound[1] = std::sqrt(2.0) * std::exp(-0.5) * m;
+    info.derivative_bound[2] = 2.0 * m * m;
+    info.derivative_bound[4] = 12.0 * m * m * m * m;
+    return info;
+  }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+
+ private:
+  std::vector<double> a_, u_, a2_;
+};
+
+class genz_continuous {
+ public:
+  genz_continuous(std::vector<double> a, std::vector<double> u)
+      : a_(std::move(a)), u_(std::move(u)) {
+    detail::validate_genz(a_, u_, true);
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double e = 0.0;
+      for (std::size_t j = 0; j < s; ++j) e += a_[j] * std::abs(x[i * s + j] - u_[j]);
+      y[i] = std::exp(-e);
+    }
+  }
+  integrand_info info() const {
+    double exact = 1.0;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      // 2 − e^{−au} − e^{−a(1−u)} = −expm1(−au) − expm1(−a(1−u)): no cancellation for small a.
+      exact *= (-std::expm1(-a_[j] * u_[j]) - std::expm1(-a_[j] * (1.0 - u_[j]))) / a_[j];
+    }
+    auto info =
+        detail::genz_info(genz_family::continuous, "exp(−Σ aᵢ|xᵢ − uᵢ|)", a_.size(), exact,
+                          "closed form Π [2 − e^{−aᵢuᵢ} − e^{−aᵢ(1−uᵢ)}]/aᵢ", smoothness::c0);
+    info.derivative_bound[0] = 1.0;                  // at x = u
+    info.derivative_bound[1] = detail::max_abs(a_);  // one-sided, next to x = u
+    return info;
+  }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+
+ private:
+  std::vector<double> a_, u_;
+};
+
+class genz_discontinuous {
+ public:
+  // cut: 1-based indices of the coordinates that are cut at uᵢ, distinct, within 1..s; empty
+  // means Genz's {1, 2} ({1} when s = 1).
+  genz_discontinuous(std::vector<double> a, std::vector<double> u,
+                     std::vector<std::size_t> cut = {})
+      : a_(std::move(a)), u_(std::move(u)), cut_(std::move(cut)) {
+    detail::validate_genz(a_, u_, false);
+    const std::size_t s = a_.size();
+    if (cut_.empty()) cut_ = s == 1 ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
+    // Non-cut coordinates get threshold +∞ so the kernel tests every coordinate without a branch.
+    threshold_.assign(s, std::numeric_limits<double>::infinity());
+    for (std::size_t c : cut_) {
+      require(c >= 1 && c <= s, "cut", c, fmt::format("indices in 1..{} (1-based)", s));
+      require(std::isinf(threshold_[c - 1]), "cut", c, "distinct indices");
+      threshold_[c - 1] = u_[c - 1];
+    }
+  }
+  std::size_t dimension() const noexcept { return a_.size(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    const std::size_t s = a_.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double e = 0.0;
+      bool inside = true;
+      for (std::size_t j = 0; j < s; ++j) {
+        e += a_[j] * x[i * s + j];
+        inside &= x[i * s + j] <= threshold_[j];
+      }
+      y[i] = inside ? std::exp(e) : 0.0;
+    }
+  }
+  integrand_info info() const {
+    double exact = 1.0, peak = 0.0;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double upper = std::min(threshold_[j], 1.0);
+      // ∫₀^upper e^{a x} dx = expm1(a·upper)/a, = upper at a = 0.
+      exact *= a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j];
+      peak += std::max(0.0, a_[j] * upper);
+    }
+    auto info = detail::genz_info(
+        genz_family::discontinuous,
+        fmt::format("0 if x_c > u_c for c in {{{}}}, else exp(Σ aᵢxᵢ)", fmt::join(cut_, ", ")),
+        a_.size(), exact, "closed form Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ · Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ",
+        smoothness::discontinuous);
+    info.derivative_bound[0] = std::exp(peak);
+    return info;
+  }
+  const std::vector<double>& a() const noexcept { return a_; }
+  const std::vector<double>& u() const noexcept { return u_; }
+  const std::vector<std::size_t>& cut() const noexcept { return cut_; }
+
+ private:
+  std::vector<double> a_, u_;
+  std::vector<std::size_t> cut_;
+  std::vector<double> threshold_;
+};
+
+}  // namespace quadmc

@@ -1,0 +1,238 @@
+// The integrand catalogue (catalogue.hpp): names, keys, and construction from integrand_params.
+#include "quadmc/functions/catalogue.hpp"
+
+#include "quadmc/functions/classic_1d.hpp"
+#include "quadmc/functions/genz.hpp"
+#include "quadmc/functions/indicators.hpp"
+#include "quadmc/functions/irradiance.hpp"
+#include "quadmc/functions/keister.hpp"
+#include "quadmc/functions/sobol_g.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace quadmc {
+namespace {
+
+constexpr std::array<std::string_view, 0> no_keys{};
+constexpr std::array<std::string_view, 2> genz_vector_keys{"a", "u"};
+constexpr std::array<std::string_view, 3> genz_discontinuous_keys{"a", "u", "cut"};
+constexpr std::array<std::string_view, 2> interval_keys{"lower", "upper"};
+constexpr std::array<std::string_view, 1> c_key{"c"};
+constexpr std::array<std::string_view, 1> center_key{"center"};
+constexpr std::array<std::string_view, 1> r_key{"r"};
+constexpr std::array<std::string_view, 1> w_key{"w"};
+constexpr std::array<std::string_view, 1> t_key{"t"};
+constexpr std::array<std::string_view, 1> a_key{"a"};
+constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
+
+constexpr std::string_view genz_doc =
+    "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b); "
+    "u: shift in [0,1], length s (default: drawn from seed)";
+
+const std::array<catalogue_entry, 19> entries = {{
+    {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     genz_doc},
+    {"genz_product_peak", "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys,
+     no_keys, genz_doc},
+    {"genz_corner_peak", "(1 + Σ aᵢxᵢ)^−(s+1) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     "as the other Genz families; s ≤ 20 (its closed form sums 2^s terms in 50-digit arithmetic "
+     "and must carry a rounding bound ≤ 1e-10, true for Genz's difficulty at every s ≤ 20)"},
+    {"genz_gaussian", "exp(−Σ aᵢ²(xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     genz_doc},
+    {"genz_continuous", "exp(−Σ aᵢ|xᵢ − uᵢ|) on [0,1]^s", "C0", genz_vector_keys, no_keys,
+     genz_doc},
+    {"genz_discontinuous", "0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ) on [0,1]^s",
+     "discontinuous", genz_discontinuous_keys, no_keys,
+     "a, u as the other Genz families; cut: 1-based indices of the cut coordinates, distinct, in "
+     "1..s (default [1, 2], [1] when s = 1; [1, …, s] cuts every coordinate)"},
+    {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1); dimension 1"},
+    {"exp", "eˣ on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1); dimension 1"},
+    {"sin", "sin x on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, π); dimension 1"},
+    {"inverse_quadratic", "1/(1 + x²) on [0, 1]", "analytic", no_keys, no_keys,
+     "no parameters; dimension 1"},
+    {"sqrt", "√x on [0, 1]", "singular", no_keys, no_keys, "no parameters; dimension 1"},
+    {"abs_kink", "|x − c| on [0, 1]", "C0", no_keys, c_key,
+     "c: the kink, in [0, 1] (default 0.3); dimension 1"},
+    {"step", "1 if x ≥ c else 0 on [0, 1]", "discontinuous", no_keys, c_key,
+     "c: the jump, in [0, 1] (default 0.3); dimension 1"},
+    {"disk_indicator", "1 if ‖x − center‖ ≤ r else 0 on [0,1]^s (disk for s = 2, ball otherwise)", "discontinuous", center_key, r_key,
+     "center: length s (default all 0.5); r: radius > 0 (default 0.45); the ball must lie "
+     "inside the cube"},
+    {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
+     "w: weights > 0, length s (default all 1); t: in (0, Σw) (default 0.6·Σw); s ≤ 20"},
+    {"sobol_g", "Π (|4xᵢ − 2| + aᵢ)/(1 + aᵢ) on [0,1]^s", "C0", a_key, no_keys,
+     "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)"},
+    {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,
+     "no parameters; 1 ≤ s ≤ 20"},
+    {"irradiance_hemisphere", "2π·u₁·L_i(x, ω(u)) on [0,1]², uniform hemisphere map",
+     "discontinuous", no_keys, irradiance_keys,
+     "occluder: 0 or 1 (default 0), adds default_irradiance_setup's occluder; radiance: L > 0 "
+     "(default 1); dimension 2"},
+    {"irradiance_area", "L·A·V·cosθ·cosθ'/|x − x'|² on [0,1]², light parameters (s, t)",
+     "analytic (discontinuous with occluder)", no_keys, irradiance_keys,
+     "occluder: 0 or 1 (default 0); radiance: L > 0 (default 1); dimension 2"},
+}};
+
+bool contains(std::span<const std::string_view> keys, std::string_view key) {
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+void check_keys(const catalogue_entry& e, const integrand_params& p) {
+  for (const auto& [key, value] : p.vectors) {
+    if (contains(e.vector_keys, key)) continue;
+    if (contains(e.scalar_keys, key)) {
+      throw invalid_argument(key, "a vector", fmt::format("a number for {}", e.name));
+    }
+    throw invalid_argument(
+        "key", key,
+        fmt::format("one of [{}] for {}", fmt::join(e.vector_keys, ", "), e.name) +
+            (e.scalar_keys.empty()
+                 ? ""
+                 : fmt::format(" or a number [{}]", fmt::join(e.scalar_keys, ", "))));
+  }
+  for (const auto& [key, value] : p.scalars) {
+    if (contains(e.scalar_keys, key)) continue;
+    if (contains(e.vector_keys, key)) {
+      throw invalid_argument(key, quote(value), fmt::format("a vector for {}", e.name));
+    }
+    throw invalid_argument(
+        "key", key,
+        fmt::format("one of [{}] for {}", fmt::join(e.scalar_keys, ", "), e.name) +
+            (e.vector_keys.empty()
+                 ? ""
+                 : fmt::format(" or a vector [{}]", fmt::join(e.vector_keys, ", "))));
+  }
+}
+
+std::size_t dimension_or(const integrand_params& p, std::size_t default_s) {
+  return p.dimension == 0 ? default_s : p.dimension;
+}
+
+void require_fixed_dimension(const integrand_params& p, std::size_t s, std::string_view name) {
+  require(p.dimension == 0 || p.dimension == s, "dimension", p.dimension,
+          fmt::format("{} (or 0 for the default) for {}", s, name));
+}
+
+double scalar_or(const integrand_params& p, std::string_view key, double fallback) {
+  const auto it = p.scalars.find(key);
+  return it == p.scalars.end() ? fallback : it->second;
+}
+
+std::vector<double> vector_of_length(const integrand_params& p, std::string_view key, std::size_t s,
+                                     std::vector<double> fallback) {
+  const auto it = p.vectors.find(key);
+  if (it == p.vectors.end()) return fallback;
+  require(it->second.size() == s, key, fmt::format("[{}]", fmt::join(it->second, ", ")),
+          fmt::format("a vector of length dimension = {}", s));
+  return it->second;
+}
+
+template <class Family>
+any_integrand make_genz(genz_family f, const integrand_params& p) {
+  const std::size_t s = dimension_or(p, 1);
+  require(s >= 1, "dimension", s, "s ≥ 1");
+  genz_parameters drawn = genz_random_parameters(f, s, p.seed);
+  std::vector<double> a = vector_of_length(p, "a", s, std::move(drawn.a));
+  std::vector<double> u = vector_of_length(p, "u", s, std::move(drawn.u));
+  if constexpr (std::is_same_v<Family, genz_discontinuous>) {
+    std::vector<std::size_t> cut;
+    if (const auto it = p.vectors.find("cut"); it != p.vectors.end()) {
+      for (double c : it->second) {
+        require(std::isfinite(c) && c >= 1.0 && c == std::floor(c), "cut", c,
+                "1-based integer indices");
+        cut.push_back(static_cast<std::size_t>(c));
+      }
+      require(!cut.empty(), "cut", "[]", "at least one index (omit the key for the default)");
+    }
+    return any_integrand(Family(std::move(a), std::move(u), std::move(cut)));
+  } else {
+    return any_integrand(Family(std::move(a), std::move(u)));
+  }
+}
+
+}  // namespace
+
+irradiance_setup make_irradiance_setup(const integrand_params& p) {
+  require_fixed_dimension(p, 2, "irradiance");
+  const double occluder = scalar_or(p, "occluder", 0.0);
+  require(occluder == 0.0 || occluder == 1.0, "occluder", occluder, "0 or 1");
+  irradiance_setup setup = default_irradiance_setup(occluder == 1.0);
+  setup.radiance = scalar_or(p, "radiance", 1.0);
+  return setup;
+}
+
+std::span<const catalogue_entry> integrand_catalogue() {
+  return entries;
+}
+
+const catalogue_entry& find_catalogue_entry(std::string_view name) {
+  for (const auto& e : entries) {
+    if (e.name == name) return e;
+  }
+  std::vector<std::string_view> names;
+  for (const auto& e : entries) names.push_back(e.name);
+  throw invalid_argument("integrand", name, fmt::format("one of {}", fmt::join(names, ", ")));
+}
+
+any_integrand make_integrand(std::string_view name, const integrand_params& p) {
+  const catalogue_entry& e = find_catalogue_entry(name);
+  check_keys(e, p);
+  if (name == "genz_oscillatory") return make_genz<genz_oscillatory>(genz_family::oscillatory, p);
+  if (name == "genz_product_peak") {
+    return make_genz<genz_product_peak>(genz_family::product_peak, p);
+  }
+  if (name == "genz_corner_peak") return make_genz<genz_corner_peak>(genz_family::corner_peak, p);
+  if (name == "genz_gaussian") return make_genz<genz_gaussian>(genz_family::gaussian, p);
+  if (name == "genz_continuous") return make_genz<genz_continuous>(genz_family::continuous, p);
+  if (name == "genz_discontinuous") {
+    return make_genz<genz_discontinuous>(genz_family::discontinuous, p);
+  }
+  if (name == "poly" || name == "exp" || name == "sin" || name == "inverse_quadratic" ||
+      name == "sqrt" || name == "abs_kink" || name == "step") {
+    require_fixed_dimension(p, 1, name);
+  }
+  if (name == "poly")
+    return any_integrand(poly_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
+  if (name == "exp")
+    return any_integrand(exp_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
+  if (name == "sin") {
+    return any_integrand(
+        sin_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", std::numbers::pi)));
+  }
+  if (name == "inverse_quadratic") return any_integrand(inverse_quadratic_1d{});
+  if (name == "sqrt") return any_integrand(sqrt_1d{});
+  if (name == "abs_kink") return any_integrand(abs_kink_1d(scalar_or(p, "c", 0.3)));
+  if (name == "step") return any_integrand(step_1d(scalar_or(p, "c", 0.3)));
+  if (name == "disk_indicator") {
+    const std::size_t s = dimension_or(p, 1);
+    return any_integrand(ball_indicator(
+        vector_of_length(p, "center", s, std::vector<double>(s, 0.5)), scalar_or(p, "r", 0.45)));
+  }
+  if (name == "half_space") {
+    const std::size_t s = dimension_or(p, 1);
+    std::vector<double> w = vector_of_length(p, "w", s, std::vector<double>(s, 1.0));
+    const double total = std::accumulate(w.begin(), w.end(), 0.0);
+    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", 0.6 * total)));
+  }
+  if (name == "sobol_g") {
+    const std::size_t s = dimension_or(p, 1);
+    require(s >= 1, "dimension", s, "s ≥ 1");
+    return any_integrand(sobol_g(vector_of_length(p, "a", s, sobol_g::default_a(s))));
+  }
+  if (name == "keister") return any_integrand(keister(dimension_or(p, 1)));
+  if (name == "irradiance_hemisphere")
+    return any_integrand(irradiance_hemisphere(make_irradiance_setup(p)));
+  if (name == "irradiance_area") return any_integrand(irradiance_area(make_irradiance_setup(p)));
+  throw invalid_argument("integrand", name, "a catalogue name with a constructor (internal error)");
+}
+
+}  // namespace quadmc

@@ -1,0 +1,153 @@
+// The catalogue: every member builds from default parameters, batch evaluation equals
+// point-by-point evaluation, and bad names/keys/values are named in the error.
+#include "quadmc/functions/catalogue.hpp"
+
+#include "quadmc/core/rng.hpp"
+#include "quadmc/functions/genz.hpp"
+
+#include <gtest/gtest.h>
+
+namespace quadmc {
+namespace {
+
+integrand_params params_for(const catalogue_entry& e) {
+  integrand_params p;
+  // Variable-dimension families get s = 3 (the default 0 means 1, or 2 for irradiance).
+  const std::string_view n = e.name;
+  if (n.starts_with("genz_") || n == "disk_indicator" || n == "half_space" || n == "sobol_g" ||
+      n == "keister") {
+    p.dimension = 3;
+  }
+  p.seed = 5;
+  return p;
+}
+
+TEST(Catalogue, EveryMemberBatchEqualsPointByPoint) {
+  for (const catalogue_entry& e : integrand_catalogue()) {
+    for (double occluder : {0.0, 1.0}) {
+      integrand_params p = params_for(e);
+      if (std::string_view(e.name).starts_with("irradiance")) {
+        p.scalars["occluder"] = occluder;
+      } else if (occluder == 1.0) {
+        continue;
+      }
+      const any_integrand f = make_integrand(e.name, p);
+      const integrand_info& info = f.info();
+      EXPECT_EQ(info.name, e.name);
+      EXPECT_TRUE(std::isfinite(info.exact)) << e.name;
+      EXPECT_TRUE(std::string_view(e.smoothness).starts_with(to_string(info.regularity)) ||
+                  occluder == 1.0)
+          << e.name << ": catalogue says " << e.smoothness << ", info says "
+          << to_string(info.regularity);
+      const std::size_t s = f.dimension();
+      const std::size_t n = 300;
+      std::vector<double> x(n * s), y(n), y1(n);
+      const philox_stream rng(11, 0);
+      rng.fill_uniform(0, x);
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < s; ++j) {
+          const double lo = info.domain.lower[j], hi = info.domain.upper[j];
+          x[i * s + j] = lo + (hi - lo) * x[i * s + j];
+        }
+      }
+      f.evaluate(x, y);
+      for (std::size_t i = 0; i < n; ++i) {
+        f.evaluate(std::span<const double>(x).subspan(i * s, s),
+                   std::span<double>(y1).subspan(i, 1));
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        // Bitwise: a value must not depend on the batch it was evaluated in.
+        EXPECT_EQ(y[i], y1[i]) << e.name << " point " << i;
+        EXPECT_TRUE(std::isfinite(y[i])) << e.name << " point " << i;
+      }
+      check_finite_batch(info.name, x, y, s);
+    }
+  }
+}
+
+TEST(Catalogue, KeysAreDocumentedAndNamesUnique) {
+  std::set<std::string_view> names;
+  for (const catalogue_entry& e : integrand_catalogue()) {
+    EXPECT_TRUE(names.insert(e.name).second) << e.name;
+    for (std::string_view key : e.vector_keys)
+      EXPECT_NE(e.parameters.find(key), std::string_view::npos) << e.name << " " << key;
+    for (std::string_view key : e.scalar_keys)
+      EXPECT_NE(e.parameters.find(key), std::string_view::npos) << e.name << " " << key;
+  }
+  EXPECT_EQ(names.size(), 19u);
+}
+
+std::string message_of(std::string_view name, const integrand_params& p) {
+  try {
+    make_integrand(name, p);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+TEST(Catalogue, BadNamesKeysAndValuesAreNamed) {
+  integrand_params p;
+  EXPECT_NE(message_of("genz_wavy", p).find("invalid integrand = genz_wavy"), std::string::npos);
+  p.scalars["radius"] = 0.3;
+  EXPECT_NE(message_of("disk_indicator", p).find("invalid key = radius"), std::string::npos);
+  p = {};
+  p.scalars["a"] = 1.0;  // a is a vector for Genz
+  EXPECT_NE(message_of("genz_gaussian", p).find("invalid a = 1"), std::string::npos);
+  EXPECT_NE(message_of("genz_gaussian", p).find("a vector"), std::string::npos);
+  p = {};
+  p.vectors["r"] = {0.3};  // r is a number for the ball
+  EXPECT_NE(message_of("disk_indicator", p).find("invalid r = a vector"), std::string::npos);
+  p = {};
+  p.dimension = 3;
+  p.vectors["a"] = {1.0, 2.0};
+  EXPECT_NE(message_of("genz_gaussian", p).find("invalid a = [1, 2]"), std::string::npos);
+  p.vectors["a"] = {1.0, 2.0, 3.0};
+  p.vectors["u"] = {0.5, 1.5, 0.5};
+  EXPECT_NE(message_of("genz_gaussian", p).find("invalid u = 1.5"), std::string::npos);
+  p = {};
+  p.dimension = 2;
+  EXPECT_NE(message_of("sqrt", p).find("invalid dimension = 2"), std::string::npos);
+  p.dimension = 1;
+  EXPECT_NE(message_of("irradiance_area", p).find("invalid dimension = 1"), std::string::npos);
+  p = {};
+  p.scalars["occluder"] = 0.5;
+  EXPECT_NE(message_of("irradiance_hemisphere", p).find("invalid occluder = 0.5"),
+            std::string::npos);
+  p.scalars["occluder"] = 1.0;
+  p.scalars["radiance"] = -2.0;
+  EXPECT_NE(message_of("irradiance_hemisphere", p).find("invalid radiance = -2"),
+            std::string::npos);
+  p = {};
+  p.dimension = 2;
+  p.vectors["cut"] = {1.5};
+  EXPECT_NE(message_of("genz_discontinuous", p).find("invalid cut = 1.5"), std::string::npos);
+  p.vectors["cut"] = {3};
+  EXPECT_NE(message_of("genz_discontinuous", p).find("invalid cut = 3"), std::string::npos);
+  p = {};
+  p.scalars["r"] = -0.1;
+  EXPECT_NE(message_of("disk_indicator", p).find("invalid r = -0.1"), std::string::npos);
+}
+
+TEST(Catalogue, GenzParametersFromSeedOrGiven) {
+  integrand_params p;
+  p.dimension = 4;
+  p.seed = 9;
+  const auto drawn = genz_random_parameters(genz_family::oscillatory, 4, 9);
+  const any_integrand f = make_integrand("genz_oscillatory", p);
+  EXPECT_EQ(f.info().exact, genz_oscillatory(drawn.a, drawn.u).info().exact);
+  // Given a, drawn u.
+  p.vectors["a"] = {1.0, 2.0, 3.0, 4.0};
+  EXPECT_EQ(make_integrand("genz_oscillatory", p).info().exact,
+            genz_oscillatory({1.0, 2.0, 3.0, 4.0}, drawn.u).info().exact);
+  // Every-coordinate cut.
+  integrand_params q;
+  q.dimension = 3;
+  q.vectors["cut"] = {1, 2, 3};
+  const auto d = genz_random_parameters(genz_family::discontinuous, 3, 0);
+  EXPECT_EQ(make_integrand("genz_discontinuous", q).info().exact,
+            genz_discontinuous(d.a, d.u, {1, 2, 3}).info().exact);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -1,0 +1,133 @@
+// Ball and half-space indicators: exact volumes against nested Gauss–Kronrod of the indicator's
+// section lengths, split where the sections change formula.
+#include "quadmc/functions/indicators.hpp"
+
+#include "reference_quadrature.hpp"
+
+#include <gtest/gtest.h>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include <cstdio>
+
+namespace quadmc {
+namespace {
+
+using test::at;
+using test::gauss_kronrod;
+using test::relative_error;
+
+TEST(Ball, AreaAndVolumeMatchNestedIntegration) {
+  // 2D: ∫ over x of the measured chord {y : f(x, y) = 1}, integrated by GK split at the two
+  // boundary points c₂ ± √(r² − (x − c₁)²) (so the inner integrand is smooth on each piece).
+  const ball_indicator disk({0.5, 0.45}, 0.4);
+  const double r = 0.4;
+  const double area = boost::math::quadrature::tanh_sinh<double>().integrate(
+      [&](double x) {
+        const double h = std::sqrt(std::max(0.0, r * r - (x - 0.5) * (x - 0.5)));
+        return gauss_kronrod(
+            [&](double y) {
+              return at(disk, {x, y});
+            },
+            0.0, 1.0, {0.45 - h, 0.45 + h});
+      },
+      0.5 - r, 0.5 + r);
+  const double e2 = relative_error(area, disk.info().exact);
+  // 3D: the volume as ∫∫_disk 2√(r² − ρ²), polar-free nested tanh–sinh (square-root endpoints).
+  const ball_indicator ball({0.5, 0.5, 0.5}, 0.3);
+  const double R = 0.3;
+  boost::math::quadrature::tanh_sinh<double> ts;
+  const double volume = ts.integrate(
+      [&](double x) {
+        const double hx = std::sqrt(std::max(0.0, R * R - x * x));
+        return ts.integrate(
+            [&](double y) { return 2.0 * std::sqrt(std::max(0.0, R * R - x * x - y * y)); }, -hx,
+            hx);
+      },
+      -R, R);
+  const double e3 = relative_error(volume, ball.info().exact);
+  std::printf("ball relative error vs independent integration: s = 2 %.2e, s = 3 %.2e\n", e2, e3);
+  EXPECT_LT(e2, 1e-10);
+  EXPECT_LT(e3, 1e-10);
+  // Recurrence V_s(r) = V_{s−2}(r)·2πr²/s, an identity independent of the Γ formula.
+  for (std::size_t s = 3; s <= 12; ++s) {
+    EXPECT_NEAR(ball_indicator::ball_volume(s, 0.4),
+                ball_indicator::ball_volume(s - 2, 0.4) * 2 * std::numbers::pi * 0.16 / s,
+                1e-14 * ball_indicator::ball_volume(s, 0.4));
+  }
+  EXPECT_DOUBLE_EQ(ball_indicator({0.5}, 0.25).info().exact, 0.5);
+}
+
+TEST(Ball, BadParametersAreNamed) {
+  auto message = [](std::vector<double> c, double r) -> std::string {
+    try {
+      ball_indicator b(std::move(c), r);
+    } catch (const invalid_argument& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  EXPECT_NE(message({0.5, 0.5}, -0.1).find("invalid r = -0.1"), std::string::npos);
+  EXPECT_NE(message({0.5, 0.5}, 0.0).find("invalid r = 0"), std::string::npos);
+  EXPECT_NE(message({0.5, 0.2}, 0.3).find("invalid center = 0.2"), std::string::npos);
+  EXPECT_NE(message({0.5, 0.9}, 0.3).find("inside [0,1]^s"), std::string::npos);
+  EXPECT_NE(message({}, 0.3).find("invalid center"), std::string::npos);
+}
+
+TEST(HalfSpace, VolumeMatchesNestedIntegration) {
+  // 2D, w = (1, 1), t = 1.5: the square minus a corner triangle, 1 − 0.5² / 2 = 0.875.
+  const half_space_indicator f2({1.0, 1.0}, 1.5);
+  EXPECT_NEAR(f2.info().exact, 0.875, 1e-15);
+  // 3D with unequal weights: ∫∫ of the x₃-section length clamp((t − w₁x − w₂y)/w₃, 0, 1), split
+  // where the clamp switches (y) and where those switch points leave [0, 1] (x).
+  const std::vector<double> w = {0.7, 1.3, 0.9};
+  const double t = 1.6;
+  const half_space_indicator f3(w, t);
+  std::vector<double> xb;
+  for (double c : {t, t - w[1], t - w[2], t - w[1] - w[2]}) xb.push_back(c / w[0]);
+  const double numeric = gauss_kronrod(
+      [&](double x) {
+        const double y0 = (t - w[0] * x) / w[1], y1 = (t - w[0] * x - w[2]) / w[1];
+        return gauss_kronrod(
+            [&](double y) {
+              // Inner x₃ integral: split at the jump x₃ = (t − w₁x − w₂y)/w₃.
+              const double z = (t - w[0] * x - w[1] * y) / w[2];
+              return gauss_kronrod([&](double x3) { return at(f3, {x, y, x3}); }, 0.0, 1.0, {z});
+            },
+            0.0, 1.0, {y0, y1});
+      },
+      0.0, 1.0, xb);
+  const double err = relative_error(numeric, f3.info().exact);
+  std::printf("half_space relative error vs independent integration: s = 3 %.2e\n", err);
+  EXPECT_LT(err, 1e-10);
+  // Simplex corner: t ≤ min w gives t^s/(s!·Π w).
+  const half_space_indicator corner({1.0, 2.0, 4.0, 1.5}, 0.5);
+  EXPECT_NEAR(corner.info().exact, std::pow(0.5, 4) / (24 * 12.0), 1e-15);
+  // Symmetry: t = Σw/2 halves the cube for any s.
+  for (std::size_t s = 1; s <= 16; ++s) {
+    EXPECT_NEAR(half_space_indicator(std::vector<double>(s, 1.0), 0.5 * s).info().exact, 0.5, 1e-15)
+        << "s = " << s;
+  }
+}
+
+TEST(HalfSpace, BadParametersAreNamed) {
+  try {
+    half_space_indicator f({1.0, -1.0}, 0.5);
+    FAIL();
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid w = -1"), std::string::npos);
+  }
+  try {
+    half_space_indicator f({1.0, 1.0}, 2.0);
+    FAIL();
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid t = 2"), std::string::npos);
+  }
+  // The plane must cut the cube: t = Σw leaves nothing to cut.
+  EXPECT_THROW(half_space_indicator(std::vector<double>(3, 1.0), 3.0), invalid_argument);
+  // The worst cancellation at the largest s (t = Σw/2, all 2^20 terms alive) stays far inside
+  // what 50 digits can carry: the accuracy rejection never fires for unit weights.
+  EXPECT_LT(half_space_indicator(std::vector<double>(20, 1.0), 10.0).relative_error_bound(), 1e-25);
+}
+
+}  // namespace
+}  // namespace quadmc
