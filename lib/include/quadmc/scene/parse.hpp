@@ -1,0 +1,94 @@
+// Reading a scene file (TOML, via toml++ 3.3) into a validated quadmc::scene.
+//
+// Use parse_scene_file for files and parse_scene for text held in memory (tests, stdin). Every
+// problem is a quadmc::scene_error whose message is one line "file:line:column: key 'k': …".
+// The parser checks everything that does not need the integrand catalogue: syntax, unknown keys,
+// types, ranges, and the combinations the scene itself makes impossible. make_plan (plan.hpp)
+// then asks the catalogue about families and their parameters and checks method × integrand
+// pairings, with the same error format. Source: TOML v1.0.0, https://toml.io/en/v1.0.0.
+//
+// ---------------------------------------------------------------------------------------------
+// Scene file reference (copied into the README)
+// ---------------------------------------------------------------------------------------------
+// Top level
+//   name = "example"      results go to results/<name>/; letters, digits, '_', '-', '.'.
+//                         Optional: defaults to the file name without extension.
+//   description = "…"     optional free text, copied into the report.
+//   seed = 42             integer ≥ 0 (default 0): the key of every random stream of the run.
+//   threads = 2           integer 0…4096 (default 0 = all cores). Results do not depend on it.
+//
+// [[integrand]]           one table per integrand (at least one)
+//   family = "genz_gaussian"  required; any name `quadmc list` prints.
+//   dimension = 3             s, 1…1024; or
+//   dimensions = [1, 2, 4, 8] shorthand: one integrand per s (same parameters, own name).
+//                             At most one of the two; neither = the family's default s (1 for
+//                             the 1D classics, 2 for the irradiance integrands).
+//   name = "g"                display name (unique). Default: "<family>_s<s>" ("<family>" when
+//                             s is the family default); with `dimensions`, "<name>_s<s>".
+//   ensemble = 16             K ≥ 1 (default 1): K random instances of the family, drawn from the
+//                             scene seed (instance k gets seed stream_id({seed, integrand, k}));
+//                             errors are averaged over the ensemble. Parameters given explicitly
+//                             are shared by every instance; the others are drawn per instance.
+//   a = [1.0, 2.0, 0.5]       any other key is a family parameter, passed to the catalogue:
+//   u = [0.3, 0.6, 0.45]      a number → scalar, an array of numbers → vector (length s where
+//   cut = [1, 2]              the family says so). Omitted ones are drawn from the seed and the
+//                             plan prints the values drawn. The catalogue rejects unknown ones.
+//
+// [[method]]              one table per method (at least one)
+//   name = "simpson"      required; one of the names in methods.hpp (`quadmc list`):
+//                         left_rectangle, right_rectangle, midpoint, trapezoid, simpson,
+//                         gauss_legendre, romberg, plain_mc, jittered, unjittered,
+//                         padded_jittered, latin_hypercube, importance,
+//                         irradiance_hemisphere_uniform, irradiance_hemisphere_cosine,
+//                         irradiance_light_area.
+//   label = "simpson_a"   display name (unique); needed when one method appears twice.
+//                         Default: the name, plus "_<warp>" / "_<point_set>" when set.
+//   integrands = ["g"]    restrict the method to these integrands (display names, or the
+//                         `name` of a `dimensions` table for all its expansions). Default: all.
+//   repetitions = 64      random methods: independent runs per N, 1…10^9 (default 32). A
+//                         deterministic rule runs once per N; the plan notes the key is ignored.
+//   panels = [2, 4, 8]    tensor rules except romberg: explicit n per axis (an integer or an
+//                         increasing list), replacing budget.N for this method. Simpson: even.
+//   m = 3                 gauss_legendre: nodes per panel, one of 2 3 4 5 7 10 15 20 25 30
+//                         (default 3).
+//   point_set = "jittered"  importance and irradiance_*: the pattern of the uniform points fed
+//                         to the warp (independent [default], jittered, unjittered,
+//                         padded_jittered, latin_hypercube). Counts are mapped as for the
+//                         method of the same name (jittered: N → k^s).
+//   warp = "power"        importance (required): a 1D density on [0,1], so s = 1 only;
+//   warp = { name = "power", exponent = 2.0 }      p(x) = (k+1) x^k, k > −1 (default 1)
+//   warp = { name = "exponential", rate = 1.0 }    p(x) = λ e^{λx}/(e^λ − 1), λ ≠ 0 (default 1)
+//
+// [budget]                required
+//   N = [64, 256, 1024]   nominal evaluation counts, strictly increasing, 1…2^53; or
+//   N = { from = 64, to = 1048576, factor = 4 }   geometric: from·factor^k ≤ to (factor > 1, may
+//                         be fractional: values are rounded and repeats dropped). ≤ 256 values.
+//                         Each method maps N to a count it can use (plan.hpp).
+//   max_evaluations = 1e8 per cell, evaluations × repetitions; cells above it are skipped with
+//                         the reason. An integer or an integral float (1e8). Default: no limit.
+//   max_seconds = 600     whole run, positive; the runner stops starting new cells after it.
+//
+// [output]                optional; which files to write (each default true)
+//   csv = true, markdown = true, plots = true
+//
+// Pairings: a method that cannot integrate an integrand (romberg or importance with s ≠ 1, an
+// irradiance estimator on a non-rendering integrand) is skipped for it, with the reason in the
+// plan. It is an error only when the method's `integrands` list names an integrand none of
+// whose expansions it can integrate: then the scene asks for something impossible.
+// ---------------------------------------------------------------------------------------------
+#pragma once
+
+#include "quadmc/scene/scene.hpp"
+
+#include <filesystem>
+#include <string_view>
+
+namespace quadmc {
+
+// `file_name` is used in messages only (and as the default scene name).
+scene parse_scene(std::string_view toml_text, std::string_view file_name);
+
+// Reads and parses `path`; a file that cannot be read is a scene_error at line 0.
+scene parse_scene_file(const std::filesystem::path& path);
+
+}  // namespace quadmc

@@ -1,0 +1,85 @@
+// The plan of a scene: every cell the runner will execute and everything it skips, with why.
+//
+// Use make_plan after parse_scene, and format_plan for `quadmc plan scene.toml`; the runner
+// (scene/run.hpp) executes plan::cells in order. The plan holds only what the scene names
+// (DESIGN.md, "skip what a scene doesn't need"):
+//  - a deterministic rule runs once per N (its repetitions are 1; a `repetitions` key on it is
+//    ignored with a note);
+//  - N is mapped to a count the method can use (methods.hpp): the largest tensor grid with
+//    p(n)^s ≤ N, or k^s strata for jittered points; `evaluations` is the real count;
+//  - an N that gives the same grid or strata as a smaller N is skipped ("same grid as N = …"),
+//    as is a grid smaller than N allows for no grid at all;
+//  - a cell whose evaluations × repetitions exceed budget.max_evaluations is skipped;
+//  - a method that cannot integrate an integrand is skipped for it (an error when the scene
+//    pairs them explicitly, parse.hpp);
+//  - outputs the scene turned off are listed as skipped.
+// make_plan also builds every integrand instance through the catalogue, so a family or a
+// parameter the catalogue rejects is a scene_error naming the file, line and key.
+#pragma once
+
+#include "quadmc/functions/any_integrand.hpp"
+#include "quadmc/functions/catalogue.hpp"
+#include "quadmc/scene/scene.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+// One instance of one integrand of the scene (an ensemble of K has K of them).
+struct plan_instance {
+  std::size_t integrand = 0;  // index into scene::integrands
+  std::size_t instance = 0;   // k, 0 … ensemble − 1
+  std::uint64_t seed = 0;     // params.seed = stream_id({scene seed, integrand, k})
+  integrand_params params;    // what make_integrand was given (dimension resolved)
+  any_integrand function;
+  // Parameters not given in the file and drawn from `seed` (Genz a, u), with their values.
+  std::map<std::string, std::vector<double>, std::less<>> drawn;
+};
+
+struct plan_cell {
+  std::size_t integrand = 0;          // index into scene::integrands
+  std::size_t instance = 0;           // ensemble instance k
+  std::size_t method = 0;             // index into scene::methods
+  std::size_t dimension = 1;          // s
+  std::uint64_t nominal_N = 0;        // from budget.N, or p(n)^s for explicit panels
+  std::uint64_t per_axis = 0;         // rules: panels n per axis; jittered-like: strata k per axis;
+                                      // 0 when the points have no grid
+  std::uint64_t points_per_axis = 0;  // rules: nodes per axis p(n); 0 otherwise
+  std::uint64_t evaluations = 0;      // per repetition, exact
+  std::uint64_t repetitions = 1;      // 1 for deterministic rules
+  int order = 0;                      // rules: r, |error| = O(n^-r); 0 for random methods
+  // Names the cell's random streams: the runner appends (repetition, chunk) and calls
+  // quadmc::stream_id with the scene seed as the Philox key.
+  std::array<std::uint64_t, 4> stream_parts{};  // {integrand, instance, method, nominal_N}
+};
+
+struct plan_skip {
+  std::string what;    // e.g. "simpson × genz_gaussian_s8, N = 256"
+  std::string reason;  // e.g. "same grid as N = 64 (n = 2 per axis, 6561 evaluations)"
+};
+
+struct plan {
+  scene source;  // the scene it was made from, with every integrand's dimension resolved
+  std::vector<plan_instance> instances;  // ordered by (integrand, instance)
+  std::vector<plan_cell> cells;          // ordered by (integrand, instance, method, N)
+  std::vector<plan_skip> skips;
+  std::vector<std::string> notes;       // ignored keys and other remarks
+  std::uint64_t total_evaluations = 0;  // Σ evaluations × repetitions (saturates at 2^64 − 1)
+
+  const plan_instance& instance_of(const plan_cell& c) const;
+};
+
+plan make_plan(const scene& s);
+
+// Human-readable listing for `quadmc plan`: the cells (integrand, s, method, N, n per axis,
+// evaluations, repetitions), each skip with its reason, the notes, and the drawn parameters of
+// integrands whose parameters came from the seed.
+std::string format_plan(const plan& p);
+
+}  // namespace quadmc

@@ -1,0 +1,84 @@
+// A validated scene: what an experiment file asks for, in C++ types, before any planning.
+//
+// Use it as the output of parse_scene (parse.hpp) and the input of make_plan (plan.hpp). It
+// holds the values exactly as the file gives them, plus where each came from, so that later
+// checks (the integrand catalogue's, the plan's impossible pairings) can still name the file,
+// line and key. It does not hold defaults the plan derives (drawn parameters, mapped counts).
+#pragma once
+
+#include "quadmc/scene/scene_error.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace quadmc {
+
+// Positions of the keys of one table, by key name, for messages raised after parsing.
+using key_locations = std::map<std::string, source_location, std::less<>>;
+
+// One integrand of the scene. A [[integrand]] table with `dimensions = [1, 2, 4]` becomes one
+// integrand_spec per s, all with the same table_index.
+struct integrand_spec {
+  std::string name;       // display name, unique in the scene (e.g. "genz_gaussian_s3")
+  std::string base_name;  // the table's `name`, or its family; shared by a `dimensions` expansion
+  std::string family;     // catalogue name
+  std::size_t dimension = 1;  // 0 after parsing = the family's default; make_plan resolves it
+  std::size_t ensemble = 1;   // K instances drawn from the scene seed, results averaged
+  bool ensemble_given = false;
+  // Family parameters passed through to the catalogue: numbers → scalars, arrays → vectors.
+  std::map<std::string, double, std::less<>> scalars;
+  std::map<std::string, std::vector<double>, std::less<>> vectors;
+
+  std::size_t table_index = 1;  // 1-based number of its [[integrand]] table in the file
+  source_location table;        // the [[integrand]] header
+  key_locations keys;
+};
+
+struct method_spec {
+  std::string name;   // method catalogue name (methods.hpp)
+  std::string label;  // display name, unique in the scene (defaults to name, or name + warp)
+  std::uint64_t repetitions = 32;
+  bool repetitions_given = false;
+  std::uint64_t m = 3;                  // gauss_legendre: nodes per panel
+  std::vector<std::uint64_t> panels;    // tensor rules: explicit n per axis (replaces budget.N)
+  std::string point_set;                // importance / irradiance estimators: sampling pattern
+  std::string warp;                     // importance: warp name (methods.hpp warp_catalogue)
+  double warp_parameter = 0.0;          // its parameter (exponent, rate)
+  std::vector<std::string> integrands;  // restriction to these integrand names; empty = all
+
+  std::size_t table_index = 1;  // 1-based number of its [[method]] table
+  source_location table;
+  key_locations keys;
+};
+
+struct budget_spec {
+  std::vector<std::uint64_t> N;                  // nominal evaluation counts, increasing
+  std::optional<std::uint64_t> max_evaluations;  // per cell: evaluations × repetitions
+  std::optional<double> max_seconds;             // whole run; enforced by the runner
+  source_location N_location;
+};
+
+struct output_spec {
+  bool csv = true;
+  bool markdown = true;
+  bool plots = true;
+};
+
+struct scene {
+  std::string file;  // as given to the parser; prefixes every message
+  std::string name;
+  std::string description;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;  // 0 = all cores
+  std::vector<integrand_spec> integrands;
+  std::vector<method_spec> methods;
+  budget_spec budget;
+  output_spec output;
+};
+
+}  // namespace quadmc

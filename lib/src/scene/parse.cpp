@@ -1,0 +1,575 @@
+// Scene parsing: toml++ document → quadmc::scene (parse.hpp documents every key).
+//
+// Every check reports through scene_reader::fail, so every message has the one shape
+// "file:line:column: key 'path': expected …, got …" and points at the key (not the value), which
+// is where an editor's cursor should land.
+#include "quadmc/scene/parse.hpp"
+
+#include "quadmc/rules/gauss_legendre_rule.hpp"
+#include "quadmc/scene/methods.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace quadmc {
+
+namespace {
+
+// Counts above 2^53 are not exactly representable as doubles, which the analysis layer uses for
+// N; and point sets need N·s < 2^62 (sampling/point_set.hpp).
+constexpr std::uint64_t max_count = std::uint64_t{1} << 53;
+constexpr std::size_t max_dimension = 1024;
+constexpr std::size_t max_ladder = 256;
+
+std::string describe(const toml::node& n) {
+  if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
+  if (const auto* v = n.as_floating_point()) return fmt::format("{}", v->get());
+  if (const auto* v = n.as_string()) return fmt::format("\"{}\"", v->get());
+  if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date/time";
+}
+
+// A key and its value inside a table, with the dotted path used in messages.
+struct entry {
+  const toml::key* key = nullptr;
+  const toml::node* value = nullptr;
+  std::string path;
+};
+
+class scene_reader {
+ public:
+  explicit scene_reader(std::string file) : file_(std::move(file)) {}
+
+  const std::string& file() const noexcept { return file_; }
+
+  source_location at(const toml::source_region& region) const {
+    return {file_, region.begin.line, region.begin.column};
+  }
+  source_location at(const entry& e) const { return at(e.key->source()); }
+
+  [[noreturn]] void fail(const source_location& where, std::string_view path,
+                         std::string_view message) const {
+    throw scene_error(where, path, message);
+  }
+  [[noreturn]] void fail(const entry& e, std::string_view message) const {
+    fail(at(e), e.path, message);
+  }
+  [[noreturn]] void expected(const entry& e, std::string_view what) const {
+    fail(e, fmt::format("expected {}, got {}", what, describe(*e.value)));
+  }
+
+  std::optional<entry> find(const toml::table& table, std::string_view key,
+                            std::string_view prefix) const {
+    const auto it = table.find(key);
+    if (it == table.end()) return std::nullopt;
+    return entry{&it->first, &it->second, path(prefix, key)};
+  }
+
+  static std::string path(std::string_view prefix, std::string_view key) {
+    return prefix.empty() ? std::string(key) : fmt::format("{}.{}", prefix, key);
+  }
+
+  // Unknown keys are errors: a typo ("repetition") must not silently fall back to a default.
+  void check_keys(const toml::table& table, std::span<const std::string_view> allowed,
+                  std::string_view prefix, std::string_view what) const {
+    for (auto&& [key, value] : table) {
+      if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
+      std::string list;
+      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      fail(at(key.source()), path(prefix, key.str()),
+           fmt::format("unknown key in {}; expected one of: {}", what, list));
+    }
+  }
+
+  std::uint64_t count(const entry& e, std::uint64_t lo, std::uint64_t hi,
+                      std::string_view what) const {
+    // Integral floats are accepted so that "max_evaluations = 1e8" reads as written.
+    if (const auto* i = e.value->as_integer()) {
+      const std::int64_t v = i->get();
+      if (v >= 0 && static_cast<std::uint64_t>(v) >= lo && static_cast<std::uint64_t>(v) <= hi) {
+        return static_cast<std::uint64_t>(v);
+      }
+    } else if (const auto* f = e.value->as_floating_point()) {
+      const double v = f->get();
+      if (std::isfinite(v) && v == std::floor(v) && v >= static_cast<double>(lo) &&
+          v <= static_cast<double>(hi)) {
+        return static_cast<std::uint64_t>(v);
+      }
+    }
+    expected(e, what);
+  }
+
+  double number(const entry& e, std::string_view what) const {
+    if (const auto* i = e.value->as_integer()) return static_cast<double>(i->get());
+    if (const auto* f = e.value->as_floating_point()) {
+      if (std::isfinite(f->get())) return f->get();
+    }
+    expected(e, what);
+  }
+
+  std::string string(const entry& e, std::string_view what) const {
+    if (const auto* s = e.value->as_string()) return s->get();
+    expected(e, what);
+  }
+
+  bool boolean(const entry& e) const {
+    if (const auto* b = e.value->as_boolean()) return b->get();
+    expected(e, "true or false");
+  }
+
+  // Names become file and directory names in results/, so they stay portable.
+  std::string display_name(const entry& e) const {
+    std::string s = string(e, "a name of letters, digits, '_', '-', '.'");
+    if (!is_portable_name(s)) expected(e, "a name of letters, digits, '_', '-', '.'");
+    return s;
+  }
+
+  static bool is_portable_name(std::string_view s) {
+    if (s.empty() || s == "." || s == "..") return false;
+    return std::all_of(s.begin(), s.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+             c == '_' || c == '-' || c == '.';
+    });
+  }
+
+  const toml::table& table(const entry& e, std::string_view what) const {
+    if (const auto* t = e.value->as_table()) return *t;
+    expected(e, what);
+  }
+
+  // The tables of an array of tables ([[integrand]]), at least one.
+  const toml::array& tables(const entry& e, std::string_view header) const {
+    const auto* a = e.value->as_array();
+    if (a == nullptr || a->empty() || !a->is_array_of_tables()) {
+      expected(e, fmt::format("one or more [[{}]] tables", header));
+    }
+    return *a;
+  }
+
+ private:
+  std::string file_;
+};
+
+key_locations locations_of(const scene_reader& r, const toml::table& t) {
+  key_locations keys;
+  for (auto&& [key, value] : t) keys.emplace(std::string(key.str()), r.at(key.source()));
+  return keys;
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[integrand]]
+
+void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t index,
+                     std::vector<integrand_spec>& out) {
+  const std::string prefix = fmt::format("integrand[{}]", index);
+  integrand_spec base;
+  base.table_index = index;
+  base.table = r.at(t.source());
+  base.keys = locations_of(r, t);
+
+  const auto family = r.find(t, "family", prefix);
+  if (!family) r.fail(base.table, prefix + ".family", "missing required key (a catalogue name)");
+  base.family = r.string(*family, "a family name (`quadmc list` prints them)");
+  if (base.family.empty()) r.expected(*family, "a family name (`quadmc list` prints them)");
+
+  std::optional<std::string> given_name;
+  if (const auto e = r.find(t, "name", prefix)) given_name = r.display_name(*e);
+
+  std::vector<std::size_t> dimensions;
+  const auto dim = r.find(t, "dimension", prefix);
+  const auto dims = r.find(t, "dimensions", prefix);
+  if (dim && dims) r.fail(*dims, "give either `dimension` or `dimensions`, not both");
+  // Neither: s = 0 asks the catalogue for the family's default (1, or 2 for irradiance);
+  // make_plan fills in the real s.
+  if (!dim && !dims) dimensions.push_back(0);
+  const std::string_view dim_expected = "a dimension between 1 and 1024";
+  if (dim) dimensions.push_back(r.count(*dim, 1, max_dimension, dim_expected));
+  if (dims) {
+    const auto* a = dims->value->as_array();
+    if (a == nullptr || a->empty()) r.expected(*dims, "a non-empty array of dimensions");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const entry element{dims->key, a->get(i), fmt::format("{}[{}]", dims->path, i + 1)};
+      const std::size_t s = r.count(element, 1, max_dimension, dim_expected);
+      if (std::find(dimensions.begin(), dimensions.end(), s) != dimensions.end()) {
+        r.fail(element, fmt::format("dimension {} is listed twice", s));
+      }
+      dimensions.push_back(s);
+    }
+  }
+  if (const auto e = r.find(t, "ensemble", prefix)) {
+    base.ensemble = r.count(*e, 1, 1'000'000, "an ensemble size between 1 and 1000000");
+    base.ensemble_given = true;
+  }
+
+  // Every other key is a family parameter; the catalogue decides which ones the family takes.
+  for (auto&& [key, value] : t) {
+    const std::string_view k = key.str();
+    if (k == "family" || k == "name" || k == "dimension" || k == "dimensions" || k == "ensemble") {
+      continue;
+    }
+    const entry e{&key, &value, scene_reader::path(prefix, k)};
+    const std::string what =
+        fmt::format("a number or an array of numbers (a parameter of {})", base.family);
+    if (value.is_number()) {
+      base.scalars.emplace(std::string(k), r.number(e, what));
+    } else if (const auto* a = value.as_array()) {
+      if (a->empty()) r.expected(e, what);
+      std::vector<double> v;
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        const entry element{&key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
+        v.push_back(r.number(element, "a finite number"));
+      }
+      base.vectors.emplace(std::string(k), std::move(v));
+    } else {
+      r.expected(e, what);
+    }
+  }
+
+  base.base_name = given_name.value_or(base.family);
+  for (std::size_t s : dimensions) {
+    integrand_spec spec = base;
+    spec.dimension = s;
+    if (given_name && !dims) {
+      spec.name = *given_name;
+    } else {
+      spec.name = s == 0 ? base.base_name : fmt::format("{}_s{}", base.base_name, s);
+    }
+    for (const auto& other : out) {
+      if (other.name == spec.name) {
+        r.fail(spec.table, prefix + ".name",
+               fmt::format("integrand name '{}' is already used by integrand[{}] (line {}); set "
+                           "a distinct `name`",
+                           spec.name, other.table_index, other.table.line));
+      }
+    }
+    out.push_back(std::move(spec));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[method]]
+
+void parse_warp(const scene_reader& r, const entry& e, method_spec& m) {
+  const warp_info* info = nullptr;
+  std::optional<entry> parameter;
+  if (e.value->is_string()) {
+    m.warp = r.string(e, "a warp name");
+    info = find_warp(m.warp);
+    if (info == nullptr) r.expected(e, fmt::format("one of: {}", warp_names()));
+  } else if (const auto* t = e.value->as_table()) {
+    const auto name = r.find(*t, "name", e.path);
+    if (!name) r.fail(e, fmt::format("missing `name` (one of: {})", warp_names()));
+    m.warp = r.string(*name, "a warp name");
+    info = find_warp(m.warp);
+    if (info == nullptr) r.expected(*name, fmt::format("one of: {}", warp_names()));
+    const std::array<std::string_view, 2> allowed{"name", info->parameter};
+    r.check_keys(*t, allowed, e.path, fmt::format("warp '{}'", m.warp));
+    parameter = r.find(*t, info->parameter, e.path);
+  } else {
+    r.expected(e, "a warp name or a table { name = …, <parameter> = … }");
+  }
+  m.warp_parameter = info->default_value;
+  if (parameter) {
+    if (m.warp == "power") {
+      m.warp_parameter = r.number(*parameter, "an exponent k > -1");
+      if (!(m.warp_parameter > -1.0)) r.expected(*parameter, "an exponent k > -1");
+    } else {
+      m.warp_parameter = r.number(*parameter, "a rate l != 0");
+      if (m.warp_parameter == 0.0) r.expected(*parameter, "a rate l != 0");
+    }
+  }
+}
+
+void parse_panels(const scene_reader& r, const entry& e, method_spec& m) {
+  const bool simpson = m.name == "simpson";
+  const std::string_view what =
+      simpson ? "an even panel count between 2 and 2^53" : "a panel count between 1 and 2^53";
+  auto one = [&](const entry& element) {
+    const std::uint64_t n = r.count(element, simpson ? 2 : 1, max_count, what);
+    // Composite Simpson pairs the panels: an odd n leaves one panel without a partner.
+    if (simpson && n % 2 != 0) r.expected(element, what);
+    if (!m.panels.empty() && n <= m.panels.back()) {
+      r.fail(element,
+             fmt::format("panel counts must increase, got {} after {}", n, m.panels.back()));
+    }
+    m.panels.push_back(n);
+  };
+  if (const auto* a = e.value->as_array()) {
+    if (a->empty()) r.expected(e, "a panel count or a non-empty array of panel counts");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      one(entry{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)});
+    }
+  } else {
+    one(e);
+  }
+}
+
+bool names_integrand(const std::vector<integrand_spec>& integrands, std::string_view name) {
+  return std::any_of(integrands.begin(), integrands.end(), [&](const integrand_spec& f) {
+    return f.name == name || f.base_name == name;
+  });
+}
+
+method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_t index,
+                         const std::vector<integrand_spec>& integrands) {
+  const std::string prefix = fmt::format("method[{}]", index);
+  method_spec m;
+  m.table_index = index;
+  m.table = r.at(t.source());
+  m.keys = locations_of(r, t);
+
+  const auto name = r.find(t, "name", prefix);
+  if (!name) {
+    r.fail(m.table, prefix + ".name",
+           fmt::format("missing required key (one of: {})", method_names()));
+  }
+  m.name = r.string(*name, "a method name");
+  const method_info* info = find_method(m.name);
+  if (info == nullptr) r.expected(*name, fmt::format("one of: {}", method_names()));
+  r.check_keys(t, info->options, prefix, fmt::format("a '{}' method", m.name));
+
+  if (const auto e = r.find(t, "repetitions", prefix)) {
+    m.repetitions = r.count(*e, 1, 1'000'000'000, "a positive integer");
+    m.repetitions_given = true;
+  }
+  if (const auto e = r.find(t, "m", prefix)) {
+    const auto& supported = gauss_legendre_rule::supported_points;
+    std::string list;
+    for (unsigned p : supported) list += fmt::format("{}{}", list.empty() ? "" : " ", p);
+    const std::string what = fmt::format("one of {}", list);
+    m.m = r.count(*e, 1, gauss_legendre_rule::max_points, what);
+    if (std::find(supported.begin(), supported.end(), m.m) == supported.end()) {
+      r.expected(*e, what);
+    }
+  }
+  if (const auto e = r.find(t, "panels", prefix)) parse_panels(r, *e, m);
+  if (const auto e = r.find(t, "point_set", prefix)) {
+    m.point_set = r.string(*e, "a point set name");
+    if (find_point_set(m.point_set) == nullptr) {
+      r.expected(*e, fmt::format("one of: {}", point_set_names()));
+    }
+  }
+  const bool takes_point_set =
+      std::find(info->options.begin(), info->options.end(), "point_set") != info->options.end();
+  const bool point_set_given = !m.point_set.empty();
+  if (takes_point_set && !point_set_given) m.point_set = "independent";
+
+  if (const auto e = r.find(t, "warp", prefix)) {
+    parse_warp(r, *e, m);
+  } else if (m.name == "importance") {
+    r.fail(m.table, prefix + ".warp",
+           fmt::format("missing required key for importance (one "
+                       "of: {})",
+                       warp_names()));
+  }
+
+  if (const auto e = r.find(t, "integrands", prefix)) {
+    const auto* a = e->value->as_array();
+    if (a == nullptr || a->empty()) r.expected(*e, "a non-empty array of integrand names");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const entry element{e->key, a->get(i), fmt::format("{}[{}]", e->path, i + 1)};
+      std::string n = r.string(element, "an integrand name");
+      if (!names_integrand(integrands, n)) {
+        std::string known;
+        for (const auto& f : integrands) known += (known.empty() ? "" : ", ") + f.name;
+        r.fail(element, fmt::format("no integrand is named '{}' (integrands: {})", n, known));
+      }
+      m.integrands.push_back(std::move(n));
+    }
+  }
+
+  if (const auto e = r.find(t, "label", prefix)) {
+    m.label = r.display_name(*e);
+  } else {
+    m.label = m.name;
+    if (!m.warp.empty()) m.label += "_" + m.warp;
+    if (point_set_given) m.label += "_" + m.point_set;
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// [budget], [output]
+
+std::vector<std::uint64_t> parse_ladder(const scene_reader& r, const entry& e) {
+  const std::string_view what = "a count between 1 and 2^53";
+  std::vector<std::uint64_t> ladder;
+  if (const auto* a = e.value->as_array()) {
+    if (a->empty()) r.expected(e, "a non-empty array of counts");
+    if (a->size() > max_ladder) r.fail(e, fmt::format("more than {} values", max_ladder));
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const entry element{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
+      const std::uint64_t n = r.count(element, 1, max_count, what);
+      if (!ladder.empty() && n <= ladder.back()) {
+        r.fail(element, fmt::format("values must increase, got {} after {}", n, ladder.back()));
+      }
+      ladder.push_back(n);
+    }
+    return ladder;
+  }
+  const auto* t = e.value->as_table();
+  if (t == nullptr) r.expected(e, "an array of counts or { from = …, to = …, factor = … }");
+  constexpr std::array<std::string_view, 3> keys{"from", "to", "factor"};
+  r.check_keys(*t, keys, e.path, "a geometric range");
+  const auto from = r.find(*t, "from", e.path);
+  const auto to = r.find(*t, "to", e.path);
+  const auto factor = r.find(*t, "factor", e.path);
+  for (const auto& [k, found] : {std::pair{"from", from}, {"to", to}, {"factor", factor}}) {
+    if (!found) r.fail(e, fmt::format("missing `{}` in the range", k));
+  }
+  const std::uint64_t lo = r.count(*from, 1, max_count, what);
+  const std::uint64_t hi = r.count(*to, 1, max_count, what);
+  if (hi < lo) r.expected(*to, fmt::format("a count ≥ from = {}", lo));
+  const double f = r.number(*factor, "a factor > 1");
+  if (!(f > 1.0)) r.expected(*factor, "a factor > 1");
+  if (f == std::floor(f) && f < static_cast<double>(max_count)) {
+    // Integral factor: exact integer products, so N = 4^k hits perfect powers exactly.
+    const auto q = static_cast<std::uint64_t>(f);
+    for (std::uint64_t n = lo;; n *= q) {
+      ladder.push_back(n);
+      if (ladder.size() > max_ladder) break;
+      if (n > hi / q) break;
+    }
+  } else {
+    for (int k = 0;; ++k) {
+      const double x = std::round(static_cast<double>(lo) * std::pow(f, k));
+      if (x > static_cast<double>(hi)) break;
+      const auto n = static_cast<std::uint64_t>(x);
+      if (ladder.empty() || n > ladder.back()) ladder.push_back(n);
+      if (ladder.size() > max_ladder) break;
+    }
+  }
+  if (ladder.size() > max_ladder) {
+    r.fail(e, fmt::format("the range gives more than {} values; use a larger factor", max_ladder));
+  }
+  return ladder;
+}
+
+budget_spec parse_budget(const scene_reader& r, const entry& e) {
+  const toml::table& t = r.table(e, "a [budget] table");
+  constexpr std::array<std::string_view, 3> keys{"N", "max_evaluations", "max_seconds"};
+  r.check_keys(t, keys, "budget", "[budget]");
+  budget_spec b;
+  const auto N = r.find(t, "N", "budget");
+  if (!N) r.fail(r.at(t.source()), "budget.N", "missing required key (the N ladder)");
+  b.N = parse_ladder(r, *N);
+  b.N_location = r.at(*N);
+  if (const auto m = r.find(t, "max_evaluations", "budget")) {
+    b.max_evaluations = r.count(*m, 1, std::numeric_limits<std::int64_t>::max(),
+                                "a positive number of evaluations");
+  }
+  if (const auto s = r.find(t, "max_seconds", "budget")) {
+    const double v = r.number(*s, "a positive number of seconds");
+    if (!(v > 0.0)) r.expected(*s, "a positive number of seconds");
+    b.max_seconds = v;
+  }
+  return b;
+}
+
+output_spec parse_output(const scene_reader& r, const entry& e) {
+  const toml::table& t = r.table(e, "an [output] table");
+  constexpr std::array<std::string_view, 3> keys{"csv", "markdown", "plots"};
+  r.check_keys(t, keys, "output", "[output]");
+  output_spec o;
+  if (const auto v = r.find(t, "csv", "output")) o.csv = r.boolean(*v);
+  if (const auto v = r.find(t, "markdown", "output")) o.markdown = r.boolean(*v);
+  if (const auto v = r.find(t, "plots", "output")) o.plots = r.boolean(*v);
+  return o;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+scene parse_root(const scene_reader& r, const toml::table& root) {
+  const source_location file_start{r.file(), 1, 1};
+  if (root.empty()) {
+    r.fail(file_start, "",
+           "empty scene: expected at least [[integrand]], [[method]] and [budget] tables");
+  }
+  constexpr std::array<std::string_view, 8> keys{"name",      "description", "seed",   "threads",
+                                                 "integrand", "method",      "budget", "output"};
+  r.check_keys(root, keys, "", "the scene");
+
+  scene sc;
+  sc.file = r.file();
+  if (const auto e = r.find(root, "name", "")) {
+    sc.name = r.display_name(*e);
+  } else {
+    sc.name = std::filesystem::path(r.file()).stem().string();
+    if (!scene_reader::is_portable_name(sc.name)) sc.name = "scene";
+  }
+  if (const auto e = r.find(root, "description", "")) sc.description = r.string(*e, "a string");
+  if (const auto e = r.find(root, "seed", "")) {
+    sc.seed = r.count(*e, 0, std::numeric_limits<std::int64_t>::max(), "an integer ≥ 0");
+  }
+  if (const auto e = r.find(root, "threads", "")) {
+    sc.threads = static_cast<unsigned>(
+        r.count(*e, 0, 4096, "a thread count between 0 (all cores) and 4096"));
+  }
+
+  const auto integrands = r.find(root, "integrand", "");
+  if (!integrands) {
+    r.fail(file_start, "integrand", "missing: a scene needs at least one [[integrand]] table");
+  }
+  const toml::array& integrand_tables = r.tables(*integrands, "integrand");
+  for (std::size_t i = 0; i < integrand_tables.size(); ++i) {
+    parse_integrand(r, *integrand_tables.get(i)->as_table(), i + 1, sc.integrands);
+  }
+
+  const auto methods = r.find(root, "method", "");
+  if (!methods)
+    r.fail(file_start, "method", "missing: a scene needs at least one [[method]] table");
+  const toml::array& method_tables = r.tables(*methods, "method");
+  for (std::size_t i = 0; i < method_tables.size(); ++i) {
+    method_spec m = parse_method(r, *method_tables.get(i)->as_table(), i + 1, sc.integrands);
+    for (const auto& other : sc.methods) {
+      if (other.label == m.label) {
+        r.fail(m.table, fmt::format("method[{}].label", i + 1),
+               fmt::format("method label '{}' is already used by method[{}] (line {}); set a "
+                           "distinct `label`",
+                           m.label, other.table_index, other.table.line));
+      }
+    }
+    sc.methods.push_back(std::move(m));
+  }
+
+  const auto budget = r.find(root, "budget", "");
+  if (!budget) r.fail(file_start, "budget", "missing required table [budget] (with N)");
+  sc.budget = parse_budget(r, *budget);
+  if (const auto e = r.find(root, "output", "")) sc.output = parse_output(r, *e);
+  return sc;
+}
+
+}  // namespace
+
+scene parse_scene(std::string_view toml_text, std::string_view file_name) {
+  const scene_reader reader{std::string(file_name)};
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, file_name);
+  } catch (const toml::parse_error& e) {
+    // toml++'s own position: where the syntax broke (for a truncated file, its end).
+    throw scene_error(reader.at(e.source()), "", e.description());
+  }
+  return parse_root(reader, root);
+}
+
+scene parse_scene_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw scene_error({path.string(), 0, 0}, "", "cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw scene_error({path.string(), 0, 0}, "", "cannot read the scene file");
+  return parse_scene(text.str(), path.string());
+}
+
+}  // namespace quadmc

@@ -1,0 +1,182 @@
+// Executes plan cells by method name. One switch per repetition; below it the rule and estimator
+// kernels are templates over the integrand (any_integrand: one virtual call per batch).
+#include "quadmc/scene/run.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/rng.hpp"
+#include "quadmc/estimators/sampling_method.hpp"
+#include "quadmc/functions/catalogue.hpp"
+#include "quadmc/rules/gauss_legendre_rule.hpp"
+#include "quadmc/rules/midpoint_rule.hpp"
+#include "quadmc/rules/rectangle_rule.hpp"
+#include "quadmc/rules/romberg.hpp"
+#include "quadmc/rules/simpson_rule.hpp"
+#include "quadmc/rules/tensor_product.hpp"
+#include "quadmc/rules/trapezoid_rule.hpp"
+#include "quadmc/scene/methods.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <chrono>
+#include <map>
+#include <utility>
+
+namespace quadmc {
+
+namespace {
+
+repetition_result from_rule(const rule_result& r) {
+  // A deterministic rule reports no standard error: coverage does not apply (NaN).
+  return repetition_result{r.value, std::numeric_limits<double>::quiet_NaN(), r.evaluations, 0.0};
+}
+
+repetition_result from_estimate(const estimate& e) {
+  return repetition_result{e.value, e.std_error, e.evaluations, 0.0};
+}
+
+repetition_result run_rule(const method_spec& m, const any_integrand& f, const plan_cell& cell,
+                           unsigned threads) {
+  const std::uint64_t n = cell.per_axis;
+  const std::string_view name = m.name;
+  if (name == "left_rectangle") {
+    return from_rule(integrate(f, rectangle_rule<rectangle_side::left>{}, n, threads));
+  }
+  if (name == "right_rectangle") {
+    return from_rule(integrate(f, rectangle_rule<rectangle_side::right>{}, n, threads));
+  }
+  if (name == "midpoint") return from_rule(integrate(f, midpoint_rule{}, n, threads));
+  if (name == "trapezoid") return from_rule(integrate(f, trapezoid_rule{}, n, threads));
+  if (name == "simpson") return from_rule(integrate(f, simpson_rule{}, n, threads));
+  if (name == "gauss_legendre") {
+    return from_rule(integrate(f, gauss_legendre_rule(static_cast<unsigned>(m.m)), n, threads));
+  }
+  if (name == "romberg") {
+    // The plan chose n = 2^k panels: run exactly k halvings (tolerance 0 disables early stop).
+    require(std::has_single_bit(n), "romberg panels", n, "a power of two");
+    romberg_options options;
+    options.relative_tolerance = 0.0;
+    const auto levels = static_cast<unsigned>(std::countr_zero(n));
+    options.min_levels = levels;
+    options.max_levels = levels;
+    return from_rule(romberg(f, options));
+  }
+  throw invalid_argument("method", std::string(name), "a deterministic rule of methods.hpp");
+}
+
+point_set_kind point_set_of(const method_spec& m) {
+  const std::string_view name = m.name;
+  if (name == "plain_mc") return point_set_kind::independent;
+  if (name == "jittered") return point_set_kind::jittered;
+  if (name == "unjittered") return point_set_kind::unjittered;
+  if (name == "padded_jittered") return point_set_kind::padded_jittered;
+  if (name == "latin_hypercube") return point_set_kind::latin_hypercube;
+  // importance and the irradiance estimators draw their u from a chosen pattern.
+  return m.point_set.empty() ? point_set_kind::independent : parse_point_set_kind(m.point_set);
+}
+
+repetition_result run_random(const method_spec& m, const plan& p, const plan_cell& cell,
+                             std::uint64_t stream, unsigned threads) {
+  const plan_instance& inst = p.instance_of(cell);
+  const std::uint64_t seed = p.source.seed;
+  const std::uint64_t n = cell.evaluations;
+  const std::string_view name = m.name;
+  const point_set_kind points = point_set_of(m);
+  if (name == "importance") {
+    const unit_warp_kind warp =
+        m.warp == "power" ? unit_warp_kind::power : unit_warp_kind::truncated_exponential;
+    return from_estimate(
+        run_importance(points, inst.function, warp, m.warp_parameter, seed, stream, n, threads));
+  }
+  if (name.starts_with("irradiance_")) {
+    const irradiance_setup setup = make_irradiance_setup(inst.params);
+    const irradiance_sampling technique =
+        name == "irradiance_hemisphere_uniform"  ? irradiance_sampling::uniform_hemisphere
+        : name == "irradiance_hemisphere_cosine" ? irradiance_sampling::cosine_hemisphere
+                                                 : irradiance_sampling::light_area;
+    return from_estimate(run_irradiance(technique, points, setup, seed, stream, n, threads));
+  }
+  return from_estimate(run_monte_carlo(points, inst.function, seed, stream, n, threads));
+}
+
+}  // namespace
+
+run_output run_plan(const plan& p, const run_options& options) {
+  using clock = std::chrono::steady_clock;
+  const auto run_start = clock::now();
+  run_output out;
+  out.threads = resolve_threads(options.threads != 0 ? options.threads : p.source.threads);
+
+  // One series per (integrand, method), in order of first appearance (the plan's order).
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> series_index;
+  // For ensembles: Ī per integrand, the mean of its instances' references.
+  std::map<std::size_t, double> mean_reference;
+  std::map<std::size_t, std::size_t> instance_count;
+  for (const plan_instance& inst : p.instances) {
+    mean_reference[inst.integrand] += inst.function.info().exact;
+    ++instance_count[inst.integrand];
+  }
+  for (auto& [integrand, sum] : mean_reference) sum /= static_cast<double>(instance_count[integrand]);
+
+  run_progress progress;
+  progress.cells_total = p.cells.size();
+  progress.evaluations_total = p.total_evaluations;
+  const std::optional<double> max_seconds = p.source.budget.max_seconds;
+
+  for (const plan_cell& cell : p.cells) {
+    const integrand_spec& ispec = p.source.integrands[cell.integrand];
+    const method_spec& mspec = p.source.methods[cell.method];
+    const double elapsed = std::chrono::duration<double>(clock::now() - run_start).count();
+    if (max_seconds && elapsed > *max_seconds) {
+      out.skips.push_back(plan_skip{
+          fmt::format("{} × {}, N = {}", mspec.label, ispec.name, cell.nominal_N),
+          fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)", *max_seconds,
+                      elapsed)});
+      continue;
+    }
+    const plan_instance& inst = p.instance_of(cell);
+    const integrand_info& info = inst.function.info();
+    const double shift = mean_reference[cell.integrand] - info.exact;
+
+    auto [it, inserted] =
+        series_index.try_emplace({cell.integrand, cell.method}, out.series.size());
+    if (inserted) {
+      convergence_series series;
+      series.integrand = ispec.name;
+      series.s = cell.dimension;
+      series.method = mspec.label;
+      series.method_name = mspec.name;
+      series.order = cell.order;
+      series.smoothness = to_string(info.regularity);
+      series.reference = mean_reference[cell.integrand];
+      out.series.push_back(std::move(series));
+    }
+    convergence_series& series = out.series[it->second];
+    if (series.cells.empty() || series.cells.back().n != cell.nominal_N) {
+      series.cells.push_back(convergence_cell{cell.nominal_N, {}});
+    }
+    convergence_cell& target = series.cells.back();
+
+    const method_info* method = find_method(mspec.name);
+    require(method != nullptr, "method", mspec.name, "a name listed by `quadmc list`");
+    for (std::uint64_t r = 0; r < cell.repetitions; ++r) {
+      const auto& sp = cell.stream_parts;
+      const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
+      const auto t0 = clock::now();
+      repetition_result result = method->kind == method_kind::deterministic_rule
+                                     ? run_rule(mspec, inst.function, cell, out.threads)
+                                     : run_random(mspec, p, cell, stream, out.threads);
+      result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+      result.value += shift;
+      target.repetitions.push_back(result);
+    }
+    ++progress.cells_done;
+    progress.evaluations_done += cell.evaluations * cell.repetitions;
+    if (options.on_progress) options.on_progress(progress);
+  }
+  out.seconds = std::chrono::duration<double>(clock::now() - run_start).count();
+  return out;
+}
+
+}  // namespace quadmc

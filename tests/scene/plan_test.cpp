@@ -1,0 +1,383 @@
+// Tests of scene/plan.hpp: which cells a scene gives, which it skips and why, and the errors
+// only the catalogue or the pairing of methods with integrands can reveal.
+#include "quadmc/scene/plan.hpp"
+
+#include "quadmc/core/rng.hpp"
+#include "quadmc/functions/genz.hpp"
+#include "quadmc/scene/parse.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace quadmc {
+namespace {
+
+plan plan_of(std::string_view text) {
+  return make_plan(parse_scene(text, "scene.toml"));
+}
+
+std::vector<plan_cell> cells_of(const plan& p, std::string_view label) {
+  std::vector<plan_cell> out;
+  for (const auto& c : p.cells) {
+    if (p.source.methods[c.method].label == label) out.push_back(c);
+  }
+  return out;
+}
+
+const plan_skip* find_skip(const plan& p, std::string_view what) {
+  for (const auto& s : p.skips) {
+    if (s.what == what) return &s;
+  }
+  return nullptr;
+}
+
+std::uint32_t line_of(std::string_view text, std::string_view needle) {
+  const auto at = text.find(needle);
+  EXPECT_NE(at, std::string_view::npos) << needle;
+  return 1 + static_cast<std::uint32_t>(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+void expect_plan_error(std::string_view text, std::uint32_t line, std::string_view key,
+                       std::string_view fragment) {
+  try {
+    plan_of(text);
+    ADD_FAILURE() << "no scene_error for:\n" << text;
+  } catch (const scene_error& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(e.where().line, line) << m;
+    EXPECT_EQ(e.key(), key) << m;
+    EXPECT_NE(m.find(fmt::format("scene.toml:{}:", line)), std::string::npos) << m;
+    EXPECT_NE(m.find(fragment), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+}
+
+TEST(MakePlan, MinimalScene) {
+  const plan p = make_plan(parse_scene_file(QUADMC_SOURCE_DIR "/bench/scenes/minimal.toml"));
+  ASSERT_EQ(p.instances.size(), 1u);
+  EXPECT_EQ(p.instances[0].seed, stream_id({42, 0, 0}));
+  // Simpson in s = 3: the largest even n with (n+1)^3 ≤ N for N = 4^3 … 4^10 (integer cube
+  // roots 4, 6, 10, 16, 25, 40, 64, 101).
+  const auto simpson = cells_of(p, "simpson");
+  const std::uint64_t n[] = {2, 4, 8, 14, 24, 38, 62, 100};
+  ASSERT_EQ(simpson.size(), 8u);
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(simpson[i].per_axis, n[i]) << "N = " << simpson[i].nominal_N;
+    EXPECT_EQ(simpson[i].evaluations, (n[i] + 1) * (n[i] + 1) * (n[i] + 1));
+    EXPECT_EQ(simpson[i].repetitions, 1u) << "a rule runs once per N";
+    EXPECT_EQ(simpson[i].order, 4);
+  }
+  const auto mc = cells_of(p, "plain_mc");
+  ASSERT_EQ(mc.size(), 8u);
+  for (const auto& c : mc) {
+    EXPECT_EQ(c.evaluations, c.nominal_N);
+    EXPECT_EQ(c.repetitions, 64u);
+    EXPECT_EQ(c.stream_parts, (std::array<std::uint64_t, 4>{0, 0, 1, c.nominal_N}));
+  }
+  // 64 · 4^10 = 2^26 < 1e8: nothing is over budget, and no grid repeats.
+  EXPECT_TRUE(p.skips.empty());
+  EXPECT_TRUE(p.notes.empty());
+  const std::string listing = format_plan(p);
+  EXPECT_NE(listing.find("plan for scene 'example'"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("cells (16,"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("1030301"), std::string::npos) << listing;  // 101^3
+}
+
+// Every example scene shipped in bench/scenes parses and plans (the README points users there).
+TEST(MakePlan, EveryBundledSceneIsValid) {
+  std::size_t scenes = 0;
+  for (const auto& file : std::filesystem::directory_iterator(QUADMC_SOURCE_DIR "/bench/scenes")) {
+    if (file.path().extension() != ".toml") continue;
+    ++scenes;
+    try {
+      const plan p = make_plan(parse_scene_file(file.path()));
+      EXPECT_FALSE(p.cells.empty()) << file.path();
+      EXPECT_FALSE(format_plan(p).empty());
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << file.path() << ": " << e.what();
+    }
+  }
+  EXPECT_GE(scenes, 3u);
+}
+
+TEST(MakePlan, TensorVersusMcScene) {
+  const plan p = make_plan(parse_scene_file(QUADMC_SOURCE_DIR "/bench/scenes/tensor_vs_mc.toml"));
+  // Romberg and importance run on genz_gaussian_s1 only; in s = 8 the midpoint rule keeps one
+  // grid per integer 8th root: N = 16·4^k ≤ 262144 = 2^18 gives q = 1, 1, 2, 2, 2, 3, 4 (65536
+  // = 4^8 exactly), 4 → n = 1, 2, 3, 4, the rest skipped as repeats.
+  for (const auto& c : p.cells) {
+    const std::string& method = p.source.methods[c.method].name;
+    if (method == "romberg" || method == "importance") {
+      EXPECT_EQ(c.dimension, 1u) << method;
+    }
+  }
+  std::vector<std::uint64_t> n;
+  for (const auto& c : p.cells) {
+    if (c.instance == 0 && c.dimension == 8 && p.source.methods[c.method].name == "midpoint") {
+      n.push_back(c.per_axis);
+    }
+  }
+  EXPECT_EQ(n, (std::vector<std::uint64_t>{1, 2, 3, 4}));
+  ASSERT_NE(find_skip(p, "romberg × genz_gaussian_s8"), nullptr);
+  ASSERT_NE(find_skip(p, "output plots"), nullptr);
+}
+
+constexpr std::string_view base = R"(seed = 3
+[[integrand]]
+family = "genz_gaussian"
+dimension = 8
+[[method]]
+name = "midpoint"
+repetitions = 10
+[[method]]
+name = "plain_mc"
+repetitions = 100
+[budget]
+N = [256, 300, 6561, 65535]
+max_evaluations = 1e6
+)";
+
+TEST(MakePlan, DeterministicRulesRunOncePerNAndSayTheyIgnoreRepetitions) {
+  const plan p = plan_of(base);
+  for (const auto& c : cells_of(p, "midpoint")) EXPECT_EQ(c.repetitions, 1u);
+  ASSERT_EQ(p.notes.size(), 1u);
+  EXPECT_NE(p.notes[0].find("repetitions = 10 ignored"), std::string::npos) << p.notes[0];
+  EXPECT_NE(p.notes[0].find("scene.toml:7"), std::string::npos) << p.notes[0];
+}
+
+TEST(MakePlan, DuplicateGridsAreSkippedWithTheReason) {
+  // s = 8: 2^8 = 256 ≤ 300 < 3^8 = 6561 ≤ 65535 < 4^8 = 65536: N = 300 gives the grid of
+  // N = 256 and N = 65535 the grid of N = 6561.
+  const plan p = plan_of(base);
+  const auto mid = cells_of(p, "midpoint");
+  ASSERT_EQ(mid.size(), 2u);
+  EXPECT_EQ(mid[0].per_axis, 2u);
+  EXPECT_EQ(mid[1].per_axis, 3u);
+  const plan_skip* s = find_skip(p, "midpoint × genz_gaussian_s8, N = 300");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason, "same grid as N = 256 (n = 2 per axis, 256 evaluations)");
+  ASSERT_NE(find_skip(p, "midpoint × genz_gaussian_s8, N = 65535"), nullptr);
+}
+
+TEST(MakePlan, CellsOverTheBudgetAreSkippedWithTheReason) {
+  // plain_mc: N × 100 repetitions; 6561·100 = 656100 ≤ 1e6 < 65535·100.
+  const plan p = plan_of(base);
+  const auto mc = cells_of(p, "plain_mc");
+  ASSERT_EQ(mc.size(), 3u);
+  const plan_skip* s = find_skip(p, "plain_mc × genz_gaussian_s8, N = 65535");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason,
+            "65535 evaluations × 100 repetitions = 6553500 exceed budget.max_evaluations = "
+            "1000000");
+  // A tensor grid over the budget: trapezoid with (n+1)^8 points.
+  std::string t(base);
+  t.replace(t.find("\"midpoint\""), 10, "\"trapezoid\"");
+  t.replace(t.find("max_evaluations = 1e6"), 21, "max_evaluations = 1000");
+  const plan q = plan_of(t);
+  const plan_skip* g = find_skip(q, "trapezoid × genz_gaussian_s8, N = 6561");
+  ASSERT_NE(g, nullptr) << format_plan(q);
+  EXPECT_EQ(g->reason, "6561 evaluations exceed budget.max_evaluations = 1000");
+  EXPECT_EQ(cells_of(q, "trapezoid").size(), 1u);
+}
+
+TEST(MakePlan, TooSmallNForAnyGridIsSkipped) {
+  std::string t(base);
+  t.replace(t.find("\"midpoint\""), 10, "\"simpson\"");
+  const plan p = plan_of(t);  // Simpson needs 3^8 = 6561 points in s = 8
+  const plan_skip* s = find_skip(p, "simpson × genz_gaussian_s8, N = 256");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason, "N is below the smallest grid, 3^8 = 6561 evaluations");
+}
+
+TEST(MakePlan, JitteredCountsAreMappedToPerfectPowers) {
+  std::string t(base);
+  t.replace(t.find("\"plain_mc\""), 10, "\"jittered\"");
+  t.replace(t.find("dimension = 8"), 13, "dimension = 3");
+  t.replace(t.find("N = [256, 300, 6561, 65535]"), 27, "N = [4095, 4096, 4097]");
+  const plan p = plan_of(t);
+  const auto j = cells_of(p, "jittered");
+  ASSERT_EQ(j.size(), 2u);
+  EXPECT_EQ(j[0].per_axis, 15u);
+  EXPECT_EQ(j[0].evaluations, 3375u);
+  EXPECT_EQ(j[1].per_axis, 16u);
+  EXPECT_EQ(j[1].evaluations, 4096u);
+  EXPECT_NE(find_skip(p, "jittered × genz_gaussian_s3, N = 4097"), nullptr);
+}
+
+TEST(MakePlan, ExplicitPanelsReplaceTheLadder) {
+  const plan p = plan_of(R"([[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "simpson"
+panels = [2, 4, 6]
+[budget]
+N = [1000]
+)");
+  const auto c = cells_of(p, "simpson");
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[2].per_axis, 6u);
+  EXPECT_EQ(c[2].evaluations, 49u);
+  EXPECT_EQ(c[2].nominal_N, 49u);
+}
+
+TEST(MakePlan, EnsembleInstancesHaveTheirOwnSeedsAndCells) {
+  const plan p = plan_of(R"(seed = 9
+[[integrand]]
+family = "genz_gaussian"
+dimensions = [1, 2]
+ensemble = 3
+[[method]]
+name = "plain_mc"
+[budget]
+N = [10, 20]
+)");
+  ASSERT_EQ(p.instances.size(), 6u);
+  for (const auto& inst : p.instances) {
+    EXPECT_EQ(inst.seed, stream_id({9, inst.integrand, inst.instance}));
+    // Neither a nor u is given: both are drawn, with the catalogue's rule (catalogue.hpp).
+    const genz_parameters expected =
+        genz_random_parameters(genz_family::gaussian, inst.function.dimension(), inst.seed);
+    ASSERT_EQ(inst.drawn.size(), 2u);
+    EXPECT_EQ(inst.drawn.at("a"), expected.a);
+    EXPECT_EQ(inst.drawn.at("u"), expected.u);
+    EXPECT_EQ(inst.params.dimension, inst.integrand + 1);
+  }
+  EXPECT_EQ(p.cells.size(), 2u * 3u * 2u);
+  EXPECT_EQ(p.cells.back().stream_parts, (std::array<std::uint64_t, 4>{1, 2, 0, 20}));
+  EXPECT_EQ(p.total_evaluations, 3u * 32u * (10 + 20) * 2u);
+  EXPECT_NE(format_plan(p).find("drawn from seed"), std::string::npos);
+}
+
+TEST(MakePlan, OmittedDimensionIsResolvedFromTheFamily) {
+  const plan p = plan_of(R"([[integrand]]
+family = "sqrt"
+[[integrand]]
+family = "irradiance_hemisphere"
+[[method]]
+name = "midpoint"
+[budget]
+N = [16]
+)");
+  EXPECT_EQ(p.source.integrands[0].dimension, 1u);
+  EXPECT_EQ(p.source.integrands[1].dimension, 2u);
+  EXPECT_EQ(p.source.integrands[1].name, "irradiance_hemisphere");
+  ASSERT_EQ(p.cells.size(), 2u);
+  EXPECT_EQ(p.cells[0].per_axis, 16u);
+  EXPECT_EQ(p.cells[1].per_axis, 4u);  // 4^2 = 16
+  EXPECT_TRUE(p.instances[0].drawn.empty()) << "sqrt draws nothing";
+}
+
+TEST(MakePlan, IrradianceEstimatorsOnlyOnRenderingIntegrands) {
+  const plan p = plan_of(R"([[integrand]]
+family = "irradiance_area"
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "irradiance_light_area"
+[budget]
+N = [16]
+)");
+  ASSERT_EQ(p.cells.size(), 1u);
+  EXPECT_EQ(p.cells[0].integrand, 0u);
+  const plan_skip* s = find_skip(p, "irradiance_light_area × genz_gaussian_s2");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason,
+            "irradiance_light_area estimates irradiance; 'genz_gaussian' is not a rendering "
+            "integrand");
+}
+
+TEST(MakePlan, AnEnsembleWithNothingToDrawIsNoted) {
+  const plan p = plan_of(R"([[integrand]]
+family = "genz_gaussian"
+dimension = 1
+a = [2.0]
+u = [0.5]
+ensemble = 3
+[[method]]
+name = "plain_mc"
+[budget]
+N = [16]
+)");
+  ASSERT_EQ(p.notes.size(), 1u);
+  EXPECT_NE(p.notes[0].find("scene.toml:6: integrand[1]"), std::string::npos) << p.notes[0];
+  EXPECT_NE(p.notes[0].find("every instance is the same integrand"), std::string::npos);
+}
+
+constexpr std::string_view mixed = R"([[integrand]]
+family = "genz_gaussian"
+dimensions = [1, 3]
+name = "g"
+[[method]]
+name = "romberg"
+[[method]]
+name = "importance"
+warp = "exponential"
+[budget]
+N = [17]
+[output]
+plots = false
+)";
+
+TEST(MakePlan, ImplicitlyIncompatiblePairsAreSkipped) {
+  const plan p = plan_of(mixed);
+  ASSERT_EQ(p.cells.size(), 2u);  // romberg and importance on g_s1
+  EXPECT_EQ(p.cells[0].per_axis, 16u);
+  const plan_skip* r = find_skip(p, "romberg × g_s3");
+  ASSERT_NE(r, nullptr) << format_plan(p);
+  EXPECT_EQ(r->reason, "romberg is one-dimensional; the integrand has s = 3");
+  const plan_skip* w = find_skip(p, "importance_exponential × g_s3");
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->reason, "the 'exponential' warp is a 1D density; the integrand has s = 3");
+  const plan_skip* o = find_skip(p, "output plots");
+  ASSERT_NE(o, nullptr);
+  EXPECT_EQ(o->reason, "not asked for (output.plots = false)");
+}
+
+TEST(MakePlan, ExplicitlyImpossiblePairsAreErrors) {
+  // Naming `g` covers g_s1, which romberg can integrate: fine. Naming g_s3 alone is impossible.
+  EXPECT_NO_THROW(plan_of(
+      std::string(mixed).insert(mixed.find("[[method]]\nname = \"imp"), "integrands = [\"g\"]\n")));
+  std::string t(mixed);
+  t.insert(t.find("[[method]]\nname = \"imp"), "integrands = [\"g_s3\"]\n");
+  expect_plan_error(t, line_of(t, "integrands"), "method[1].integrands[1]",
+                    "romberg cannot integrate 'g_s3': romberg is one-dimensional");
+  t = mixed;
+  t.insert(t.find("[budget]"), "integrands = [\"g_s3\"]\n");
+  expect_plan_error(t, line_of(t, "integrands"), "method[2].integrands[1]",
+                    "importance_exponential cannot integrate 'g_s3': the 'exponential' warp is "
+                    "a 1D density");
+}
+
+TEST(MakePlan, CatalogueErrorsNameTheKey) {
+  constexpr std::string_view ok = R"(
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+a = [1.0, 2.0]
+[[method]]
+name = "midpoint"
+[budget]
+N = [16]
+)";
+  EXPECT_NO_THROW(plan_of(ok));
+  std::string t(ok);
+  t.replace(t.find("\"genz_gaussian\""), 15, "\"genz_gausian\"");
+  expect_plan_error(t, line_of(t, "family"), "integrand[1].family", "unknown family");
+  // A parameter the family does not take.
+  t = ok;
+  t.insert(t.find("[[method]]"), "colour = 3\n");
+  expect_plan_error(t, line_of(t, "colour"), "integrand[1].colour", "not a parameter of");
+  // A parameter the family takes, with a value it rejects (length ≠ s).
+  t = ok;
+  t.replace(t.find("a = [1.0, 2.0]"), 14, "a = [1.0, 2.0, 3.0]");
+  expect_plan_error(t, line_of(t, "a = "), "integrand[1].a", "a");
+}
+
+}  // namespace
+}  // namespace quadmc
