@@ -42,6 +42,12 @@ def plot_stem(name):
     return "".join(chr(b) if b in SAFE else "_" for b in name.encode("utf-8"))
 
 
+def plot_name(integrand, s):
+    """Same rule as quadmc's plot file names: "<stem>_s<s>", the suffix not repeated."""
+    stem, suffix = plot_stem(integrand), f"_s{s}"
+    return stem if stem.endswith(suffix) else stem + suffix
+
+
 def read_csv(path, required):
     try:
         with open(path, newline="", encoding="utf-8") as f:
@@ -148,12 +154,12 @@ def plot_folder(folder):
                 ax.plot([n0, n1], [e0, e0 * (n1 / n0) ** theory], "--", color=color,
                         linewidth=0.9, alpha=0.7)
                 theory_seen = True
-        stem = plot_stem(integrand)
-        finish(fig, ax, f"{folder}/{stem}_s{s}.svg", "N (integrand evaluations per estimate)",
+        name = plot_name(integrand, s)
+        finish(fig, ax, f"{folder}/{name}.svg", "N (integrand evaluations per estimate)",
                f"{integrand}, s = {s}: error against N", floor_seen, theory_seen)
-        finish(wfig, wax, f"{folder}/work_precision_{stem}_s{s}.svg", "seconds per estimate",
+        finish(wfig, wax, f"{folder}/work_precision_{name}.svg", "seconds per estimate",
                f"{integrand}, s = {s}: work-precision", floor_seen, False)
-        written += [f"{stem}_s{s}.svg", f"work_precision_{stem}_s{s}.svg"]
+        written += [f"{name}.svg", f"work_precision_{name}.svg"]
     return written
 
 

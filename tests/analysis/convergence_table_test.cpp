@@ -16,7 +16,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // A deterministic midpoint-like series: value = I + 0.1·N⁻² + a rounding floor of 4e-16 that
 // alternates in sign, N = 2^1 … 2^28, cells given in reverse order to check the sort.
 convergence_series midpoint_series() {
-  convergence_series series{"genz_gaussian", 1, "midpoint", "analytic", 0.5, {}};
+  convergence_series series{"genz_gaussian", 1, "midpoint", "analytic", 0.5, {}, "", 0};
   for (int k = 28; k >= 1; --k) {
     const double n = std::ldexp(1.0, k);
     const double value = 0.5 + 0.1 / (n * n) + (k % 2 == 0 ? 4e-16 : -4e-16);
@@ -53,7 +53,7 @@ TEST(ConvergenceTable, DeterministicSeriesWithFloor) {
 TEST(ConvergenceTable, MonteCarloSeriesUsesRmseAndCoverage) {
   // Four repetitions per N with errors ±c/√N (two each sign) and std_error c/√N: RMSE = c/√N
   // exactly, coverage 1 (|e| = se ≤ 1.96·se), slope −1/2 exactly.
-  convergence_series series{"genz_oscillatory", 2, "plain_mc", "analytic", 1.0, {}};
+  convergence_series series{"genz_oscillatory", 2, "plain_mc", "analytic", 1.0, {}, "", 0};
   for (int k = 4; k <= 12; ++k) {
     const double n = std::ldexp(1.0, k);
     const double se = 0.3 / std::sqrt(n);
@@ -82,7 +82,7 @@ TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
 }
 
 TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
-  convergence_series empty{"f", 1, "midpoint", "smooth", 1.0, {}};
+  convergence_series empty{"f", 1, "midpoint", "smooth", 1.0, {}, "", 0};
   EXPECT_THROW(analyse_convergence(empty), invalid_argument);
 
   convergence_series duplicate = midpoint_series();

@@ -36,8 +36,8 @@ struct temporary_directory {
 // A midpoint series with error c·N^rate (exact power law: CI half-width ~0) and time 1e-8·N,
 // plus a Monte Carlo series with rate −1/2.
 void write_folder(const fs::path& folder, double midpoint_rate, double time_factor) {
-  convergence_series rule{"genz_gaussian", 1, "midpoint", "analytic", 1.0, {}};
-  convergence_series mc{"genz_gaussian", 1, "plain_mc", "analytic", 1.0, {}};
+  convergence_series rule{"genz_gaussian", 1, "midpoint", "analytic", 1.0, {}, "", 0};
+  convergence_series mc{"genz_gaussian", 1, "plain_mc", "analytic", 1.0, {}, "", 0};
   for (int k = 2; k <= 12; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);

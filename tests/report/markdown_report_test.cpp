@@ -12,8 +12,8 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<convergence_table> sample_tables() {
-  convergence_series rule{"genz|odd", 1, "trapezoid", "analytic", 2.0, {}};
-  convergence_series mc{"genz|odd", 1, "plain_mc", "analytic", 2.0, {}};
+  convergence_series rule{"genz|odd", 1, "trapezoid", "analytic", 2.0, {}, "", 0};
+  convergence_series mc{"genz|odd", 1, "plain_mc", "analytic", 2.0, {}, "", 0};
   for (int k = 1; k <= 26; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
@@ -32,6 +32,10 @@ std::vector<convergence_table> sample_tables() {
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
   EXPECT_EQ(convergence_plot_file("genz_gaussian", 3), "genz_gaussian_s3.svg");
   EXPECT_EQ(work_precision_plot_file("genz_gaussian", 3), "work_precision_genz_gaussian_s3.svg");
+  // A `dimensions` expansion already names its integrands "<name>_s<s>": no second suffix.
+  EXPECT_EQ(convergence_plot_file("gaussian_s3", 3), "gaussian_s3.svg");
+  EXPECT_EQ(work_precision_plot_file("gaussian_s3", 3), "work_precision_gaussian_s3.svg");
+  EXPECT_EQ(convergence_plot_file("gaussian_s3", 4), "gaussian_s3_s4.svg");
   EXPECT_EQ(plot_stem("disk indicator/r=0.3"), "disk_indicator_r_0.3");
 }
 

@@ -32,7 +32,7 @@ struct temporary_directory {
 
 TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   const temporary_directory dir;
-  convergence_series s{"f", 2, "simpson", "smooth", 1.0, {}};
+  convergence_series s{"f", 2, "simpson", "smooth", 1.0, {}, "", 0};
   for (std::uint64_t n : {9u, 25u, 81u, 289u}) {
     s.cells.push_back(
         {n, {{1.0 + 1.0 / (n * n), std::numeric_limits<double>::quiet_NaN(), n, 1e-6}}});
@@ -56,7 +56,7 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
 
 TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
   const temporary_directory dir;
-  convergence_series s{"f", 1, "plain_mc", "smooth", 1.0, {}};
+  convergence_series s{"f", 1, "plain_mc", "smooth", 1.0, {}, "", 0};
   s.cells.push_back({16, {{1.1, 0.1, 16, 1e-6}}});
   const std::vector<convergence_table> tables = {analyse_convergence(s)};
   run_info info;

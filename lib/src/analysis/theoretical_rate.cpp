@@ -54,7 +54,7 @@ std::span<const std::string_view> smoothness_classes() noexcept {
 }
 
 theoretical_rate theoretical_slope(std::string_view method, std::string_view cls,
-                                   std::size_t dimension) {
+                                   std::size_t dimension, int order) {
   require(std::find(classes.begin(), classes.end(), cls) != classes.end(), "smoothness",
           std::string(cls), "one of analytic, smooth, C0, discontinuous, singular");
   require(dimension >= 1, "s", dimension, "a dimension >= 1");
@@ -73,6 +73,17 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
     // pbrt's unjittered stratified sampler puts one point at each cell centre: a midpoint grid.
     theoretical_rate rate = newton_cotes(2, cls, s);
     rate.note = "cell-centre grid = tensor midpoint rule; " + rate.note;
+    return rate;
+  }
+  if (method == "gauss_legendre" && order > 0) {
+    // Composite Gauss–Legendre with m nodes per panel and n panels: error O(n^-2m) for
+    // f ∈ C^2m (Davis & Rabinowitz, "Methods of Numerical Integration", §2.7), so a fixed m is an
+    // algebraic rule of order r = 2m, and a kink, jump or √x caps it like any composite rule.
+    theoretical_rate rate = newton_cotes(order, cls, s);
+    rate.note = fmt::format("composite Gauss–Legendre, order 2m = {}; ", order) + rate.note;
+    if (cls == "analytic" || cls == "smooth") {
+      rate.source = "Davis & Rabinowitz §2.7 (composite Gauss error O(n^-2m)); lecture §1.2";
+    }
     return rate;
   }
   if (method == "gauss_legendre" || method == "romberg") {
@@ -96,6 +107,12 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
     }
     return {std::nullopt, "not tabulated for Gauss–Legendre on this class",
             "ATAP Thm 19.3 bounds only"};
+  }
+  if (method.starts_with("irradiance_")) {
+    // Uniform-hemisphere, cosine-weighted and light-area sampling are importance sampling with
+    // bounded weights: finite variance, so σ/√N; only the constant σ differs (lecture §2.2.3).
+    return {-0.5, "importance sampling with bounded f/p: finite variance, σ/√N",
+            "lecture §2.2.3 and §4.1 (THEORY.md)"};
   }
   if (method == "plain_mc") {
     return {-0.5, "σ/√N, finite variance assumed", "lecture §2.2.2 (THEORY.md)"};

@@ -91,12 +91,22 @@ std::string plot_stem(std::string_view integrand) {
   return out;
 }
 
+namespace {
+// "<stem>_s<s>", without repeating the suffix when the name already carries it (the
+// `dimensions` expansion of a scene names its integrands "<name>_s<s>").
+std::string plot_name(std::string_view integrand, std::size_t s) {
+  const std::string stem = plot_stem(integrand);
+  const std::string suffix = fmt::format("_s{}", s);
+  return stem.ends_with(suffix) ? stem : stem + suffix;
+}
+}  // namespace
+
 std::string convergence_plot_file(std::string_view integrand, std::size_t s) {
-  return fmt::format("{}_s{}.svg", plot_stem(integrand), s);
+  return plot_name(integrand, s) + ".svg";
 }
 
 std::string work_precision_plot_file(std::string_view integrand, std::size_t s) {
-  return fmt::format("work_precision_{}_s{}.svg", plot_stem(integrand), s);
+  return "work_precision_" + plot_name(integrand, s) + ".svg";
 }
 
 std::string render_results_markdown(const run_info& info,

@@ -37,10 +37,14 @@ struct convergence_cell {
 struct convergence_series {
   std::string integrand;
   std::size_t s = 1;
-  std::string method;      // scene name, e.g. "midpoint"
+  std::string method;      // display name (the scene's label), e.g. "midpoint"
   std::string smoothness;  // quadmc::to_string(integrand_info::regularity)
   double reference = 0.0;  // integrand_info::exact
   std::vector<convergence_cell> cells;
+  // The catalogue name the theory table knows, e.g. "importance" for a label
+  // "importance_exponential"; empty = same as `method`.
+  std::string method_name;
+  int order = 0;           // the rule's order r where the name does not fix it (Gauss: 2m)
 };
 
 struct analysis_options {

@@ -33,8 +33,10 @@ struct theoretical_rate {
 
 // Throws invalid_argument for an unknown smoothness class or s = 0. An unknown method returns an
 // empty slope with the note "no entry for method …", so a new method never stops a run.
+// `order` is the rule's order r where the method's name does not fix it (gauss_legendre: 2m);
+// 0 when unknown.
 theoretical_rate theoretical_slope(std::string_view method, std::string_view smoothness,
-                                   std::size_t s);
+                                   std::size_t s, int order = 0);
 
 // The method names and smoothness classes the table knows, in table order.
 std::span<const std::string_view> tabulated_methods() noexcept;
