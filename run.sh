@@ -2,6 +2,7 @@
 # The two commands of the README, and the install step they share.
 #
 #   ./run.sh bench   install what is missing, build (Release), run the default scene → results/
+#                    (extra arguments go to `quadmc run`, e.g. --out DIR, --threads T)
 #   ./run.sh test    install what is missing, build, run every test with CTest
 #   ./run.sh deps    only install what is missing (idempotent: does nothing when all is present)
 #
@@ -18,8 +19,9 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libcli11-dev                    # CLI11 (command-line flags)
               libtomlplusplus-dev             # toml++ (scene files)
               librandom123-dev)               # Random123 (Philox counter-based RNG)
-# What only the benchmark command needs: plots (Debian's python3, not a pyenv one).
-BENCH_PACKAGES=(python3 python3-matplotlib)
+# What only the benchmark command needs: plots (Debian's python3, not a pyenv one) and the
+# peers measured beside quadmc in bench/peers/ (GSL, cubature).
+BENCH_PACKAGES=(python3 python3-matplotlib libgsl-dev libcubature-dev)
 
 install_missing() {
   local missing=()
@@ -42,7 +44,8 @@ case "${1:-}" in
     install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
     cmake --preset release >/dev/null
     cmake --build --preset release
-    ./build/release/bench/quadmc run bench/scenes/default.toml --out results/default
+    shift
+    ./build/release/bench/quadmc run bench/scenes/default.toml "$@"
     ;;
   test)
     install_missing "${LIB_PACKAGES[@]}"

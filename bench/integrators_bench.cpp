@@ -98,8 +98,9 @@ int main(int argc, char** argv) {
   using namespace quadmc;
   // Registered by hand so each benchmark is named method/integrand (s and threads as arguments).
   auto add = [](const char* name, auto fn, genz_family family) {
-    benchmark::RegisterBenchmark(name, [=](benchmark::State& state) { fn(state, family); })
-        ->Apply(dimensions_and_threads);
+    benchmark::RegisterBenchmark(name, [=](benchmark::State& state) {
+      fn(state, family);
+    })->Apply(dimensions_and_threads);
   };
   add("plain_mc/genz_oscillatory", monte_carlo_bench<genz_oscillatory, independent_points>,
       genz_family::oscillatory);

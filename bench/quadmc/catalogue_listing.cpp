@@ -16,7 +16,8 @@ std::string catalogue_listing() {
   fmt::format_to(line, "integrands ([[integrand]] family = …):\n");
   for (const auto& e : quadmc::integrand_catalogue()) {
     fmt::format_to(line, "  {:<24} {:<14} {}\n", e.name, e.smoothness, e.description);
-    if (!e.parameters.empty()) fmt::format_to(line, "  {:<24} {:<14} keys: {}\n", "", "", e.parameters);
+    if (!e.parameters.empty())
+      fmt::format_to(line, "  {:<24} {:<14} keys: {}\n", "", "", e.parameters);
   }
   fmt::format_to(line, "\nmethods ([[method]] name = …):\n");
   for (const auto& m : quadmc::method_catalogue()) {
@@ -42,10 +43,9 @@ std::string slope_summary(std::span<const quadmc::convergence_table> tables) {
   fmt::format_to(line, "{:<28} {:>2}  {:<30} {:>22}  {:>8}  {}\n", "integrand", "s", "method",
                  "slope [95% CI]", "theory", "verdict");
   for (const auto& t : tables) {
-    const std::string slope =
-        t.fit.ok()
-            ? fmt::format("{:+.3f} [{:+.3f}, {:+.3f}]", t.fit.slope, t.fit.ci_low, t.fit.ci_high)
-            : std::string("(too few points)");
+    const std::string slope = t.fit.ok() ? fmt::format("{:+.3f} [{:+.3f}, {:+.3f}]", t.fit.slope,
+                                                       t.fit.ci_low, t.fit.ci_high)
+                                         : std::string("(too few points)");
     const std::string theory =
         t.theory.slope ? fmt::format("{:+.3f}", *t.theory.slope) : std::string("—");
     fmt::format_to(line, "{:<28} {:>2}  {:<30} {:>22}  {:>8}  {}\n", t.integrand, t.s, t.method,

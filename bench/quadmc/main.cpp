@@ -16,8 +16,8 @@
 #include "progress_bar.hpp"
 #include "subprocess.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -35,8 +35,42 @@ std::string machine_description() {
   return fmt::format("{} hardware threads", std::thread::hardware_concurrency());
 }
 
+// The folder a run writes, absolute and without a trailing separator: with "out/" filename() is
+// empty, so the staging folder "out/.partial" would land inside the target and be deleted with it;
+// with "." the target would be the working directory itself. Checked before the run, so a refusal
+// costs nothing: an existing folder is replaced only when it holds nothing but files a run writes
+// (CSV, README.md, SVG plots), so `--out .` or `--out ~` is an error, not a deleted folder.
+fs::path results_folder(const std::string& out_dir, const std::string& scene_name) {
+  const fs::path given = out_dir.empty() ? fs::path("results") / scene_name : fs::path(out_dir);
+  fs::path folder = fs::absolute(given).lexically_normal();
+  if (!folder.has_filename()) folder = folder.parent_path();  // "/a/out/" → "/a/out"
+  if (!folder.has_filename() || folder == folder.root_path()) {
+    throw quadmc::invalid_argument("--out", given.string(), "a folder below the file system root");
+  }
+  std::error_code ec;
+  const fs::file_status status = fs::status(folder, ec);
+  if (!fs::exists(status)) return folder;
+  if (!fs::is_directory(status)) {
+    throw quadmc::invalid_argument("--out", given.string(), "a folder, not a file");
+  }
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const fs::path name = entry.path().filename();
+    const bool written_by_a_run = name == "convergence.csv" || name == "slopes.csv" ||
+                                  name == "README.md" || name.extension() == ".svg";
+    if (!written_by_a_run) {
+      throw quadmc::invalid_argument(
+          "--out", given.string(),
+          fmt::format("a new folder or an earlier results folder; it holds '{}', which a run does "
+                      "not write, so it is not replaced",
+                      name.string()));
+    }
+  }
+  return folder;
+}
+
 // Writes the results into a fresh sibling folder and moves it into place only when everything
-// (CSV, Markdown, plots) succeeded: a failed run never leaves files claiming success.
+// (CSV, Markdown, plots) succeeded: a failed run never leaves files claiming success, and the
+// staging folder is removed when a step fails.
 void write_results(const quadmc::plan& p, const quadmc::run_output& out,
                    const std::vector<quadmc::convergence_table>& tables, const fs::path& folder) {
   quadmc::run_info info;
@@ -54,18 +88,25 @@ void write_results(const quadmc::plan& p, const quadmc::run_output& out,
   quadmc::results_outputs outputs;
   outputs.csv = p.source.output.csv;
   outputs.markdown = p.source.output.markdown;
-  quadmc::write_results_folder(staging, info, tables, outputs);
-  if (p.source.output.plots) {
-    const auto argv = quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, staging);
-    quadmc_cli::run_subprocess(argv);
+  try {
+    quadmc::write_results_folder(staging, info, tables, outputs);
+    if (p.source.output.plots) {
+      const auto argv = quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, staging);
+      quadmc_cli::run_subprocess(argv);
+    }
+    fs::remove_all(folder);
+    fs::rename(staging, folder);
+  } catch (...) {
+    std::error_code ignored;  // the first error is the one to report
+    fs::remove_all(staging, ignored);
+    throw;
   }
-  fs::remove_all(folder);
-  fs::rename(staging, folder);
 }
 
 int run_command(const std::string& scene_file, const std::string& out_dir, unsigned threads) {
   const quadmc::scene scene = quadmc::parse_scene_file(scene_file);
   const quadmc::plan p = quadmc::make_plan(scene);
+  const fs::path folder = results_folder(out_dir, scene.name);
   fmt::print("{}\n", quadmc::format_plan(p));
   std::fflush(stdout);
 
@@ -80,7 +121,6 @@ int run_command(const std::string& scene_file, const std::string& out_dir, unsig
   tables.reserve(out.series.size());
   for (const auto& series : out.series) tables.push_back(quadmc::analyse_convergence(series));
 
-  const fs::path folder = out_dir.empty() ? fs::path("results") / scene.name : fs::path(out_dir);
   write_results(p, out, tables, folder);
   fmt::print("{}\n", quadmc_cli::slope_summary(tables));
   fmt::print("ran {} cells in {:.1f} s on {} threads; wrote {}\n", p.cells.size(), out.seconds,
@@ -109,7 +149,8 @@ int main(int argc, char** argv) {
   std::string scene_file;
   std::string out_dir;
   unsigned threads = 0;
-  auto* run = app.add_subcommand("run", "Run a scene and write results/<name>/ (CSV, Markdown, plots)");
+  auto* run =
+      app.add_subcommand("run", "Run a scene and write results/<name>/ (CSV, Markdown, plots)");
   run->add_option("scene", scene_file, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
   run->add_option("--out", out_dir, "Output folder (default: results/<scene name>)");
   run->add_option("--threads", threads, "Threads (default: the scene's; 0 = all cores)");

@@ -28,11 +28,10 @@ void progress_bar::update(const quadmc::run_progress& progress) {
   }
   last_draw_ = now;
   // Progress by evaluations, not cells: the last cells of a ladder hold most of the work.
-  const double fraction =
-      progress.evaluations_total == 0
-          ? 1.0
-          : std::min(1.0, static_cast<double>(progress.evaluations_done) /
-                              static_cast<double>(progress.evaluations_total));
+  const double fraction = progress.evaluations_total == 0
+                              ? 1.0
+                              : std::min(1.0, static_cast<double>(progress.evaluations_done) /
+                                                  static_cast<double>(progress.evaluations_total));
   const int filled = static_cast<int>(fraction * width);
   fmt::print(stderr, "\r[{}{}] {:5.1f}%  cell {}/{}  {:.0f} s", std::string(filled, '#'),
              std::string(width - filled, ' '), 100.0 * fraction, progress.cells_done,

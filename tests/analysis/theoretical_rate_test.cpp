@@ -81,7 +81,8 @@ TEST(TheoreticalRate, UnknownMethodHasNoEntryUnknownClassThrows) {
 
 TEST(TheoreticalRate, CompositeGaussLegendreWithKnownOrder) {
   // m = 3 nodes per panel: order 2m = 6 on smooth f, N = (3n)^s (Davis & Rabinowitz §2.7).
-  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "analytic", 1, 6).slope.value(), -6.0);
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "analytic", 1, 6).slope.value(),
+                   -6.0);
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "smooth", 2, 6).slope.value(), -3.0);
   // A jump or a kink caps it like any composite rule.
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "discontinuous", 1, 6).slope.value(),
@@ -90,8 +91,8 @@ TEST(TheoreticalRate, CompositeGaussLegendreWithKnownOrder) {
 }
 
 TEST(TheoreticalRate, IrradianceEstimatorsAreMonteCarlo) {
-  for (const char* m : {"irradiance_hemisphere_uniform", "irradiance_hemisphere_cosine",
-                        "irradiance_light_area"}) {
+  for (const char* m :
+       {"irradiance_hemisphere_uniform", "irradiance_hemisphere_cosine", "irradiance_light_area"}) {
     EXPECT_DOUBLE_EQ(quadmc::theoretical_slope(m, "discontinuous", 2).slope.value(), -0.5) << m;
   }
 }

@@ -42,7 +42,8 @@ void write(const fs::path& file, const std::string& text) {
 // Two series: a deterministic rule (no std_error, coverage empty) with an awkward integrand name,
 // and a Monte Carlo method with coverage.
 std::vector<convergence_table> sample_tables() {
-  convergence_series rule{"step, \"shifted\"", 1, "midpoint", "discontinuous", 1.0 / 3.0, {}, "", 0};
+  convergence_series rule{"step, \"shifted\"", 1,  "midpoint", "discontinuous",
+                          1.0 / 3.0,           {}, "",         0};
   convergence_series mc{"genz_gaussian", 2, "plain_mc", "analytic", 0.7, {}, "", 0};
   for (int k = 2; k <= 6; ++k) {
     const double n = std::ldexp(1.0, k);

@@ -44,7 +44,7 @@ struct convergence_series {
   // The catalogue name the theory table knows, e.g. "importance" for a label
   // "importance_exponential"; empty = same as `method`.
   std::string method_name;
-  int order = 0;           // the rule's order r where the name does not fix it (Gauss: 2m)
+  int order = 0;  // the rule's order r where the name does not fix it (Gauss: 2m)
 };
 
 struct analysis_options {

@@ -14,8 +14,7 @@ class any_integrand {
  public:
   template <integrand F>
   explicit any_integrand(F f)
-      : self_(std::make_shared<const model<F>>(std::move(f))),
-        info_(self_->info()) {}
+      : self_(std::make_shared<const model<F>>(std::move(f))), info_(self_->info()) {}
 
   std::size_t dimension() const noexcept { return info_.dimension(); }
   void evaluate(std::span<const double> x, std::span<double> y) const { self_->evaluate(x, y); }

@@ -37,11 +37,16 @@ enum class smoothness {
 
 constexpr const char* to_string(smoothness s) noexcept {
   switch (s) {
-    case smoothness::analytic: return "analytic";
-    case smoothness::smooth: return "smooth";
-    case smoothness::c0: return "C0";
-    case smoothness::discontinuous: return "discontinuous";
-    case smoothness::singular: return "singular";
+    case smoothness::analytic:
+      return "analytic";
+    case smoothness::smooth:
+      return "smooth";
+    case smoothness::c0:
+      return "C0";
+    case smoothness::discontinuous:
+      return "discontinuous";
+    case smoothness::singular:
+      return "singular";
   }
   return "?";
 }
@@ -57,15 +62,17 @@ struct box {
     for (std::size_t j = 0; j < lower.size(); ++j) v *= upper[j] - lower[j];
     return v;
   }
-  static box unit(std::size_t s) { return box{std::vector<double>(s, 0.0), std::vector<double>(s, 1.0)}; }
+  static box unit(std::size_t s) {
+    return box{std::vector<double>(s, 0.0), std::vector<double>(s, 1.0)};
+  }
 };
 
 struct integrand_info {
-  std::string name;         // catalogue name as used in scenes, e.g. "genz_gaussian"
-  std::string formula;      // one line, for `quadmc list` and the README catalogue
-  box domain;               // integration domain; its dimension is s
-  double exact = NAN;       // the reference value ∫ f over the domain
-  std::string reference;    // how `exact` was obtained, e.g. "closed form", "Lambert polygon"
+  std::string name;       // catalogue name as used in scenes, e.g. "genz_gaussian"
+  std::string formula;    // one line, for `quadmc list` and the README catalogue
+  box domain;             // integration domain; its dimension is s
+  double exact = NAN;     // the reference value ∫ f over the domain
+  std::string reference;  // how `exact` was obtained, e.g. "closed form", "Lambert polygon"
   smoothness regularity = smoothness::analytic;
   int continuous_derivatives = -1;  // k for smoothness::smooth (C^k); -1 = not applicable
   // M_k = max over the domain of |∂^k f| along one coordinate (1D: |f^(k)|), k = 0…4, where
@@ -91,7 +98,8 @@ inline void check_finite_batch(std::string_view name, std::span<const double> x,
                                std::span<const double> y, std::size_t s) {
   bool all_finite = true;
   for (double v : y) all_finite &= std::isfinite(v);
-  if (all_finite) [[likely]] return;
+  if (all_finite) [[likely]]
+    return;
   for (std::size_t i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i])) throw non_finite_value(name, x.subspan(i * s, s), y[i]);
   }
