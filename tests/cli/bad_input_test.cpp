@@ -1,0 +1,133 @@
+// Bad scene files through `quadmc run`: each must fail with a non-zero exit status and ONE line
+// on stderr, "quadmc: <file>:<line>:<col>: key '<key>': …" (scene/parse.hpp), and leave no
+// results folder and no "<folder>.partial" behind (the command writes only after a successful
+// run, bench/quadmc/main.cpp).
+//
+// Use these for what a user sees on a mistake; the parser's own tests (tests/scene) cover every
+// rule with parse_scene in memory. Not for valid scenes (run_test.cpp).
+#include "quadmc_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace quadmc_cli_test {
+namespace {
+
+// The valid remainder most cases below add one mistake to.
+const std::string valid_tables = R"([[integrand]]
+family = "exp"
+
+[[method]]
+name = "simpson"
+
+[budget]
+N = [8, 16]
+
+[output]
+plots = false
+)";
+
+// Runs `quadmc run scene.toml` (default output folder results/<name>, in the scratch folder) on
+// `text` and checks the failure: exit status 1, one stderr line starting with the file and
+// `line`, naming `key` when there is one, and nothing written beside the scene file.
+void expect_scene_error(const std::string& text, int line, const std::optional<std::string>& key,
+                        const std::string& also = "") {
+  scratch_folder dir;
+  const fs::path scene = dir / "scene.toml";
+  write_text(scene, text);
+  const command_result r = run_quadmc(dir, {"run", scene.string()});
+  EXPECT_EQ(r.exit_status, 1) << describe(r);
+  EXPECT_FALSE(r.err.empty()) << describe(r);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected\n"
+                                                             << describe(r);
+  EXPECT_EQ(r.err.back(), '\n') << describe(r);
+  const std::string where = "quadmc: " + scene.string() + ":" + std::to_string(line) + ":";
+  EXPECT_EQ(r.err.rfind(where, 0), 0u) << "expected the line to start with " << where << "\n"
+                                       << describe(r);
+  if (key) {
+    EXPECT_NE(r.err.find("key '" + *key + "'"), std::string::npos) << "key " << *key << "\n"
+                                                                   << describe(r);
+  }
+  if (!also.empty()) {
+    EXPECT_NE(r.err.find(also), std::string::npos) << also << "\n" << describe(r);
+  }
+  // No results/<name>/, no results/<name>.partial/, no --out folder: only the scene file.
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.toml"}) << describe(r);
+}
+
+TEST(BadInputTest, EmptySceneFile) {
+  expect_scene_error("", 1, std::nullopt, "empty scene");
+}
+
+TEST(BadInputTest, FileTruncatedInsideATable) {
+  // A scene cut inside [budget]'s N array: the TOML parser reports where the file ended.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n\n[[method]]\nname = \"simpson\"\n\n"
+      "[budget]\nN = [8, 16,",
+      8, std::nullopt, "end-of-file");
+}
+
+TEST(BadInputTest, FileTruncatedBeforeARequiredTable) {
+  // Cut after [[method]]: valid TOML, but [budget] never came.
+  expect_scene_error("[[integrand]]\nfamily = \"exp\"\n\n[[method]]\nname = \"simpson\"\n", 1,
+                     "budget");
+}
+
+TEST(BadInputTest, UnknownTopLevelKey) {
+  expect_scene_error("name = \"bad\"\nseed = 1\ncolour = \"blue\"\n" + valid_tables, 3, "colour",
+                     "unknown key");
+}
+
+TEST(BadInputTest, UnknownKeyInMethod) {
+  // Line 6: the key after [[method]] and its name (valid_tables' lines 4–5).
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n\n[[method]]\nname = \"simpson\"\n"
+      "colour = 3\n\n[budget]\nN = [8, 16]\n",
+      6, "method[1].colour", "unknown key");
+}
+
+TEST(BadInputTest, WrongTypeOfSeed) {
+  expect_scene_error("seed = \"x\"\n" + valid_tables, 1, "seed", "\"x\"");
+}
+
+TEST(BadInputTest, NegativeRepetitions) {
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n\n[[method]]\nname = \"plain_mc\"\n"
+      "repetitions = -3\n\n[budget]\nN = [8, 16]\n",
+      6, "method[1].repetitions", "-3");
+}
+
+TEST(BadInputTest, NegativeThreads) {
+  expect_scene_error("name = \"bad\"\nthreads = -1\n" + valid_tables, 2, "threads", "-1");
+}
+
+TEST(BadInputTest, SimpsonWithOddPanels) {
+  // Composite Simpson pairs panels: n must be even (Burden & Faires §4.4).
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n\n[[method]]\nname = \"simpson\"\n"
+      "panels = [4, 7]\n\n[budget]\nN = [8, 16]\n",
+      6, "method[1].panels[2]", "7");
+}
+
+TEST(BadInputTest, UnknownFamily) {
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"expo\"\n\n[[method]]\nname = \"simpson\"\n\n"
+      "[budget]\nN = [8, 16]\n",
+      2, "integrand[1].family", "expo");
+}
+
+TEST(BadInputTest, NonexistentSceneFile) {
+  // CLI11's ExistingFile check answers before quadmc does (its own message and exit code).
+  scratch_folder dir;
+  const command_result r = run_quadmc(dir, {"run", (dir / "missing.toml").string()});
+  EXPECT_NE(r.exit_status, 0) << describe(r);
+  EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << describe(r);
+  EXPECT_TRUE(dir.entries().empty()) << describe(r);
+}
+
+}  // namespace
+}  // namespace quadmc_cli_test
