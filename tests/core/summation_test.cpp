@@ -174,4 +174,19 @@ TEST(PairwiseSum, AddsEveryTermExactlyOnceForEverySize) {
   }
 }
 
+// The accumulator names are the scene key's values (parse.hpp `accumulator`): each spelling maps
+// back to its enumerator, and anything else is refused (nullopt), never a silent default.
+TEST(Summation, PolicyNamesRoundTrip) {
+  using quadmc::summation;
+  for (summation s :
+       {summation::pairwise, summation::neumaier, summation::naive, summation::long_double}) {
+    EXPECT_EQ(quadmc::parse_summation(quadmc::to_string(s)), s) << quadmc::to_string(s);
+  }
+  EXPECT_EQ(quadmc::to_string(summation::long_double), "long_double");
+  EXPECT_FALSE(quadmc::parse_summation("kahan").has_value());
+  EXPECT_FALSE(quadmc::parse_summation("").has_value());
+  EXPECT_FALSE(quadmc::parse_summation("Naive").has_value());
+  static_assert(quadmc::parse_summation("neumaier") == summation::neumaier);
+}
+
 }  // namespace

@@ -176,6 +176,69 @@ max_seconds = 60)"));
   EXPECT_EQ(sc.budget.max_seconds, 60.0);
 }
 
+// `accumulator` on a tensor rule: parsed into enum summation, and the default label gets the
+// accumulator's name so that the same rule with two accumulators gives two series.
+TEST(ParseScene, AccumulatorKeyMakesItsOwnSeries) {
+  const scene sc = parse(replace(valid, "[budget]", R"([[method]]
+name = "simpson"
+accumulator = "naive"
+[[method]]
+name = "gauss_legendre"
+accumulator = "long_double"
+[budget])"));
+  ASSERT_EQ(sc.methods.size(), 4u);
+  EXPECT_EQ(sc.methods[0].accumulator, summation::pairwise) << "the default";
+  EXPECT_FALSE(sc.methods[0].accumulator_given);
+  EXPECT_EQ(sc.methods[0].label, "simpson");
+  EXPECT_EQ(sc.methods[2].accumulator, summation::naive);
+  EXPECT_EQ(sc.methods[2].label, "simpson_naive");
+  EXPECT_EQ(sc.methods[3].accumulator, summation::long_double);
+  EXPECT_EQ(sc.methods[3].label, "gauss_legendre_long_double");
+}
+
+TEST(SceneErrors, AccumulatorValueTypeAndMethod) {
+  std::string t =
+      replace(valid, "name = \"simpson\"", "name = \"simpson\"\naccumulator = \"kahan\"");
+  std::string m = expect_error(t, line_of(t, "accumulator"), "method[1].accumulator");
+  EXPECT_NE(m.find("one of: pairwise, neumaier, naive, long_double"), std::string::npos) << m;
+  t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\naccumulator = 3");
+  expect_error(t, line_of(t, "accumulator"), "method[1].accumulator");
+  // Monte Carlo's accumulation is fixed (Neumaier + Welford): the key is unknown there.
+  t = replace(valid, "repetitions = 8", "repetitions = 8\naccumulator = \"naive\"");
+  m = expect_error(t, line_of(t, "accumulator"), "method[2].accumulator");
+  EXPECT_NE(m.find("unknown key in a 'plain_mc' method"), std::string::npos) << m;
+}
+
+// Found by the scene fuzzer (tests/fuzz/regressions/): toml++ 3.3.0 has undefined behaviour on
+// U+00A1…U+0499 and three other blocks (§, π, é…) in some positions. The parser hands toml++
+// private-use stand-ins instead and maps them back: the error is toml++'s ordinary one, naming the
+// original character at its line and column, and strings keep their characters.
+TEST(SceneErrors, NonAsciiCharactersTomlPlusPlusCannotClassify) {
+  std::string t = replace(valid, "name = \"plain_mc\"", "name = \"plain_mc\"\u00a7");
+  std::string m = expect_error(t, line_of(t, "plain_mc"), "");
+  EXPECT_NE(m.find(fmt::format("scene.toml:{}:18: ", line_of(t, "plain_mc"))), std::string::npos)
+      << m;
+  EXPECT_NE(m.find("saw '\u00a7'"), std::string::npos) << m;
+  t = replace(valid, "seed = 7", "\u03c0 = 7");
+  m = expect_error(t, line_of(t, "= 7"), "");
+  EXPECT_NE(m.find("\u03c0"), std::string::npos) << m;
+  // A quoted key keeps its π in the unknown-key message.
+  t = replace(valid, "seed = 7", "\"\u03c0\" = 7");
+  m = expect_error(t, line_of(t, "= 7"), "\u03c0");
+  EXPECT_NE(m.find("key '\u03c0': unknown key"), std::string::npos) << m;
+  // Private-use characters of the stand-in block are refused, by position.
+  t = replace(valid, "seed = 7", "seed = 7 # \ue006");
+  m = expect_error(t, line_of(t, "seed"), "");
+  EXPECT_NE(m.find("private-use character U+E006"), std::string::npos) << m;
+  // Inside strings of every kind and in comments they are kept as written.
+  std::string ok = replace(valid, "name = \"t\"", R"(name = "t"  # σ·N ≈ 10⁻⁷ — § é fine
+description = """π ≈ 3.14 "quoted" \"""
+and "" more ’ ε """)");
+  ok = replace(ok, "family = \"genz_gaussian\"", "family = 'genz_gaussian'  # § after a literal");
+  const scene sc = parse(ok);
+  EXPECT_EQ(sc.description, "π ≈ 3.14 \"quoted\" \"\"\"\nand \"\" more ’ ε ");
+}
+
 TEST(SceneErrors, TheIssuesExampleMessageExactly) {
   const std::string text = replace(valid, "repetitions = 8", "repetitions = -3");
   const std::string message = expect_error(text, 10, "method[2].repetitions");

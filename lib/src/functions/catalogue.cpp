@@ -7,6 +7,7 @@
 #include "quadmc/functions/irradiance.hpp"
 #include "quadmc/functions/keister.hpp"
 #include "quadmc/functions/sobol_g.hpp"
+#include "quadmc/functions/stability_1d.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -35,7 +36,7 @@ constexpr std::string_view genz_doc =
     "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b); "
     "u: shift in [0,1], length s (default: drawn from seed)";
 
-const std::array<catalogue_entry, 19> entries = {{
+const std::array<catalogue_entry, 26> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc},
     {"genz_product_peak", "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys,
@@ -64,7 +65,8 @@ const std::array<catalogue_entry, 19> entries = {{
      "c: the kink, in [0, 1] (default 0.3); dimension 1"},
     {"step", "1 if x ≥ c else 0 on [0, 1]", "discontinuous", no_keys, c_key,
      "c: the jump, in [0, 1] (default 0.3); dimension 1"},
-    {"disk_indicator", "1 if ‖x − center‖ ≤ r else 0 on [0,1]^s (disk for s = 2, ball otherwise)", "discontinuous", center_key, r_key,
+    {"disk_indicator", "1 if ‖x − center‖ ≤ r else 0 on [0,1]^s (disk for s = 2, ball otherwise)",
+     "discontinuous", center_key, r_key,
      "center: length s (default all 0.5); r: radius > 0 (default 0.45); the ball must lie "
      "inside the cube"},
     {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
@@ -80,6 +82,22 @@ const std::array<catalogue_entry, 19> entries = {{
     {"irradiance_area", "L·A·V·cosθ·cosθ'/|x − x'|² on [0,1]², light parameters (s, t)",
      "analytic (discontinuous with occluder)", no_keys, irradiance_keys,
      "occluder: 0 or 1 (default 0); radiance: L > 0 (default 1); dimension 2"},
+    // Floating-point stress members (stability_1d.hpp).
+    {"shifted_exp", "e^((x − lower)/w)/w on [lower, upper], w = upper − lower; ∫ = e − 1",
+     "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1), any finite box with a finite width; dimension 1"},
+    {"cosc_naive", "(1 − cos x)/x² on [0, 1], computed as written (cancellation near 0)",
+     "analytic", no_keys, no_keys, "no parameters; dimension 1"},
+    {"cosc_stable", "2·sin²(x/2)/x² on [0, 1], the same function without cancellation", "analytic",
+     no_keys, no_keys, "no parameters; dimension 1"},
+    {"inverse_sqrt", "1/√x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
+     "no parameters; dimension 1"},
+    {"log", "log x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
+     "no parameters; dimension 1"},
+    {"exp_float", "eˣ on [lower, upper] evaluated in float", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1); dimension 1"},
+    {"inverse_quadratic_float", "1/(1 + x²) on [0, 1] evaluated in float", "analytic", no_keys,
+     no_keys, "no parameters; dimension 1"},
 }};
 
 bool contains(std::span<const std::string_view> keys, std::string_view key) {
@@ -197,7 +215,9 @@ any_integrand make_integrand(std::string_view name, const integrand_params& p) {
     return make_genz<genz_discontinuous>(genz_family::discontinuous, p);
   }
   if (name == "poly" || name == "exp" || name == "sin" || name == "inverse_quadratic" ||
-      name == "sqrt" || name == "abs_kink" || name == "step") {
+      name == "sqrt" || name == "abs_kink" || name == "step" || name == "shifted_exp" ||
+      name == "cosc_naive" || name == "cosc_stable" || name == "inverse_sqrt" || name == "log" ||
+      name == "exp_float" || name == "inverse_quadratic_float") {
     require_fixed_dimension(p, 1, name);
   }
   if (name == "poly")
@@ -212,6 +232,17 @@ any_integrand make_integrand(std::string_view name, const integrand_params& p) {
   if (name == "sqrt") return any_integrand(sqrt_1d{});
   if (name == "abs_kink") return any_integrand(abs_kink_1d(scalar_or(p, "c", 0.3)));
   if (name == "step") return any_integrand(step_1d(scalar_or(p, "c", 0.3)));
+  if (name == "shifted_exp") {
+    return any_integrand(shifted_exp_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
+  }
+  if (name == "cosc_naive") return any_integrand(cosc_naive_1d{});
+  if (name == "cosc_stable") return any_integrand(cosc_stable_1d{});
+  if (name == "inverse_sqrt") return any_integrand(inverse_sqrt_1d{});
+  if (name == "log") return any_integrand(log_1d{});
+  if (name == "exp_float") {
+    return any_integrand(exp_float_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
+  }
+  if (name == "inverse_quadratic_float") return any_integrand(inverse_quadratic_float_1d{});
   if (name == "disk_indicator") {
     const std::size_t s = dimension_or(p, 1);
     return any_integrand(ball_indicator(

@@ -16,9 +16,11 @@ using sv = std::string_view;
 // Option keys per family of methods. `repetitions` is accepted by the rules too: the plan then
 // says that it is ignored (a rule is deterministic), rather than rejecting a scene that sets a
 // repetition count once for a list of methods.
-constexpr std::array<sv, 5> rule_options{"name", "label", "integrands", "repetitions", "panels"};
-constexpr std::array<sv, 6> gauss_options{"name",        "label",  "integrands",
-                                          "repetitions", "panels", "m"};
+// `accumulator`: how a tensor rule sums its terms (core/summation.hpp, enum summation).
+constexpr std::array<sv, 6> rule_options{"name",        "label",  "integrands",
+                                         "repetitions", "panels", "accumulator"};
+constexpr std::array<sv, 7> gauss_options{"name",   "label", "integrands", "repetitions",
+                                          "panels", "m",     "accumulator"};
 constexpr std::array<sv, 4> romberg_options{"name", "label", "integrands", "repetitions"};
 constexpr std::array<sv, 4> random_options{"name", "label", "integrands", "repetitions"};
 constexpr std::array<sv, 6> importance_options{"name",        "label", "integrands",

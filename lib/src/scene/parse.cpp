@@ -39,6 +39,135 @@ std::string describe(const toml::node& n) {
   return "a date/time";
 }
 
+// toml++ 3.3.0 has undefined behaviour on 3019 code points: its generated
+// is_non_ascii_horizontal_whitespace() reaches __builtin_unreachable() for U+00A1…U+0499,
+// U+2C5E…U+2FFF, U+3001…U+3057 and U+FB26…U+FEFE (found by the scene fuzzer, tests/fuzz/, on
+// `name = "x"§`; the ranges come from calling it on every code point). They include π, σ, ε, é, §
+// and ·, which scene descriptions and comments use. So toml++ never sees them: each is replaced by
+// a stand-in from the private-use area U+E000…U+EBCA, on which that function is defined, and every
+// string taken from the parsed document (values, keys, toml++'s messages) is mapped back. The
+// mapping is one-to-one, and line/column positions do not move (one code point for one).
+// Private-use characters of that block in the file itself would be ambiguous: they are an error.
+struct code_point_range {
+  char32_t first, last;
+};
+constexpr std::array<code_point_range, 4> toml_unsafe{
+    {{0x00A1, 0x0499}, {0x2C5E, 0x2FFF}, {0x3001, 0x3057}, {0xFB26, 0xFEFE}}};
+constexpr char32_t stand_in_base = 0xE000;
+constexpr char32_t stand_in_count = 3019;  // Σ (last − first + 1) over toml_unsafe
+
+constexpr char32_t stand_in_for(char32_t c) noexcept {  // 0 when c is safe
+  char32_t offset = 0;
+  for (const code_point_range& r : toml_unsafe) {
+    if (c >= r.first && c <= r.last) return stand_in_base + offset + (c - r.first);
+    offset += r.last - r.first + 1;
+  }
+  return 0;
+}
+
+constexpr char32_t original_of(char32_t c) noexcept {  // c itself when it is not a stand-in
+  if (c < stand_in_base || c >= stand_in_base + stand_in_count) return c;
+  char32_t offset = c - stand_in_base;
+  for (const code_point_range& r : toml_unsafe) {
+    const char32_t size = r.last - r.first + 1;
+    if (offset < size) return r.first + offset;
+    offset -= size;
+  }
+  return c;
+}
+static_assert(stand_in_for(0x00A7) == 0xE006 && original_of(0xE006) == 0x00A7);
+static_assert(stand_in_for(0xFEFE) == stand_in_base + stand_in_count - 1);
+static_assert(stand_in_for(0x00A0) == 0 && stand_in_for(0x3000) == 0);
+
+// One well-formed UTF-8 sequence at text[i]: its code point and length, or length 0 when the
+// bytes are not valid UTF-8 (those are left as they are, for toml++ to report).
+struct decoded {
+  char32_t c = 0;
+  std::size_t length = 0;
+};
+decoded decode_utf8(std::string_view text, std::size_t i) noexcept {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[i + k]); };
+  const unsigned char lead = b(0);
+  const std::size_t n = lead < 0x80           ? 1
+                        : (lead >> 5) == 0x6  ? 2
+                        : (lead >> 4) == 0xE  ? 3
+                        : (lead >> 3) == 0x1E ? 4
+                                              : 0;
+  if (n == 0 || i + n > text.size()) return {};
+  char32_t c = n == 1 ? lead : lead & (0x7F >> n);
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((b(k) & 0xC0) != 0x80) return {};
+    c = (c << 6) | (b(k) & 0x3F);
+  }
+  return {c, n};
+}
+
+void encode_utf8(char32_t c, std::string& out) {
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18));
+    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+}
+
+std::string with_stand_ins(std::string_view text, std::string_view file_name) {
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  std::uint32_t line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const decoded d = decode_utf8(text, i);
+    const std::size_t length = d.length == 0 ? 1 : d.length;
+    if (d.length > 1) {
+      if (d.c >= stand_in_base && d.c < stand_in_base + stand_in_count) {
+        throw scene_error({std::string(file_name), line, column}, "",
+                          fmt::format("private-use character U+{:04X} is not supported in scene "
+                                      "files",
+                                      static_cast<std::uint32_t>(d.c)));
+      }
+      if (const char32_t stand_in = stand_in_for(d.c); stand_in != 0) {
+        encode_utf8(stand_in, out);
+      } else {
+        out.append(text.substr(i, length));
+      }
+    } else {
+      out.append(text.substr(i, length));
+    }
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += length;
+  }
+  return out;
+}
+
+std::string without_stand_ins(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const decoded d = decode_utf8(text, i);
+    if (d.length == 0) {
+      out += text[i++];
+      continue;
+    }
+    encode_utf8(original_of(d.c), out);
+    i += d.length;
+  }
+  return out;
+}
+
 // A key and its value inside a table, with the dotted path used in messages.
 struct entry {
   const toml::key* key = nullptr;
@@ -59,7 +188,7 @@ class scene_reader {
 
   [[noreturn]] void fail(const source_location& where, std::string_view path,
                          std::string_view message) const {
-    throw scene_error(where, path, message);
+    throw scene_error(where, without_stand_ins(path), without_stand_ins(message));
   }
   [[noreturn]] void fail(const entry& e, std::string_view message) const {
     fail(at(e), e.path, message);
@@ -118,7 +247,7 @@ class scene_reader {
   }
 
   std::string string(const entry& e, std::string_view what) const {
-    if (const auto* s = e.value->as_string()) return s->get();
+    if (const auto* s = e.value->as_string()) return without_stand_ins(s->get());
     expected(e, what);
   }
 
@@ -162,7 +291,7 @@ class scene_reader {
 
 key_locations locations_of(const scene_reader& r, const toml::table& t) {
   key_locations keys;
-  for (auto&& [key, value] : t) keys.emplace(std::string(key.str()), r.at(key.source()));
+  for (auto&& [key, value] : t) keys.emplace(without_stand_ins(key.str()), r.at(key.source()));
   return keys;
 }
 
@@ -221,7 +350,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     const std::string what =
         fmt::format("a number or an array of numbers (a parameter of {})", base.family);
     if (value.is_number()) {
-      base.scalars.emplace(std::string(k), r.number(e, what));
+      base.scalars.emplace(without_stand_ins(k), r.number(e, what));
     } else if (const auto* a = value.as_array()) {
       if (a->empty()) r.expected(e, what);
       std::vector<double> v;
@@ -229,7 +358,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
         const entry element{&key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
         v.push_back(r.number(element, "a finite number"));
       }
-      base.vectors.emplace(std::string(k), std::move(v));
+      base.vectors.emplace(without_stand_ins(k), std::move(v));
     } else {
       r.expected(e, what);
     }
@@ -353,6 +482,13 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
     }
   }
   if (const auto e = r.find(t, "panels", prefix)) parse_panels(r, *e, m);
+  if (const auto e = r.find(t, "accumulator", prefix)) {
+    constexpr std::string_view names = "one of: pairwise, neumaier, naive, long_double";
+    const std::optional<summation> a = parse_summation(r.string(*e, names));
+    if (!a) r.expected(*e, names);
+    m.accumulator = *a;
+    m.accumulator_given = true;
+  }
   if (const auto e = r.find(t, "point_set", prefix)) {
     m.point_set = r.string(*e, "a point set name");
     if (find_point_set(m.point_set) == nullptr) {
@@ -394,6 +530,8 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
     m.label = m.name;
     if (!m.warp.empty()) m.label += "_" + m.warp;
     if (point_set_given) m.label += "_" + m.point_set;
+    // One series per accumulator: midpoint_naive beside midpoint_neumaier.
+    if (m.accumulator_given) m.label += "_" + std::string(to_string(m.accumulator));
   }
   return m;
 }
@@ -553,12 +691,13 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
 
 scene parse_scene(std::string_view toml_text, std::string_view file_name) {
   const scene_reader reader{std::string(file_name)};
+  const std::string safe_text = with_stand_ins(toml_text, file_name);
   toml::table root;
   try {
-    root = toml::parse(toml_text, file_name);
+    root = toml::parse(safe_text, file_name);
   } catch (const toml::parse_error& e) {
     // toml++'s own position: where the syntax broke (for a truncated file, its end).
-    throw scene_error(reader.at(e.source()), "", e.description());
+    throw scene_error(reader.at(e.source()), "", without_stand_ins(e.description()));
   }
   return parse_root(reader, root);
 }

@@ -40,17 +40,19 @@ repetition_result run_rule(const method_spec& m, const any_integrand& f, const p
                            unsigned threads) {
   const std::uint64_t n = cell.per_axis;
   const std::string_view name = m.name;
+  const summation sum = m.accumulator;
   if (name == "left_rectangle") {
-    return from_rule(integrate(f, rectangle_rule<rectangle_side::left>{}, n, threads));
+    return from_rule(integrate(f, rectangle_rule<rectangle_side::left>{}, n, threads, sum));
   }
   if (name == "right_rectangle") {
-    return from_rule(integrate(f, rectangle_rule<rectangle_side::right>{}, n, threads));
+    return from_rule(integrate(f, rectangle_rule<rectangle_side::right>{}, n, threads, sum));
   }
-  if (name == "midpoint") return from_rule(integrate(f, midpoint_rule{}, n, threads));
-  if (name == "trapezoid") return from_rule(integrate(f, trapezoid_rule{}, n, threads));
-  if (name == "simpson") return from_rule(integrate(f, simpson_rule{}, n, threads));
+  if (name == "midpoint") return from_rule(integrate(f, midpoint_rule{}, n, threads, sum));
+  if (name == "trapezoid") return from_rule(integrate(f, trapezoid_rule{}, n, threads, sum));
+  if (name == "simpson") return from_rule(integrate(f, simpson_rule{}, n, threads, sum));
   if (name == "gauss_legendre") {
-    return from_rule(integrate(f, gauss_legendre_rule(static_cast<unsigned>(m.m)), n, threads));
+    return from_rule(
+        integrate(f, gauss_legendre_rule(static_cast<unsigned>(m.m)), n, threads, sum));
   }
   if (name == "romberg") {
     // The plan chose n = 2^k panels: run exactly k halvings (tolerance 0 disables early stop).
@@ -117,7 +119,8 @@ run_output run_plan(const plan& p, const run_options& options) {
     mean_reference[inst.integrand] += inst.function.info().exact;
     ++instance_count[inst.integrand];
   }
-  for (auto& [integrand, sum] : mean_reference) sum /= static_cast<double>(instance_count[integrand]);
+  for (auto& [integrand, sum] : mean_reference)
+    sum /= static_cast<double>(instance_count[integrand]);
 
   run_progress progress;
   progress.cells_total = p.cells.size();
@@ -129,10 +132,10 @@ run_output run_plan(const plan& p, const run_options& options) {
     const method_spec& mspec = p.source.methods[cell.method];
     const double elapsed = std::chrono::duration<double>(clock::now() - run_start).count();
     if (max_seconds && elapsed > *max_seconds) {
-      out.skips.push_back(plan_skip{
-          fmt::format("{} × {}, N = {}", mspec.label, ispec.name, cell.nominal_N),
-          fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)", *max_seconds,
-                      elapsed)});
+      out.skips.push_back(
+          plan_skip{fmt::format("{} × {}, N = {}", mspec.label, ispec.name, cell.nominal_N),
+                    fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)", *max_seconds,
+                                elapsed)});
       continue;
     }
     const plan_instance& inst = p.instance_of(cell);
@@ -148,6 +151,7 @@ run_output run_plan(const plan& p, const run_options& options) {
       series.method = mspec.label;
       series.method_name = mspec.name;
       series.order = cell.order;
+      series.singularity_exponent = info.singularity_exponent;
       series.smoothness = to_string(info.regularity);
       series.reference = mean_reference[cell.integrand];
       out.series.push_back(std::move(series));
@@ -170,9 +174,11 @@ run_output run_plan(const plan& p, const run_options& options) {
       result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
       result.value += shift;
       target.repetitions.push_back(result);
+      // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
+      progress.evaluations_done += cell.evaluations;
+      if (options.on_progress && r + 1 < cell.repetitions) options.on_progress(progress);
     }
     ++progress.cells_done;
-    progress.evaluations_done += cell.evaluations * cell.repetitions;
     if (options.on_progress) options.on_progress(progress);
   }
   out.seconds = std::chrono::duration<double>(clock::now() - run_start).count();

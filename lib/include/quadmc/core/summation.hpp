@@ -12,11 +12,17 @@
 //  - pairwise_sum: recursive halving, error bound ε·log2(n)·Σ|x_i| (Higham §4.2). Cheaper than
 //    Neumaier per term and vectorizes; use it on a contiguous batch.
 //  - naive_sum: kept only so tests and the stress scene can show what the others buy.
+//  - enum summation: the accumulator a long sum uses (tensor-product rules take it as an option,
+//    scenes as the method key `accumulator`), so the stress scene can compare them on the same
+//    terms: error bounds (n−1)ε (naive), ε·log2 n (pairwise), 2ε (Neumaier), each times Σ|x_i|,
+//    and (n−1)·2⁻⁶⁴ for x87 long double (Higham §4.2–4.3 with u = 2⁻⁶⁴).
 #pragma once
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string_view>
 
 namespace quadmc {
 
@@ -81,6 +87,40 @@ inline double naive_sum(std::span<const double> x) noexcept {
   double s = 0.0;
   for (double v : x) s += v;
   return s;
+}
+
+// How a long sum of terms is accumulated.
+//  - pairwise: pairwise within each batch of 256 terms, batches and chunks added with Neumaier:
+//    the library's default (fast: the batch loop vectorizes; error ≈ 2ε·Σ|x| + ε·8·Σ|batch|).
+//  - neumaier: every term through neumaier_sum (error 2ε·Σ|x|, ≈ 4× the flops of a plain add).
+//  - naive: one double added left to right over all terms in index order, serially (error up to
+//    (n−1)ε·Σ|x|; for smooth terms the rounding is biased, so it really grows like ε·n).
+//  - long_double: left to right in long double (x87 80-bit on x86-64: u = 2⁻⁶⁴, so the error is
+//    (n−1)·2⁻⁶⁴·Σ|x| — 2048× smaller than naive double but still growing with n; where long
+//    double is plain double, e.g. AArch64 Apple or MSVC, it is the naive sum in chunks).
+enum class summation { pairwise, neumaier, naive, long_double };
+
+constexpr std::string_view to_string(summation s) noexcept {
+  switch (s) {
+    case summation::pairwise:
+      return "pairwise";
+    case summation::neumaier:
+      return "neumaier";
+    case summation::naive:
+      return "naive";
+    case summation::long_double:
+      return "long_double";
+  }
+  return "?";
+}
+
+// The summation named `name` (the spelling of to_string), or nullopt.
+constexpr std::optional<summation> parse_summation(std::string_view name) noexcept {
+  for (summation s :
+       {summation::pairwise, summation::neumaier, summation::naive, summation::long_double}) {
+    if (to_string(s) == name) return s;
+  }
+  return std::nullopt;
 }
 
 }  // namespace quadmc

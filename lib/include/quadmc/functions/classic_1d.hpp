@@ -157,6 +157,7 @@ class sqrt_1d {
   integrand_info info() const {
     auto info = detail::info_1d("sqrt", "√x", 0.0, 1.0, 2.0 / 3.0, smoothness::singular);
     info.derivative_bound[0] = 1.0;  // f' = 1/(2√x) is unbounded at 0
+    info.singularity_exponent = 0.5;
     return info;
   }
 };

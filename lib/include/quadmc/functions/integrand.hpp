@@ -78,6 +78,10 @@ struct integrand_info {
   // M_k = max over the domain of |∂^k f| along one coordinate (1D: |f^(k)|), k = 0…4, where
   // known exactly; empty where unbounded or unknown. Used by the rules' a-priori bounds.
   std::array<std::optional<double>, 5> derivative_bound{};
+  // For smoothness::singular in 1D: α where f behaves like x^α at the singular endpoint (α = 0
+  // stands for log x). It fixes the rate of every composite rule, O(n^−min(r, 1+α)), and whether
+  // f has a finite variance (α > −1/2); NaN where unknown or not of that form.
+  double singularity_exponent = NAN;
 
   std::size_t dimension() const noexcept { return domain.dimension(); }
 };

@@ -14,7 +14,9 @@
 //    w_i·f_i are summed pairwise and batches are added with Neumaier's compensated sum, so the
 //    rounding error stays O(ε·Σ|w f|) for any N (summation.hpp);
 //  - chunks of 2^14 points are the unit of parallel work; their boundaries depend only on N, and
-//    parallel_reduce folds them in chunk order, so any thread count gives the same bits.
+//    parallel_reduce folds them in chunk order, so any thread count gives the same bits;
+//  - the sum can instead be naive, all-Neumaier or long double (enum summation), so the stress
+//    scene can show what each accumulator's rounding floor is on the same terms.
 #pragma once
 
 #include "quadmc/core/errors.hpp"
@@ -82,13 +84,59 @@ inline void require_integration_box(const box& domain) {
   }
 }
 
+namespace detail {
+
+// The accumulators of enum summation (core/summation.hpp), each a value type with the same three
+// operations, so the kernel below is one template and the default path compiles to the same code
+// as before the option existed.
+struct pairwise_accumulator {
+  neumaier_sum sum;
+  void add_batch(std::span<const double> terms) noexcept { sum.add(pairwise_sum(terms)); }
+  void merge(const pairwise_accumulator& other) noexcept { sum.merge(other.sum); }
+  double value() const noexcept { return sum.value(); }
+};
+
+struct neumaier_accumulator {
+  neumaier_sum sum;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum.add(t);
+  }
+  void merge(const neumaier_accumulator& other) noexcept { sum.merge(other.sum); }
+  double value() const noexcept { return sum.value(); }
+};
+
+struct long_double_accumulator {
+  long double sum = 0.0L;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum += static_cast<long double>(t);
+  }
+  void merge(const long_double_accumulator& other) noexcept { sum += other.sum; }
+  double value() const noexcept { return static_cast<double>(sum); }
+};
+
+// One double carried through every term in index order: the kernel runs its chunks serially and
+// hands each chunk the running sum, so this is exactly Σ left to right, never re-associated.
+struct naive_accumulator {
+  double sum = 0.0;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum += t;
+  }
+  double value() const noexcept { return sum; }
+};
+
+}  // namespace detail
+
 // ∫ f over f.info().domain by the tensor product of `rule` with n panels per axis. 1D is s = 1.
 // threads = 0 uses every core; the result is bitwise the same for every thread count.
+// `accumulate` chooses how the N terms w·f are summed (core/summation.hpp, enum summation); the
+// default is the pairwise/Neumaier scheme described above. summation::naive runs on one thread
+// whatever `threads` says (a left-to-right sum cannot be split).
 // Throws invalid_argument for bad n, domain or grid size, non_finite_value if f returns NaN/±inf
 // (the message names the point). error_estimate is NaN: a fixed rule has no a-posteriori
 // estimate (see error_bounds.hpp for a-priori bounds, romberg.hpp for an estimate).
 template <integrand F, rule R>
-rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threads = 1) {
+rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threads = 1,
+                      summation accumulate = summation::pairwise) {
   const integrand_info info = f.info();
   const std::size_t s = f.dimension();
   require(s >= 1, "integrand dimension s", s, "at least 1");
@@ -106,7 +154,8 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
   const std::size_t chunks =
       static_cast<std::size_t>(total / tensor_chunk_points + (total % tensor_chunk_points != 0));
 
-  auto chunk_sum = [&](std::size_t c) {
+  // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
+  auto chunk_sum = [&](std::size_t c, auto sum) {
     const std::uint64_t begin = static_cast<std::uint64_t>(c) * tensor_chunk_points;
     const std::uint64_t end = std::min(begin + tensor_chunk_points, total);
     // Buffers once per chunk (2^14 points), never per point.
@@ -127,7 +176,6 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
       place(j);
     }
 
-    neumaier_sum sum;
     for (std::uint64_t p = begin; p < end;) {
       const std::size_t count =
           static_cast<std::size_t>(std::min<std::uint64_t>(rule_batch_size, end - p));
@@ -154,18 +202,39 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
       f.evaluate(xs, ys);
       check_finite_batch(info.name, xs, ys, s);
       for (std::size_t i = 0; i < count; ++i) terms[i] *= y[i];
-      sum.add(pairwise_sum(std::span<const double>(terms.data(), count)));
+      sum.add_batch(std::span<const double>(terms.data(), count));
       p += count;
     }
     return sum;
   };
 
-  const neumaier_sum sum =
-      parallel_reduce(chunks, threads, neumaier_sum{}, chunk_sum,
-                      [](neumaier_sum& acc, const neumaier_sum& part) { acc.merge(part); });
+  auto reduce = [&]<class Accumulator>(Accumulator init) {
+    return parallel_reduce(
+        chunks, threads, init, [&](std::size_t c) { return chunk_sum(c, Accumulator{}); },
+        [](Accumulator& acc, const Accumulator& part) { acc.merge(part); });
+  };
+
+  double sum = 0.0;
+  switch (accumulate) {
+    case summation::pairwise:
+      sum = reduce(detail::pairwise_accumulator{}).value();
+      break;
+    case summation::neumaier:
+      sum = reduce(detail::neumaier_accumulator{}).value();
+      break;
+    case summation::long_double:
+      sum = reduce(detail::long_double_accumulator{}).value();
+      break;
+    case summation::naive: {
+      detail::naive_accumulator running;
+      for (std::size_t c = 0; c < chunks; ++c) running = chunk_sum(c, running);
+      sum = running.value();
+      break;
+    }
+  }
 
   rule_result result;
-  result.value = info.domain.volume() * sum.value();
+  result.value = info.domain.volume() * sum;
   result.evaluations = total;
   return result;
 }
@@ -198,12 +267,13 @@ class interval_function {
 // one the runner uses; this form is for tests and quick use).
 template <class G, rule R>
 requires std::is_invocable_r_v<double, const G&, double> rule_result
-integrate(const G& g, double a, double b, const R& rule, std::uint64_t n, unsigned threads = 1) {
+integrate(const G& g, double a, double b, const R& rule, std::uint64_t n, unsigned threads = 1,
+          summation accumulate = summation::pairwise) {
   require_finite(a, "a");
   require_finite(b, "b");
   require(a <= b, "b", b,
           fmt::format("≥ a = {} (swap the bounds for a reversed interval)", quote(a)));
-  return integrate(detail::interval_function<G>(g, a, b), rule, n, threads);
+  return integrate(detail::interval_function<G>(g, a, b), rule, n, threads, accumulate);
 }
 
 }  // namespace quadmc

@@ -29,7 +29,8 @@ struct run_progress {
 
 struct run_options {
   unsigned threads = 0;  // 0 = the scene's threads (which may itself be 0 = all cores)
-  std::function<void(const run_progress&)> on_progress;  // called after each cell
+  // Called after each repetition and after each cell (cells_done counts finished cells).
+  std::function<void(const run_progress&)> on_progress;
 };
 
 struct run_output {

@@ -6,6 +6,7 @@
 // line and key. It does not hold defaults the plan derives (drawn parameters, mapped counts).
 #pragma once
 
+#include "quadmc/core/summation.hpp"
 #include "quadmc/scene/scene_error.hpp"
 
 #include <cstddef>
@@ -44,8 +45,10 @@ struct method_spec {
   std::string label;  // display name, unique in the scene (defaults to name, or name + warp)
   std::uint64_t repetitions = 32;
   bool repetitions_given = false;
-  std::uint64_t m = 3;                  // gauss_legendre: nodes per panel
-  std::vector<std::uint64_t> panels;    // tensor rules: explicit n per axis (replaces budget.N)
+  std::uint64_t m = 3;                // gauss_legendre: nodes per panel
+  std::vector<std::uint64_t> panels;  // tensor rules: explicit n per axis (replaces budget.N)
+  summation accumulator = summation::pairwise;  // tensor rules: how the N terms are summed
+  bool accumulator_given = false;
   std::string point_set;                // importance / irradiance estimators: sampling pattern
   std::string warp;                     // importance: warp name (methods.hpp warp_catalogue)
   double warp_parameter = 0.0;          // its parameter (exponent, rate)
