@@ -4,6 +4,7 @@
 #   ./run.sh bench   install what is missing, build (Release), run the default scene → results/
 #                    (extra arguments go to `quadmc run`, e.g. --out DIR, --threads T)
 #   ./run.sh test    install what is missing, build, run every test with CTest
+#   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
 #   ./run.sh deps    only install what is missing (idempotent: does nothing when all is present)
 #
 # Every dependency is a Debian 12 package; nothing is downloaded from anywhere else.
@@ -22,6 +23,8 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
 # What only the benchmark command needs: plots (Debian's python3, not a pyenv one) and the
 # peers measured beside quadmc in bench/peers/ (GSL, cubature).
 BENCH_PACKAGES=(python3 python3-matplotlib libgsl-dev libcubature-dev)
+# The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
+FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 
 install_missing() {
   local missing=()
@@ -38,7 +41,11 @@ install_missing() {
 
 case "${1:-}" in
   deps)
-    install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
+    install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}"
+    ;;
+  fuzz)
+    install_missing "${LIB_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}"
+    tests/fuzz/run.sh "${2:-60}" build/fuzz
     ;;
   bench)
     install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
@@ -54,7 +61,7 @@ case "${1:-}" in
     ctest --preset test
     ;;
   *)
-    echo "usage: ./run.sh bench | test | deps" >&2
+    echo "usage: ./run.sh bench | test | fuzz [SECONDS] | deps" >&2
     exit 2
     ;;
 esac

@@ -42,6 +42,7 @@ void progress_bar::update(const quadmc::run_progress& progress) {
 
 void progress_bar::finish() {
   if (drawn_) fmt::print(stderr, "\r{}\r", std::string(width + 40, ' '));
+  drawn_ = false;
 }
 
 }  // namespace quadmc_cli

@@ -11,6 +11,10 @@ namespace quadmc_cli {
 class progress_bar {
  public:
   progress_bar();
+  // Clears the bar also when a run fails, so the error line starts on a clean line.
+  ~progress_bar() { finish(); }
+  progress_bar(const progress_bar&) = delete;
+  progress_bar& operator=(const progress_bar&) = delete;
   void update(const quadmc::run_progress& progress);
   void finish();
 

@@ -96,3 +96,19 @@ TEST(TheoreticalRate, IrradianceEstimatorsAreMonteCarlo) {
     EXPECT_DOUBLE_EQ(quadmc::theoretical_slope(m, "discontinuous", 2).slope.value(), -0.5) << m;
   }
 }
+
+TEST(TheoreticalRate, EndpointSingularityExponentSetsTheRuleRate) {
+  // f ~ x^α: composite rules converge as n^−min(r, 1+α) (Davis & Rabinowitz §2.12).
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("simpson", "singular", 1, 0, 0.5).slope.value(),
+                   -1.5);  // √x
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("midpoint", "singular", 1, 0, -0.5).slope.value(),
+                   -0.5);  // 1/√x
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("trapezoid", "singular", 1, 0, 0.0).slope.value(),
+                   -1.0);  // log x
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("left_rectangle", "singular", 1, 0, 0.5).slope.value(),
+                   -1.0);
+  // Monte Carlo: finite variance for √x and log x, none for 1/√x (∫x^−1 diverges).
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("plain_mc", "singular", 1, 0, 0.0).slope.value(),
+                   -0.5);
+  EXPECT_FALSE(quadmc::theoretical_slope("plain_mc", "singular", 1, 0, -0.5).slope.has_value());
+}

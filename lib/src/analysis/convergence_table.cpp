@@ -20,8 +20,9 @@ convergence_table analyse_convergence(const convergence_series& series,
   table.smoothness = series.smoothness;
   table.reference = series.reference;
   // Validates smoothness and s before any work.
-  table.theory = theoretical_slope(series.method_name.empty() ? series.method : series.method_name,
-                                   series.smoothness, series.s, series.order);
+  table.theory =
+      theoretical_slope(series.method_name.empty() ? series.method : series.method_name,
+                        series.smoothness, series.s, series.order, series.singularity_exponent);
 
   std::vector<const convergence_cell*> cells;
   for (const convergence_cell& cell : series.cells) cells.push_back(&cell);

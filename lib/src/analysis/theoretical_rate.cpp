@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace quadmc {
 namespace {
@@ -23,7 +24,7 @@ constexpr const char* kink_source = "C0 kink row of THEORY.md";
 constexpr const char* sqrt_source = "√x on [0,1] row of THEORY.md: O(n^-1.5)";
 
 // A tensor Newton–Cotes rule of order r on smooth f; the other classes cap the order.
-theoretical_rate newton_cotes(int order, std::string_view cls, double s) {
+theoretical_rate newton_cotes(int order, std::string_view cls, double s, double alpha) {
   if (cls == "analytic" || cls == "smooth") {
     return {-order / s, fmt::format("order {} rule, f ∈ C^{} assumed", order, order),
             newton_cotes_source};
@@ -35,6 +36,16 @@ theoretical_rate newton_cotes(int order, std::string_view cls, double s) {
   }
   if (cls == "discontinuous") {
     return {-1.0 / s, "jump: O(n^-1), not monotone in n", jump_source};
+  }
+  // singular with a known exponent, f ~ x^α: the panel at the singularity errs by
+  // ∫₀ʰ x^α dx = O(h^(1+α)) (Davis & Rabinowitz §2.12, "integrands with endpoint singularities"),
+  // the others by O(h^r): the rate is n^−min(r, 1+α); for α = 0 (log x) up to a log n factor.
+  if (std::isfinite(alpha)) {
+    const double rate = std::min(static_cast<double>(order), 1.0 + alpha);
+    return {-rate / s,
+            fmt::format("endpoint singularity f ~ x^{}: order min(r, 1 + α) = {}{}", alpha, rate,
+                        alpha == 0.0 ? " (log x: up to a log n factor)" : ""),
+            "Davis & Rabinowitz §2.12; √x row of THEORY.md"};
   }
   // singular: √x-type endpoint singularity. Rectangles keep O(h) (f monotone, bounded variation).
   if (order == 1) {
@@ -54,24 +65,25 @@ std::span<const std::string_view> smoothness_classes() noexcept {
 }
 
 theoretical_rate theoretical_slope(std::string_view method, std::string_view cls,
-                                   std::size_t dimension, int order) {
+                                   std::size_t dimension, int order, double alpha) {
   require(std::find(classes.begin(), classes.end(), cls) != classes.end(), "smoothness",
           std::string(cls), "one of analytic, smooth, C0, discontinuous, singular");
   require(dimension >= 1, "s", dimension, "a dimension >= 1");
   const double s = static_cast<double>(dimension);
 
-  if (method == "left_rectangle" || method == "right_rectangle") return newton_cotes(1, cls, s);
+  if (method == "left_rectangle" || method == "right_rectangle")
+    return newton_cotes(1, cls, s, alpha);
   if (method == "midpoint" || method == "trapezoid") {
-    theoretical_rate rate = newton_cotes(2, cls, s);
+    theoretical_rate rate = newton_cotes(2, cls, s, alpha);
     if (method == "trapezoid" && cls == "analytic") {
       rate.note += "; exponential instead if f is periodic (Trefethen & Weideman 2014, Thm 3.2)";
     }
     return rate;
   }
-  if (method == "simpson") return newton_cotes(4, cls, s);
+  if (method == "simpson") return newton_cotes(4, cls, s, alpha);
   if (method == "unjittered") {
     // pbrt's unjittered stratified sampler puts one point at each cell centre: a midpoint grid.
-    theoretical_rate rate = newton_cotes(2, cls, s);
+    theoretical_rate rate = newton_cotes(2, cls, s, alpha);
     rate.note = "cell-centre grid = tensor midpoint rule; " + rate.note;
     return rate;
   }
@@ -79,7 +91,7 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
     // Composite Gauss–Legendre with m nodes per panel and n panels: error O(n^-2m) for
     // f ∈ C^2m (Davis & Rabinowitz, "Methods of Numerical Integration", §2.7), so a fixed m is an
     // algebraic rule of order r = 2m, and a kink, jump or √x caps it like any composite rule.
-    theoretical_rate rate = newton_cotes(order, cls, s);
+    theoretical_rate rate = newton_cotes(order, cls, s, alpha);
     rate.note = fmt::format("composite Gauss–Legendre, order 2m = {}; ", order) + rate.note;
     if (cls == "analytic" || cls == "smooth") {
       rate.source = "Davis & Rabinowitz §2.7 (composite Gauss error O(n^-2m)); lecture §1.2";
@@ -98,7 +110,7 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
     if (method == "romberg") {
       // Richardson extrapolation assumes the Euler–Maclaurin expansion in h²; a kink, jump or
       // √x breaks it past its first term, leaving the trapezoid rate.
-      theoretical_rate rate = newton_cotes(2, cls, s);
+      theoretical_rate rate = newton_cotes(2, cls, s, alpha);
       rate.note = "extrapolation gains nothing past the trapezoid rate; " + rate.note;
       return rate;
     }
@@ -107,6 +119,16 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
     }
     return {std::nullopt, "not tabulated for Gauss–Legendre on this class",
             "ATAP Thm 19.3 bounds only"};
+  }
+  const bool random_method = method == "plain_mc" || method == "jittered" ||
+                             method == "unjittered" || method == "padded_jittered" ||
+                             method == "latin_hypercube" || method == "importance" ||
+                             method.starts_with("irradiance_");
+  if (random_method && cls == "singular" && std::isfinite(alpha) && alpha <= -0.5) {
+    // ∫f² = ∫x^(2α) diverges for α ≤ −1/2: no finite variance, so neither σ/√N nor the CLT
+    // holds (lecture §2.2.2 assumes V[Y] < ∞); the error still shrinks, at no tabulated rate.
+    return {std::nullopt, fmt::format("f ~ x^{}: infinite variance, no σ/√N rate", alpha),
+            "lecture §2.2.2 (finite variance required)"};
   }
   if (method.starts_with("irradiance_")) {
     // Uniform-hemisphere, cosine-weighted and light-area sampling are importance sampling with

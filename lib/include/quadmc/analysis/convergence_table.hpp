@@ -45,6 +45,8 @@ struct convergence_series {
   // "importance_exponential"; empty = same as `method`.
   std::string method_name;
   int order = 0;  // the rule's order r where the name does not fix it (Gauss: 2m)
+  // integrand_info::singularity_exponent (f ~ x^α at an endpoint; NaN = not given).
+  double singularity_exponent = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct analysis_options {

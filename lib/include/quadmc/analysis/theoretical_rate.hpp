@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -34,9 +35,12 @@ struct theoretical_rate {
 // Throws invalid_argument for an unknown smoothness class or s = 0. An unknown method returns an
 // empty slope with the note "no entry for method …", so a new method never stops a run.
 // `order` is the rule's order r where the method's name does not fix it (gauss_legendre: 2m);
-// 0 when unknown.
-theoretical_rate theoretical_slope(std::string_view method, std::string_view smoothness,
-                                   std::size_t s, int order = 0);
+// 0 when unknown. `singularity_exponent` is α for a "singular" f ~ x^α at an endpoint (α = 0
+// for log x): composite rules then converge as n^−min(r, 1+α), and Monte Carlo has no finite
+// variance for α ≤ −1/2. NaN = not given: the √x case (α = 1/2) is assumed, as THEORY.md's row.
+theoretical_rate theoretical_slope(
+    std::string_view method, std::string_view smoothness, std::size_t s, int order = 0,
+    double singularity_exponent = std::numeric_limits<double>::quiet_NaN());
 
 // The method names and smoothness classes the table knows, in table order.
 std::span<const std::string_view> tabulated_methods() noexcept;
