@@ -112,3 +112,9 @@ TEST(TheoreticalRate, EndpointSingularityExponentSetsTheRuleRate) {
                    -0.5);
   EXPECT_FALSE(quadmc::theoretical_slope("plain_mc", "singular", 1, 0, -0.5).slope.has_value());
 }
+
+TEST(TheoreticalRate, LatinHypercubeInOneDimensionIsJittered) {
+  // One point per stratum in 1D: Stein's residual e = f − additive part is 0 (McKay et al. 1979).
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("latin_hypercube", "analytic", 1).slope.value(), -1.5);
+  EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("latin_hypercube", "analytic", 2).slope.value(), -0.5);
+}

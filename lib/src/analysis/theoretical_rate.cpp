@@ -139,7 +139,12 @@ theoretical_rate theoretical_slope(std::string_view method, std::string_view cls
   if (method == "plain_mc") {
     return {-0.5, "σ/√N, finite variance assumed", "lecture §2.2.2 (THEORY.md)"};
   }
-  if (method == "jittered" || (method == "padded_jittered" && dimension <= 2)) {
+  // In one dimension a Latin hypercube is one point per stratum: jittered sampling exactly (its
+  // additive part is all of f, so Stein's residual e vanishes: THEORY.md's LHS row).
+  const bool one_point_per_stratum = method == "jittered" ||
+                                     (method == "padded_jittered" && dimension <= 2) ||
+                                     (method == "latin_hypercube" && dimension == 1);
+  if (one_point_per_stratum) {
     if (cls == "discontinuous") {
       return {-0.5 - 1.0 / (2.0 * s), "indicator of a smooth-boundary region",
               "Mitchell 1996; Pilleboue et al. 2015 (THEORY.md)"};
