@@ -55,6 +55,9 @@ TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   EXPECT_NE(page.find("- compiler: GCC 12.2.0"), std::string::npos);
   EXPECT_EQ(page.find("- machine:"), std::string::npos) << "empty fields are omitted";
   EXPECT_NE(page.find("- simpson s = 6: 7^6 > budget"), std::string::npos);
+  // The skip list is folded, with its count, so the slope table stays on the first screen.
+  EXPECT_NE(page.find("<summary>Skipped by the plan: 1 cell "), std::string::npos) << page;
+  EXPECT_LT(page.find("</details>"), page.find("## Slopes"));
   // Summary rows: the integrand's '|' is escaped so the table keeps its columns.
   EXPECT_NE(page.find("| genz\\|odd | 1 | trapezoid | -2.0"), std::string::npos) << page;
   EXPECT_NE(page.find("| genz\\|odd | 1 | plain_mc | -0.500 ± 0.000 | -0.500 | agrees |"),
