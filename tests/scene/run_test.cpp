@@ -71,3 +71,43 @@ TEST(RunPlan, AccumulatorReachesTheRuleAndProgressIsPerRepetition) {
 
 }  // namespace
 }  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// An ensemble of K instances revisits the same N ladder once per instance: the runner must pool
+// them into one cell per N (K × repetitions estimates each), referenced to the mean of the
+// instances' exact values, and the series must analyse (distinct N).
+TEST(RunPlan, EnsembleInstancesArePooledIntoOneCellPerN) {
+  constexpr std::string_view text = R"(name = "ens"
+seed = 1
+threads = 1
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+ensemble = 3
+[[method]]
+name = "plain_mc"
+repetitions = 4
+[budget]
+N = [64, 256, 1024]
+)";
+  const plan p = make_plan(parse_scene(text, "ens.toml"));
+  ASSERT_EQ(p.instances.size(), 3u);
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 1u);
+  const convergence_series& series = out.series.front();
+  ASSERT_EQ(series.cells.size(), 3u);
+  double mean_exact = 0.0;
+  for (const plan_instance& inst : p.instances) mean_exact += inst.function.info().exact / 3.0;
+  EXPECT_NEAR(series.reference, mean_exact, 4 * std::numeric_limits<double>::epsilon());
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(series.cells[k].n, (std::uint64_t{64} << (2 * k)));
+    EXPECT_EQ(series.cells[k].repetitions.size(), 12u) << "3 instances × 4 repetitions";
+  }
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_EQ(table.rows.size(), 3u);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -18,8 +18,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
+#include <iterator>
 #include <map>
 #include <utility>
 
@@ -156,11 +158,16 @@ run_output run_plan(const plan& p, const run_options& options) {
       series.reference = mean_reference[cell.integrand];
       out.series.push_back(std::move(series));
     }
+    // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble
+    // revisit the same N ladder: find the series' cell for this N, append only a new N.
     convergence_series& series = out.series[it->second];
-    if (series.cells.empty() || series.cells.back().n != cell.nominal_N) {
+    auto same_n = std::find_if(series.cells.begin(), series.cells.end(),
+                               [&](const convergence_cell& c) { return c.n == cell.nominal_N; });
+    if (same_n == series.cells.end()) {
       series.cells.push_back(convergence_cell{cell.nominal_N, {}});
+      same_n = std::prev(series.cells.end());
     }
-    convergence_cell& target = series.cells.back();
+    convergence_cell& target = *same_n;
 
     const method_info* method = find_method(mspec.name);
     require(method != nullptr, "method", mspec.name, "a name listed by `quadmc list`");
