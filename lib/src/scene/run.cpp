@@ -71,13 +71,13 @@ repetition_result run_rule(const method_spec& m, const any_integrand& f, const p
 
 point_set_kind point_set_of(const method_spec& m) {
   const std::string_view name = m.name;
-  if (name == "plain_mc") return point_set_kind::independent;
-  if (name == "jittered") return point_set_kind::jittered;
-  if (name == "unjittered") return point_set_kind::unjittered;
-  if (name == "padded_jittered") return point_set_kind::padded_jittered;
-  if (name == "latin_hypercube") return point_set_kind::latin_hypercube;
-  // importance and the irradiance estimators draw their u from a chosen pattern.
-  return m.point_set.empty() ? point_set_kind::independent : parse_point_set_kind(m.point_set);
+  // importance and the irradiance estimators draw their u from a chosen pattern; every other
+  // random method is named after its point set (sampling_method.hpp owns the name table, and
+  // reads "plain" as independent points).
+  if (name == "importance" || name.starts_with("irradiance_")) {
+    return m.point_set.empty() ? point_set_kind::independent : parse_point_set_kind(m.point_set);
+  }
+  return parse_point_set_kind(name == "plain_mc" ? "plain" : name);
 }
 
 repetition_result run_random(const method_spec& m, const plan& p, const plan_cell& cell,
