@@ -24,6 +24,15 @@
 
 namespace quadmc {
 
+namespace detail {
+// out[2k], out[2k + 1] = the two uniforms of block first_block + k of the stream with this key and
+// stream id, for k < blocks: Philox4x32-10 on several counters at once, on the instruction set
+// simd_level.hpp chooses, bitwise equal to the scalar engine (lib/src/core/philox_blocks.cpp).
+void philox_uniform_blocks(std::uint32_t key0, std::uint32_t key1, std::uint32_t stream_lo,
+                           std::uint32_t stream_hi, std::uint64_t first_block, std::size_t blocks,
+                           double* out);
+}  // namespace detail
+
 // SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014): a bijective 64-bit mixer, used to
 // turn structured ids (integrand, method, N, repetition, …) into well-spread stream ids.
 constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
@@ -69,16 +78,18 @@ class philox_stream {
   double uniform(std::uint64_t index) const noexcept { return to_unit(bits(index)); }
 
   // out[k] = uniform(first + k): the batch form every point set uses. One Philox call serves
-  // two outputs; the result does not depend on how a range is split into batches.
-  void fill_uniform(std::uint64_t first, std::span<double> out) const noexcept {
+  // two outputs; the whole blocks in between run through the vector kernel (several counters per
+  // instruction), whose bits equal the scalar engine's, so the result does not depend on how a
+  // range is split into batches.
+  void fill_uniform(std::uint64_t first, std::span<double> out) const {
     std::size_t k = 0;
     std::uint64_t index = first;
     if ((index & 1) != 0 && k < out.size()) out[k++] = uniform(index++);
-    for (; k + 2 <= out.size(); k += 2, index += 2) {
-      const auto r = block(index >> 1);
-      out[k] = to_unit((static_cast<std::uint64_t>(r.v[1]) << 32) | r.v[0]);
-      out[k + 1] = to_unit((static_cast<std::uint64_t>(r.v[3]) << 32) | r.v[2]);
-    }
+    const std::size_t blocks = (out.size() - k) / 2;
+    detail::philox_uniform_blocks(key_[0], key_[1], stream_lo_, stream_hi_, index >> 1, blocks,
+                                  out.data() + k);
+    k += 2 * blocks;
+    index += 2 * blocks;
     if (k < out.size()) out[k] = uniform(index);
   }
 

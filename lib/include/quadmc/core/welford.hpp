@@ -18,6 +18,12 @@ namespace quadmc {
 
 class welford {
  public:
+  constexpr welford() noexcept = default;
+  // The statistics of a block computed elsewhere (e.g. by two passes over a batch): `count`
+  // values with this mean and sum of squared deviations m2 = Σ(x − mean)².
+  constexpr welford(std::uint64_t count, double mean, double m2) noexcept
+      : count_(count), mean_(count == 0 ? 0.0 : mean), m2_(count == 0 ? 0.0 : m2) {}
+
   constexpr void add(double x) noexcept {
     ++count_;
     const double delta = x - mean_;

@@ -10,9 +10,13 @@
 //    point set only, folded in chunk order by quadmc::parallel_reduce: bitwise identical results
 //    for any thread count. 12288 is a multiple of 3 so the triples of stratum_differences never
 //    straddle a chunk; for m points per stratum a chunk is a whole number of strata.
-//  - The value is Σ Y / N with Neumaier summation (error independent of N to first order: Boost's
-//    naive_monte_carlo explains that a plain sum's εN error eventually exceeds σ/√N); the sample
-//    variance is Welford's, merged by Chan et al.'s formula (core/welford.hpp).
+//  - Statistics per batch of 256 values, then merged: the batch sum and the batch's Σ(y − ȳ)² by
+//    two passes (each with four interleaved partial sums, a fixed order the compiler can keep in
+//    vector registers), merged into the chunk by Chan, Golub & LeVeque's formula
+//    (core/welford.hpp); the batch sums are added with Neumaier summation, so the value's rounding
+//    error stays at the batch level (≤ 64ε·mean|Y| for 256 terms, Higham §4.2) and does not grow
+//    with N (Boost's naive_monte_carlo explains why a plain running sum's εN error eventually
+//    exceeds σ/√N). Per-sample Welford updates cost a division each; this costs none.
 //  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
 #pragma once
 
@@ -40,30 +44,21 @@ class sample_statistics {
  public:
   explicit sample_statistics(variance_structure structure = {}) : structure_(structure) {}
 
-  // Y of point `index`; within a chunk, points arrive in index order and groups start aligned.
-  void add(std::uint64_t index, double y) noexcept {
-    sum_.add(y);
-    all_.add(y);
+  // Y of points first, first + 1, …; within a chunk, batches arrive in index order and groups
+  // start aligned.
+  void add_batch(std::uint64_t first, std::span<const double> y) noexcept {
+    const double sum = four_lane_sum(y, [](double v) { return v; });
+    const double mean = sum / static_cast<double>(y.size());
+    const double m2 = four_lane_sum(y, [mean](double v) { return (v - mean) * (v - mean); });
+    sum_.add(sum);
+    all_.merge(welford(y.size(), mean, m2));
     switch (structure_.kind) {
       case variance_kind::within_strata:
-        stratum_.add(y);
-        if ((index + 1) % structure_.group == 0) {
-          group_sum_.add(stratum_.variance());
-          ++groups_;
-          stratum_ = welford{};
-        }
+        for (const double v : y) add_within_strata(v);
         break;
-      case variance_kind::stratum_differences: {
-        const std::uint64_t position = index % 3;
-        triple_[position] = y;
-        // A triple of neighbours lies in one row of `group` strata along the last axis.
-        if (position == 2 && ((index - 2) % structure_.group) + 2 < structure_.group) {
-          const double d = triple_[0] - 2.0 * triple_[1] + triple_[2];
-          group_sum_.add(d * d / 6.0);
-          ++groups_;
-        }
+      case variance_kind::stratum_differences:
+        add_stratum_differences(first, y);
         break;
-      }
       default:
         break;
     }
@@ -115,6 +110,59 @@ class sample_statistics {
   }
 
  private:
+  // One value into the per-stratum Welford accumulator; a finished stratum adds its variance.
+  // Strata are whole within a chunk, so the count alone says where a stratum ends.
+  void add_within_strata(double y) noexcept {
+    stratum_.add(y);
+    if (stratum_.count() == structure_.group) {
+      group_sum_.add(stratum_.variance());
+      ++groups_;
+      stratum_ = welford{};
+    }
+  }
+
+  // Consecutive points in triples (index ≡ 0, 1, 2 mod 3); a triple counts when it lies in one
+  // row of `group` strata along the last axis, i.e. its last point is at row position ≥ 2.
+  // Positions advance by counters: one division per batch, not per point.
+  void add_stratum_differences(std::uint64_t first, std::span<const double> y) noexcept {
+    const std::uint64_t row = structure_.group;
+    // The batch's Σd² is a plain sum of at most 86 terms (error ≤ 86ε relative, far below the
+    // variance estimate's own sampling error), added to the Neumaier total once per batch.
+    // Locals, not members, inside the loop: stores to a member double could alias y, which would
+    // force a reload per point.
+    std::uint64_t position = first % 3;
+    std::uint64_t in_row = first % row;
+    double triple[3] = {triple_[0], triple_[1], triple_[2]};
+    double batch_sum = 0.0;
+    std::uint64_t triples = 0;
+    for (const double v : y) {
+      triple[position] = v;
+      if (position == 2 && in_row >= 2) {
+        const double d = triple[0] - 2.0 * triple[1] + triple[2];
+        batch_sum += d * d;
+        ++triples;
+      }
+      position = position == 2 ? 0 : position + 1;
+      in_row = in_row + 1 == row ? 0 : in_row + 1;
+    }
+    for (int k = 0; k < 3; ++k) triple_[k] = triple[k];
+    groups_ += triples;
+    group_sum_.add(batch_sum / 6.0);
+  }
+
+  // Σ g(y) with four interleaved partial sums combined as (s₀ + s₁) + (s₂ + s₃): the same order
+  // on every machine and instruction set, and four independent additions per step.
+  template <class G>
+  static double four_lane_sum(std::span<const double> y, G g) noexcept {
+    double lane[4] = {0.0, 0.0, 0.0, 0.0};
+    std::size_t i = 0;
+    for (; i + 4 <= y.size(); i += 4) {
+      for (std::size_t l = 0; l < 4; ++l) lane[l] += g(y[i + l]);
+    }
+    for (std::size_t l = 0; i < y.size(); ++i, ++l) lane[l] += g(y[i]);
+    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+  }
+
   variance_structure structure_;
   neumaier_sum sum_;
   welford all_;
@@ -151,7 +199,7 @@ estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_valu
           const std::span<double> yb(y.data(), count);
           points.generate(first, ub);
           batch_values(first, ub, yb);
-          for (std::size_t i = 0; i < count; ++i) stats.add(first + i, yb[i]);
+          stats.add_batch(first, yb);
         }
         return stats;
       },

@@ -66,11 +66,26 @@ class jittered_points {
     std::span<std::uint64_t> cell = s > small.size() ? std::span<std::uint64_t>(large)
                                                      : std::span<std::uint64_t>(small).first(s);
     const std::uint64_t count = out.size() / s;
+    const std::uint64_t k = grid_.per_axis();
+    grid_.cell(first / m_, cell);
+    // The last axis moves fastest: its coordinate lives in a register and only its wrap-around
+    // touches the other axes (a counter kept in memory would chain every point through a
+    // store-to-load forward).
+    std::uint64_t last = cell[s - 1];
+    std::uint64_t in_stratum = first % m_;  // points of the current stratum already placed
     for (std::uint64_t p = 0; p < count; ++p) {
-      grid_.cell((first + p) / m_, cell);
-      for (std::size_t j = 0; j < s; ++j) {
-        double& x = out[p * s + j];
-        x = std::min((static_cast<double>(cell[j]) + x) * inv_k, largest_below_one);
+      double* x = out.data() + p * s;
+      for (std::size_t j = 0; j + 1 < s; ++j) {
+        x[j] = std::min((static_cast<double>(cell[j]) + x[j]) * inv_k, largest_below_one);
+      }
+      x[s - 1] = std::min((static_cast<double>(last) + x[s - 1]) * inv_k, largest_below_one);
+      if (++in_stratum == m_) {
+        in_stratum = 0;
+        if (++last == k) {
+          last = 0;
+          cell[s - 1] = k - 1;  // so that next_cell carries into the leading axes
+          grid_.next_cell(cell);
+        }
       }
     }
   }

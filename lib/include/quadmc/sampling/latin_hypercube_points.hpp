@@ -16,6 +16,7 @@
 #include "quadmc/sampling/random_permutation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -46,11 +47,18 @@ class latin_hypercube_points {
     rng_.fill_uniform(first * s_, out);
     const double inv_n = 1.0 / static_cast<double>(n_);
     const std::uint64_t count = out.size() / s_;
-    for (std::uint64_t p = 0; p < count; ++p) {
+    // Axis by axis over runs of 64 points: each permutation runs over consecutive indices
+    // (random_permutation::apply), its rows kept in a buffer on the stack.
+    std::array<std::uint64_t, 64> rows;
+    for (std::uint64_t begin = 0; begin < count; begin += rows.size()) {
+      const auto run =
+          static_cast<std::size_t>(std::min<std::uint64_t>(rows.size(), count - begin));
       for (std::size_t j = 0; j < s_; ++j) {
-        double& x = out[p * s_ + j];
-        const auto row = static_cast<double>(permutations_[j](first + p));
-        x = std::min((row + x) * inv_n, largest_below_one);
+        permutations_[j].apply(first + begin, std::span(rows).first(run));
+        for (std::size_t p = 0; p < run; ++p) {
+          double& x = out[(begin + p) * s_ + j];
+          x = std::min((static_cast<double>(rows[p]) + x) * inv_n, largest_below_one);
+        }
       }
     }
   }

@@ -20,6 +20,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <span>
 
 namespace quadmc {
 
@@ -46,13 +47,23 @@ class random_permutation {
   std::uint64_t operator()(std::uint64_t i) const noexcept {
     std::uint64_t x = i;
     do {
-      for (int r = 0; r < rounds; ++r) {
-        x ^= keys_[2 * r] & mask_;
-        x = (x * keys_[2 * r + 1]) & mask_;
-        x ^= x >> shift_;
-      }
+      x = bijection(x);
     } while (x >= n_);
     return x;
+  }
+
+  // out[k] = (*this)(first + k) for k < out.size(). One pass of the bijection over the whole
+  // run first (independent iterations without a branch, which the CPU overlaps), then the cycle
+  // walk only for the values that landed in [n, 2^w): fewer than half of them, none when n is a
+  // power of two.
+  // (A copy of *this is used: out and the keys are both uint64_t, so without it every store to
+  // out would force the keys to be reloaded.)
+  void apply(std::uint64_t first, std::span<std::uint64_t> out) const noexcept {
+    const random_permutation p = *this;
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = p.bijection(first + k);
+    for (std::uint64_t& x : out) {
+      while (x >= p.n_) x = p.bijection(x);
+    }
   }
 
  private:
@@ -60,6 +71,17 @@ class random_permutation {
   // progression modulo 2^w before the last xorshift); three pass the uniformity test of
   // random_permutation_test.cpp.
   static constexpr int rounds = 3;
+
+  // The keyed bijection of [0, 2^w) that the permutation walks.
+  std::uint64_t bijection(std::uint64_t x) const noexcept {
+    for (int r = 0; r < rounds; ++r) {
+      x ^= keys_[2 * r] & mask_;
+      x = (x * keys_[2 * r + 1]) & mask_;
+      x ^= x >> shift_;
+    }
+    return x;
+  }
+
   std::uint64_t n_;
   std::uint64_t mask_ = 0;
   int shift_ = 1;

@@ -97,6 +97,17 @@ class stratum_grid {
     }
   }
 
+  // cell ← the cell of the next stratum, c + 1: a mixed-radix increment (an odometer), so a run
+  // of consecutive strata costs no division after its first cell() (s divisions per point
+  // otherwise). Past the last stratum it wraps to cell 0.
+  template <class Out>
+  void next_cell(Out&& cell) const noexcept {
+    for (std::size_t j = s_; j-- > 0;) {
+      if (++cell[j] < k_) return;
+      cell[j] = 0;
+    }
+  }
+
  private:
   std::size_t s_;
   std::uint64_t k_;
