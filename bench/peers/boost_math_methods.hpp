@@ -21,7 +21,8 @@
 #pragma once
 
 #include "peer_method.hpp"
-#include "point_adapter.hpp"
+
+#include "point_adapter.hpp"  // bench/common
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/naive_monte_carlo.hpp>
@@ -54,7 +55,9 @@ peer_method boost_naive_monte_carlo(const F& f, unsigned threads, double varianc
   m.throughput_control = throughput_n;
   m.run = [&f, workers, variance](std::uint64_t n, std::uint64_t seed) {
     const std::size_t s = f.dimension();
-    auto g = [&f, s](const std::vector<double>& x) { return evaluate_point(f, x.data(), s); };
+    auto g = [&f, s](const std::vector<double>& x) {
+      return bench::evaluate_point(f, x.data(), s);
+    };
     const std::vector<std::pair<double, double>> bounds(s, {0.0, 1.0});
     const double goal = std::sqrt(variance / static_cast<double>(n));
     boost::math::quadrature::naive_monte_carlo<double, decltype(g)> mc(
@@ -87,7 +90,7 @@ peer_method boost_quadrature(boost_quadrature_1d rule, const F& f,
     std::uint64_t calls = 0;
     auto g = [&f, &calls](double x) {
       ++calls;
-      return evaluate_point(f, &x, 1);
+      return bench::evaluate_point(f, &x, 1);
     };
     const double tolerance = std::pow(10.0, -static_cast<double>(k));
     double value = 0.0;

@@ -15,7 +15,8 @@
 #pragma once
 
 #include "peer_method.hpp"
-#include "point_adapter.hpp"
+
+#include "point_adapter.hpp"  // bench/common
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_monte.h>
@@ -47,7 +48,7 @@ template <class F>
 double gsl_point(double* x, std::size_t dim, void* params) {
   auto* p = static_cast<counted_integrand<F>*>(params);
   ++p->calls;
-  return evaluate_point(*p->f, x, dim);
+  return bench::evaluate_point(*p->f, x, dim);
 }
 
 struct gsl_rng_deleter {

@@ -18,18 +18,20 @@
 //    repeated at least twice and until 2 ms have passed (at most 100 times) and its fastest
 //    repetition is its time;
 //  - time to 10^−3 and 10^−5 from the ladder (time_to_accuracy.hpp);
-//  - peak RSS of quadmc's methods at N = 10^6 and 10^8 in fresh child processes (peak_rss.hpp).
+//  - peak RSS of quadmc's methods at N = 10^6 and 10^8 in fresh child processes
+//    (bench/common/peak_rss.hpp).
 // Timer: std::chrono::steady_clock. Nothing here is asserted: the targets are reported, met or not.
 // Not a test and not part of CI: it takes about two minutes on 2 cores.
 #include "boost_math_methods.hpp"
 #include "cubature_methods.hpp"
 #include "gsl_monte_methods.hpp"
-#include "peak_rss.hpp"
 #include "peer_method.hpp"
 #include "quadmc_methods.hpp"
-#include "scalar_reference_loop.hpp"
 #include "sum_of_coordinates.hpp"
 #include "time_to_accuracy.hpp"
+
+#include "peak_rss.hpp"               // bench/common
+#include "scalar_reference_loop.hpp"  // bench/common
 
 #include "quadmc/core/rng.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
@@ -201,7 +203,8 @@ std::vector<peer_method> methods_for(const F& f, const configuration& c, double 
   reference.ladder = c.ladder;
   reference.throughput_control = c.throughput_n;
   reference.run = [&f](std::uint64_t n, std::uint64_t seed) {
-    return scalar_reference_loop(f, n, seed);
+    const bench::scalar_loop_result r = bench::scalar_reference_loop(f, n, seed);
+    return run_result{r.value, r.evaluations};
   };
   m.push_back(std::move(reference));
   const std::vector<std::uint64_t> none;
@@ -384,7 +387,7 @@ int run_one(const F& f, const std::string& method, std::uint64_t n, unsigned thr
   if (method == "baseline") {
     value = f.info().exact;
   } else if (method == "reference") {
-    value = scalar_reference_loop(f, n, seed).value;
+    value = bench::scalar_reference_loop(f, n, seed).value;
   } else if (method == "plain") {
     value = monte_carlo(f, independent_points(s, n, seed, 1), threads).value;
   } else if (method == "jittered") {
@@ -401,7 +404,7 @@ int run_one(const F& f, const std::string& method, std::uint64_t n, unsigned thr
     return 2;
   }
   if (!std::isfinite(value)) return 1;
-  std::cout << peak_rss_kib() << std::endl;
+  std::cout << bench::peak_rss_kib() << std::endl;
   return 0;
 }
 
@@ -556,9 +559,9 @@ class report {
          "quadmc's layout); Boost `trapezoidal` (max_refinements 20), `gauss_kronrod<double,15>` "
          "(max_depth 15), `tanh_sinh` for s = 1 with tolerances 10⁻² … 10⁻¹²; the scalar "
          "reference loop (xoshiro256+, s uniforms per point, the integrand inlined through a "
-         "batch of one, plain sum, `bench/peers/scalar_reference_loop.hpp`). Per-point peers call "
-         "the suite's integrand through a batch of one (`point_adapter.hpp`); evaluations are "
-         "counted in every adapter, never assumed.\n\n";
+         "batch of one, plain sum, `bench/common/scalar_reference_loop.hpp`). Per-point peers call "
+         "the suite's integrand through a batch of one (`bench/common/point_adapter.hpp`); "
+         "evaluations are counted in every adapter, never assumed.\n\n";
     targets(o);
     throughput(o);
     accuracy(o);
@@ -755,8 +758,9 @@ class report {
          "process — this program re-executed as `quadmc_peers --one METHOD genz_gaussian 2 N 2` "
          "— that integrates Genz Gaussian, s = 2, with 2 threads. Not getrusage's ru_maxrss: "
          "Linux carries it over fork and exec, so a child would report the parent's peak "
-         "(peak_rss.hpp). Jittered and tensor sizes are the nearest valid ones (k² and (n+1)²). "
-         "Baseline: the same child doing no integration (libraries, one integrand). What "
+         "(bench/common/peak_rss.hpp). Jittered and tensor sizes are the nearest valid ones "
+         "(k² and (n+1)²). Baseline: the same child doing no integration (libraries, one "
+         "integrand). What "
          "grows with N is bounded: parallel_reduce folds at most 4096 chunk results at a "
          "time (core/parallel_reduce.hpp), so the slots stop growing at 4096 chunks — "
          "4096 × 128-byte sample_statistics = 512 KiB for Monte Carlo (reached at 5·10⁷ "
@@ -868,7 +872,8 @@ int run(int argc, char** argv) {
   std::cerr << "peak RSS:" << std::flush;
   // The memory case: Genz Gaussian, s = 2, 2 threads.
   auto one = [](const std::string& method, std::uint64_t n) {
-    return child_peak_rss_kib({"--one", method, "genz_gaussian", "2", std::to_string(n), "2"});
+    return bench::child_peak_rss_kib(
+        {"--one", method, "genz_gaussian", "2", std::to_string(n), "2"});
   };
   const long baseline = one("baseline", 1);
   std::vector<rss_row> rss;

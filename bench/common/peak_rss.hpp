@@ -9,6 +9,10 @@
 // arguments of one measurement, runs it, and prints its own VmHWM (peak_rss_kib()) on stdout; the
 // parent reads it through a pipe. The child's baseline (libraries, no integration) is measured
 // the same way and reported beside, so the memory a method adds is visible. Linux only.
+//
+// Used by both the peers program (`quadmc_peers --one …`) and the Google Benchmark binary
+// (`integrators_bench --peak-rss-child …`); each handles its child arguments in main() before
+// anything else runs.
 #pragma once
 
 #include <sys/types.h>
@@ -20,7 +24,7 @@
 #include <string>
 #include <vector>
 
-namespace quadmc::peers {
+namespace quadmc::bench {
 
 // VmHWM of this process in KiB (peak resident set since its last execve), or −1 if unreadable.
 inline long peak_rss_kib() {
@@ -32,8 +36,8 @@ inline long peak_rss_kib() {
   return -1;
 }
 
-// Runs /proc/self/exe with `arguments` (argv[1…]); the child must print its peak_rss_kib() as
-// the last thing on stdout and exit with status 0. Returns that number; throws otherwise.
+// Runs /proc/self/exe with `arguments` (argv[1…]); the child must print its peak_rss_kib() and
+// nothing before it on stdout, and exit with status 0. Returns that number; throws otherwise.
 inline long child_peak_rss_kib(const std::vector<std::string>& arguments) {
   std::vector<std::string> args{"/proc/self/exe"};
   args.insert(args.end(), arguments.begin(), arguments.end());
@@ -60,9 +64,11 @@ inline long child_peak_rss_kib(const std::vector<std::string>& arguments) {
   int status = 0;
   if (waitpid(pid, &status, 0) != pid) throw std::runtime_error("waitpid failed");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || output.empty()) {
-    throw std::runtime_error("peak-RSS child failed: " + arguments.at(1));
+    std::string command = "/proc/self/exe";
+    for (const auto& a : arguments) command += " " + a;
+    throw std::runtime_error("peak-RSS child failed: " + command);
   }
   return std::stol(output);
 }
 
-}  // namespace quadmc::peers
+}  // namespace quadmc::bench

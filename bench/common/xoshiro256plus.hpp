@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-namespace quadmc::peers {
+namespace quadmc::bench {
 
 class xoshiro256plus {
  public:
@@ -47,4 +47,4 @@ class xoshiro256plus {
   std::uint64_t state_[4];
 };
 
-}  // namespace quadmc::peers
+}  // namespace quadmc::bench
