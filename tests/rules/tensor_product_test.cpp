@@ -148,8 +148,8 @@ TEST(TensorProduct, ConvergesAtMinusROverS) {
 }
 
 // Chunks of 2^14 points folded in order: 1, 2, 3 and 8 threads give the same bits. 3D
-// trapezoid with 60 panels = 61³ = 226 981 points = 14 chunks, the last one partial; 1D Gauss
-// with 100 000 panels × 3 = 18.3 chunks.
+// trapezoid, midpoint and Simpson with 60 panels = 61³ = 226 981 points = 14 chunks, the last one
+// partial; 1D Gauss with 100 000 panels × 3 = 18.3 chunks.
 TEST(TensorProduct, BitwiseIdenticalForAnyThreadCount) {
   const exp_of_sum f3{quadmc::box{{0.0, -0.5, 0.25}, {1.0, 0.5, 2.0}}};
   const exp_of_sum f1{quadmc::box{{-1.0}, {1.0}}};
@@ -163,6 +163,17 @@ TEST(TensorProduct, BitwiseIdenticalForAnyThreadCount) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(r1.value), std::bit_cast<std::uint64_t>(serial1.value))
         << "threads = " << threads;
     EXPECT_EQ(r3.evaluations, 61U * 61U * 61U);
+    // The other composite rules on the same 3D grid size (midpoint 60³, Simpson 61³).
+    EXPECT_EQ(
+        std::bit_cast<std::uint64_t>(
+            quadmc::integrate(f3, quadmc::midpoint_rule{}, 60, threads).value),
+        std::bit_cast<std::uint64_t>(quadmc::integrate(f3, quadmc::midpoint_rule{}, 60, 1).value))
+        << "midpoint, threads = " << threads;
+    EXPECT_EQ(
+        std::bit_cast<std::uint64_t>(
+            quadmc::integrate(f3, quadmc::simpson_rule{}, 60, threads).value),
+        std::bit_cast<std::uint64_t>(quadmc::integrate(f3, quadmc::simpson_rule{}, 60, 1).value))
+        << "simpson, threads = " << threads;
   }
   EXPECT_NEAR(serial3.value, f3.info().exact, 1e-3 * f3.info().exact);  // h² = 1/3600
 }

@@ -20,17 +20,24 @@ class simpson_rule {
  public:
   class node_set {
    public:
-    explicit node_set(std::uint64_t n) : n_(n), panels_(static_cast<double>(n)) {}
+    // The three weights h/3·{1, 4, 2} are divided once here, not per node (a tensor grid asks
+    // for a weight per point); same quotients, same bits.
+    explicit node_set(std::uint64_t n)
+        : n_(n),
+          panels_(static_cast<double>(n)),
+          end_weight_(1.0 / (3.0 * panels_)),
+          odd_weight_(4.0 / (3.0 * panels_)),
+          even_weight_(2.0 / (3.0 * panels_)) {}
     std::uint64_t size() const noexcept { return n_ + 1; }
     double node(std::uint64_t k) const noexcept { return static_cast<double>(k) / panels_; }
     double weight(std::uint64_t k) const noexcept {
-      const double factor = (k == 0 || k == n_) ? 1.0 : ((k & 1U) != 0 ? 4.0 : 2.0);
-      return factor / (3.0 * panels_);
+      return (k == 0 || k == n_) ? end_weight_ : ((k & 1U) != 0 ? odd_weight_ : even_weight_);
     }
 
    private:
     std::uint64_t n_;
     double panels_;
+    double end_weight_, odd_weight_, even_weight_;
   };
 
   std::string_view name() const noexcept { return "simpson"; }

@@ -154,6 +154,23 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
   const std::size_t chunks =
       static_cast<std::size_t>(total / tensor_chunk_points + (total % tensor_chunk_points != 0));
 
+  // Nodes and weights come from a table built once per call when an axis has at most
+  // tensor_chunk_points of them (each entry is then reused by m^(s−1) points; the rules' node()
+  // and weight() divide), else they are computed per point; the same functions either way, so
+  // the same bits. The last axis moves fastest; its coordinates are tabulated too.
+  const std::size_t last = s - 1;
+  const bool tabulated = m <= tensor_chunk_points;
+  const std::size_t table_size = tabulated ? static_cast<std::size_t>(m) : 0;
+  std::vector<double> node_table(table_size), weight_table(table_size);
+  std::vector<double> last_coordinate(table_size);
+  for (std::size_t k = 0; k < table_size; ++k) {
+    node_table[k] = q.node(k);
+    weight_table[k] = q.weight(k);
+    last_coordinate[k] = lower[last] + width[last] * node_table[k];
+  }
+  auto node = [&](std::uint64_t k) { return tabulated ? node_table[k] : q.node(k); };
+  auto weight = [&](std::uint64_t k) { return tabulated ? weight_table[k] : q.weight(k); };
+
   // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
   auto chunk_sum = [&](std::size_t c, auto sum) {
     const std::uint64_t begin = static_cast<std::uint64_t>(c) * tensor_chunk_points;
@@ -166,8 +183,8 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
     std::vector<double> coordinate(s);
     std::vector<double> axis_weight(s);
     auto place = [&](std::size_t j) {
-      coordinate[j] = lower[j] + width[j] * q.node(index[j]);
-      axis_weight[j] = q.weight(index[j]);
+      coordinate[j] = lower[j] + width[j] * node(index[j]);
+      axis_weight[j] = weight(index[j]);
     };
     std::uint64_t rest = begin;
     for (std::size_t j = s; j-- > 0;) {
@@ -175,26 +192,42 @@ rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threa
       rest /= m;
       place(j);
     }
+    // The product weight is formed left to right, Π_{j<s−1} w_j first and the last axis's weight
+    // last, from the same factors wherever the chunk starts: it does not depend on the chunking.
+    auto leading_weight = [&] {
+      double w = 1.0;
+      for (std::size_t j = 0; j < last; ++j) w *= axis_weight[j];
+      return w;
+    };
+    double w_leading = leading_weight();
+    // Locals: a store through x could otherwise alias lower/width and force reloads per point.
+    const double last_lower = lower[last], last_width = width[last];
+    std::uint64_t k = index[last];  // the last axis's index, kept in a register
 
     for (std::uint64_t p = begin; p < end;) {
       const std::size_t count =
           static_cast<std::size_t>(std::min<std::uint64_t>(rule_batch_size, end - p));
       for (std::size_t i = 0; i < count; ++i) {
-        // The product weight is formed left to right from the same factors wherever the chunk
-        // starts, so it does not depend on the chunking either.
-        double w = 1.0;
-        for (std::size_t j = 0; j < s; ++j) {
-          x[i * s + j] = coordinate[j];
-          w *= axis_weight[j];
+        double* xi = x.data() + i * s;
+        for (std::size_t j = 0; j < last; ++j) xi[j] = coordinate[j];
+        if (tabulated) {
+          xi[last] = last_coordinate[k];
+          terms[i] = w_leading * weight_table[k];
+        } else {
+          xi[last] = last_lower + last_width * q.node(k);
+          terms[i] = w_leading * q.weight(k);
         }
-        terms[i] = w;
-        for (std::size_t j = s; j-- > 0;) {  // odometer step, last axis fastest
-          if (++index[j] < m) {
+        if (++k == m) {  // odometer carry into the leading axes
+          k = 0;
+          for (std::size_t j = last; j-- > 0;) {
+            if (++index[j] < m) {
+              place(j);
+              break;
+            }
+            index[j] = 0;
             place(j);
-            break;
           }
-          index[j] = 0;
-          place(j);
+          w_leading = leading_weight();
         }
       }
       const std::span<const double> xs(x.data(), count * s);

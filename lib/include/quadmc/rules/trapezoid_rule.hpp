@@ -20,17 +20,23 @@ class trapezoid_rule {
  public:
   class node_set {
    public:
-    explicit node_set(std::uint64_t n) : n_(n), panels_(static_cast<double>(n)) {}
+    // The two weights are divided once here, not per node; same quotients, same bits.
+    explicit node_set(std::uint64_t n)
+        : n_(n),
+          panels_(static_cast<double>(n)),
+          end_weight_(0.5 / panels_),
+          inner_weight_(1.0 / panels_) {}
     std::uint64_t size() const noexcept { return n_ + 1; }
     // k/n by division: exactly 0 and 1 at the ends, correctly rounded inside.
     double node(std::uint64_t k) const noexcept { return static_cast<double>(k) / panels_; }
     double weight(std::uint64_t k) const noexcept {
-      return (k == 0 || k == n_) ? 0.5 / panels_ : 1.0 / panels_;
+      return (k == 0 || k == n_) ? end_weight_ : inner_weight_;
     }
 
    private:
     std::uint64_t n_;
     double panels_;
+    double end_weight_, inner_weight_;
   };
 
   std::string_view name() const noexcept { return "trapezoid"; }
