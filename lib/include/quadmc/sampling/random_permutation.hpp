@@ -38,7 +38,10 @@ class random_permutation {
       h = mix64(h + 0x9e3779b97f4a7c15ULL);
       k = h;
     }
-    for (int r = 0; r < rounds; ++r) keys_[2 * r + 1] |= 1;  // multipliers must be odd
+    for (int r = 0; r < rounds; ++r) {
+      keys_[2 * r + 1] |= 1;  // multipliers must be odd
+      keys_[2 * r] &= mask_;  // x ^ (k & mask) = (x ^ k) & mask for x < 2^w: mask once, here
+    }
   }
 
   std::uint64_t size() const noexcept { return n_; }
@@ -60,6 +63,7 @@ class random_permutation {
   // out would force the keys to be reloaded.)
   void apply(std::uint64_t first, std::span<std::uint64_t> out) const noexcept {
     const random_permutation p = *this;
+#pragma GCC unroll 4
     for (std::size_t k = 0; k < out.size(); ++k) out[k] = p.bijection(first + k);
     for (std::uint64_t& x : out) {
       while (x >= p.n_) x = p.bijection(x);
@@ -75,7 +79,7 @@ class random_permutation {
   // The keyed bijection of [0, 2^w) that the permutation walks.
   std::uint64_t bijection(std::uint64_t x) const noexcept {
     for (int r = 0; r < rounds; ++r) {
-      x ^= keys_[2 * r] & mask_;
+      x ^= keys_[2 * r];
       x = (x * keys_[2 * r + 1]) & mask_;
       x ^= x >> shift_;
     }
