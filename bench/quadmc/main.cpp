@@ -6,6 +6,7 @@
 #include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/simd_level.hpp"
 #include "quadmc/report/compare.hpp"
 #include "quadmc/report/results_folder.hpp"
 #include "quadmc/scene/parse.hpp"
@@ -31,8 +32,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The SIMD level is part of what fixes the last bits of exp/cos (core/simd_level.hpp), so the
+// results page names it beside the thread count.
 std::string machine_description() {
-  return fmt::format("{} hardware threads", std::thread::hardware_concurrency());
+  return fmt::format("{} hardware threads, SIMD level {} (QUADMC_SIMD to choose)",
+                     std::thread::hardware_concurrency(),
+                     quadmc::to_string(quadmc::active_simd_level()));
 }
 
 // The folder a run writes, absolute and without a trailing separator: with "out/" filename() is
@@ -172,6 +177,8 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
+    // A bad QUADMC_SIMD is reported before any work, not from inside the first batch.
+    (void)quadmc::active_simd_level();
     if (*run) return run_command(scene_file, out_dir, threads);
     if (*plan) return plan_command(scene_file);
     if (*list) {

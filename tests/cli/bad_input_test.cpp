@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -127,6 +128,23 @@ TEST(BadInputTest, NonexistentSceneFile) {
   EXPECT_NE(r.exit_status, 0) << describe(r);
   EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << describe(r);
   EXPECT_TRUE(dir.entries().empty()) << describe(r);
+}
+
+// QUADMC_SIMD picks the kernels' instruction set (core/simd_level.hpp); a misspelt level is one
+// line naming the variable and the levels, before any work and with no folder written.
+TEST(BadInputTest, UnknownSimdLevelInTheEnvironment) {
+  scratch_folder dir;
+  const fs::path scene = dir / "scene.toml";
+  write_text(scene, valid_tables);
+  ::setenv("QUADMC_SIMD", "avx3", 1);
+  const command_result r = run_quadmc(dir, {"run", scene.string()});
+  ::unsetenv("QUADMC_SIMD");
+  EXPECT_EQ(r.exit_status, 1) << describe(r);
+  EXPECT_EQ(r.err,
+            "quadmc: invalid QUADMC_SIMD = avx3: expected one of scalar, sse2, avx2, avx512\n")
+      << describe(r);
+  EXPECT_TRUE(r.out.empty()) << describe(r);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.toml"}) << describe(r);
 }
 
 }  // namespace
