@@ -68,23 +68,33 @@ class jittered_points {
     const std::uint64_t count = out.size() / s;
     const std::uint64_t k = grid_.per_axis();
     grid_.cell(first / m_, cell);
-    // The last axis moves fastest: its coordinate lives in a register and only its wrap-around
-    // touches the other axes (a counter kept in memory would chain every point through a
-    // store-to-load forward).
-    std::uint64_t last = cell[s - 1];
+    // The last axis moves fastest: its coordinate lives in a register, as a double (exact: cell
+    // coordinates are integers < 2^53), so no integer conversion or division is paid per point;
+    // only its wrap-around touches the other axes (a counter kept in memory would chain every
+    // point through a store-to-load forward).
+    std::array<double, 16> small_leading{};
+    std::vector<double> large_leading(s > small_leading.size() ? s : 0);
+    const std::span<double> leading = s > small_leading.size()
+                                          ? std::span<double>(large_leading)
+                                          : std::span<double>(small_leading).first(s);
+    for (std::size_t j = 0; j + 1 < s; ++j) leading[j] = static_cast<double>(cell[j]);
+    const double k_double = static_cast<double>(k);
+    double last = static_cast<double>(cell[s - 1]);
     std::uint64_t in_stratum = first % m_;  // points of the current stratum already placed
     for (std::uint64_t p = 0; p < count; ++p) {
       double* x = out.data() + p * s;
       for (std::size_t j = 0; j + 1 < s; ++j) {
-        x[j] = std::min((static_cast<double>(cell[j]) + x[j]) * inv_k, largest_below_one);
+        x[j] = std::min((leading[j] + x[j]) * inv_k, largest_below_one);
       }
-      x[s - 1] = std::min((static_cast<double>(last) + x[s - 1]) * inv_k, largest_below_one);
+      x[s - 1] = std::min((last + x[s - 1]) * inv_k, largest_below_one);
       if (++in_stratum == m_) {
         in_stratum = 0;
-        if (++last == k) {
-          last = 0;
+        last += 1.0;
+        if (last == k_double) {
+          last = 0.0;
           cell[s - 1] = k - 1;  // so that next_cell carries into the leading axes
           grid_.next_cell(cell);
+          for (std::size_t j = 0; j + 1 < s; ++j) leading[j] = static_cast<double>(cell[j]);
         }
       }
     }
