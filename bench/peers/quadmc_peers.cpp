@@ -8,8 +8,8 @@
 //   /usr/bin/python3 bench/peers/plot_peers.py DIR   then draws DIR/work_precision_*.svg
 //
 // What is measured, and how (the README written here repeats it for the reader):
-//  - throughput: each method at N ≥ 10^6 (2^20 points for Monte Carlo; the smallest grid with
-//    ≥ 10^6 points for tensor rules; jittered k^s nearest 2^20), run 5 times with the same seed
+//  - throughput: each method at N ≥ 4·10^6 (2^22 points for Monte Carlo; the smallest grid with
+//    ≥ 4·10^6 points for tensor rules; jittered k^s nearest 2^22), run 5 times with the same seed
 //    in 5 rounds over all methods, the best of the 5 (highest evaluations per second) kept: on a
 //    shared 2-core machine the noise only ever slows a run down, so the best run is the closest
 //    to the method's own cost;
@@ -34,6 +34,7 @@
 #include "scalar_reference_loop.hpp"  // bench/common
 
 #include "quadmc/core/rng.hpp"
+#include "quadmc/core/simd_level.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
 #include "quadmc/functions/genz.hpp"
 #include "quadmc/sampling/independent_points.hpp"
@@ -82,8 +83,10 @@ struct configuration {
   std::vector<std::uint64_t> ladder{100, 316, 1000, 3162, 10000, 31623, 100000, 316228, 1000000};
   std::vector<std::uint64_t> boost_naive_ladder{100000, 1000000};  // ≥ 0.1 s per run anyway
   std::vector<std::uint64_t> tolerance_exponents{2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
-  std::uint64_t throughput_n = std::uint64_t{1} << 20;
-  std::uint64_t tensor_throughput_n = 1000000;
+  // 2^22: at quadmc's 150–250 M evaluations/s a one-thread run of 2^20 lasts 4–7 ms, so the
+  // fixed cost of starting threads blurred the two-thread ratio; 2^22 runs last 15–30 ms.
+  std::uint64_t throughput_n = std::uint64_t{1} << 22;
+  std::uint64_t tensor_throughput_n = 4000000;
   int repetitions = 3;      // seeds per ladder point of a random method
   int throughput_runs = 5;  // best of
   std::vector<std::uint64_t> rss_sizes{1000000, 100000000};
@@ -532,15 +535,17 @@ class report {
          "python3-matplotlib):\n\n```sh\n"
       << command << "\n```\n\n";
     o << fmt::format(
-        "Machine: {}, {} hardware threads (shared with other work while measuring). Compiler: "
+        "Machine: {}, {} hardware threads (shared with other work while measuring); quadmc's "
+        "kernels at SIMD level {} (chosen at run time, core/simd_level.hpp). Compiler: "
         "GCC {}; build: {}. GSL {}, Boost {}, cubature (Debian libcubature-dev). Whole run: "
         "{:.0f} s; load average (1/5/15 min) {} before, {} after.\n\n",
-        cpu_model(), std::thread::hardware_concurrency(), __VERSION__, QUADMC_PEERS_BUILD,
+        cpu_model(), std::thread::hardware_concurrency(),
+        quadmc::to_string(quadmc::active_simd_level()), __VERSION__, QUADMC_PEERS_BUILD,
         GSL_VERSION, BOOST_LIB_VERSION, wall_, st_.load_before, st_.load_after);
     o << "How it is timed: std::chrono::steady_clock around one whole call of each method "
          "(set-up included: point-set construction, GSL state and generator allocation). "
-         "**Throughput** rows: N ≥ 10⁶ evaluations (2^20 for the Monte Carlo methods; "
-         "jittered k^s nearest 2^20; tensor rules the smallest (n+1)^s ≥ 10⁶), run "
+         "**Throughput** rows: N ≥ 4·10⁶ evaluations (2^22 for the Monte Carlo methods; "
+         "jittered k^s nearest 2^22; tensor rules the smallest (n+1)^s ≥ 4·10⁶), run "
       << c_.throughput_runs
       << " times with one seed, in rounds (each round runs every method once, so a burst of "
          "load hits all methods alike), the **best** run kept (highest evaluations/s: on a "
