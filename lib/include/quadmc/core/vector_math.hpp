@@ -5,7 +5,7 @@
 // integrand; libmvec evaluates 2, 4 or 8 of them per call (SSE2, AVX2, AVX-512 variants of the
 // x86_64 vector function ABI), chosen at run time by simd_level.hpp. Accuracy: glibc documents
 // libmvec's functions to 4 ulp, scalar glibc's to under 1 ulp; the two paths are compared on every
-// integrand in tests/core/vector_math_test.cpp and tests/functions/vector_paths_test.cpp, which
+// integrand in tests/core/vector_math_test.cpp and tests/functions/catalogue_test.cpp, which
 // state the bound they hold. Every element goes through the same vector routine (a short tail is
 // padded, not handed to scalar code), so a point's value does not depend on where in a batch it
 // falls.

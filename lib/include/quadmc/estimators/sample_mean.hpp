@@ -14,9 +14,9 @@
 //    two passes (each with four interleaved partial sums, a fixed order the compiler can keep in
 //    vector registers), merged into the chunk by Chan, Golub & LeVeque's formula
 //    (core/welford.hpp); the batch sums are added with Neumaier summation, so the value's rounding
-//    error stays at the batch level (≤ 64ε·mean|Y| for 256 terms, Higham §4.2) and does not grow
-//    with N (Boost's naive_monte_carlo explains why a plain running sum's εN error eventually
-//    exceeds σ/√N). Per-sample Welford updates cost a division each; this costs none.
+//    error stays at the batch level (about 65ε·mean|Y| for 4 lanes of 64 terms, Higham §4.2) and
+//    does not grow with N (Boost's naive_monte_carlo explains why a plain running sum's εN error
+//    eventually exceeds σ/√N). Per-sample Welford updates cost a division each; this costs none.
 //  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
 #pragma once
 
