@@ -8,28 +8,18 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/core/ulp_distance.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace {
 
 using quadmc::simd_level;
-
-std::uint64_t ulp_distance(double a, double b) {
-  auto ordered = [](double v) {
-    const auto bits = std::bit_cast<std::int64_t>(v);
-    return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
-  };
-  const std::int64_t ia = ordered(a), ib = ordered(b);
-  return ia > ib ? static_cast<std::uint64_t>(ia) - static_cast<std::uint64_t>(ib)
-                 : static_cast<std::uint64_t>(ib) - static_cast<std::uint64_t>(ia);
-}
+using quadmc::ulp_distance;
 
 struct argument_range {
   bool is_exp;

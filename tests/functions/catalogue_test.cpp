@@ -5,13 +5,12 @@
 
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/core/ulp_distance.hpp"
 #include "quadmc/functions/genz.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
-#include <limits>
 
 namespace quadmc {
 namespace {
@@ -26,18 +25,6 @@ integrand_params params_for(const catalogue_entry& e) {
   }
   p.seed = 5;
   return p;
-}
-
-// Distance in units in the last place: how many doubles lie between a and b (0 when equal, also
-// for +0 and −0), through the ordered integer image of the IEEE-754 bits.
-std::uint64_t ulp_distance(double a, double b) {
-  auto ordered = [](double v) {
-    const auto bits = std::bit_cast<std::int64_t>(v);
-    return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
-  };
-  const std::int64_t ia = ordered(a), ib = ordered(b);
-  return ia > ib ? static_cast<std::uint64_t>(ia) - static_cast<std::uint64_t>(ib)
-                 : static_cast<std::uint64_t>(ib) - static_cast<std::uint64_t>(ia);
 }
 
 // The bound between the two paths: glibc documents libmvec's vector exp/cos to within 4 ulp of
