@@ -44,15 +44,6 @@ class simd_level_guard {
   quadmc::simd_level saved_;
 };
 
-std::vector<quadmc::simd_level> levels_of_this_cpu() {
-  std::vector<quadmc::simd_level> levels;
-  for (auto level : {quadmc::simd_level::scalar, quadmc::simd_level::sse2, quadmc::simd_level::avx2,
-                     quadmc::simd_level::avx512}) {
-    if (level <= quadmc::detected_simd_level()) levels.push_back(level);
-  }
-  return levels;
-}
-
 TEST(PhiloxBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
   const simd_level_guard guard;
   // Starts chosen to cross the tails of every kernel (2, 8, 16 blocks per step), odd indices,
@@ -67,7 +58,7 @@ TEST(PhiloxBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
   const std::size_t lengths[] = {0, 1, 2, 3, 5, 16, 17, 31, 32, 33, 255, 256, 257, 513};
   const std::uint64_t seed = 0x0123456789abcdefULL;
   const std::uint64_t stream = quadmc::stream_id({7, 11});
-  for (const quadmc::simd_level level : levels_of_this_cpu()) {
+  for (const quadmc::simd_level level : quadmc::available_simd_levels()) {
     quadmc::set_simd_level(level);
     const quadmc::philox_stream rng(seed, stream);
     for (const std::uint64_t first : starts) {
@@ -91,7 +82,7 @@ TEST(PhiloxBlocks, EveryLevelGivesTheSameBitsOnALongRun) {
   quadmc::set_simd_level(quadmc::simd_level::scalar);
   std::vector<double> scalar((1u << 16) + 3);
   rng.fill_uniform(5, scalar);
-  for (const quadmc::simd_level level : levels_of_this_cpu()) {
+  for (const quadmc::simd_level level : quadmc::available_simd_levels()) {
     quadmc::set_simd_level(level);
     std::vector<double> vector(scalar.size());
     rng.fill_uniform(5, vector);

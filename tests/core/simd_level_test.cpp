@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -34,6 +35,17 @@ TEST(SimdLevel, SetLevelIsTheActiveLevelAndScalarIsAlwaysSupported) {
   EXPECT_EQ(quadmc::active_simd_level(), quadmc::simd_level::scalar);
   quadmc::set_simd_level(saved);
   EXPECT_EQ(quadmc::active_simd_level(), saved);
+}
+
+TEST(SimdLevel, AvailableLevelsRunFromScalarToTheDetectedOneAndAreAccepted) {
+  const std::vector<quadmc::simd_level> levels = quadmc::available_simd_levels();
+  ASSERT_FALSE(levels.empty());
+  EXPECT_EQ(levels.front(), quadmc::simd_level::scalar);
+  EXPECT_EQ(levels.back(), quadmc::detected_simd_level());
+  EXPECT_EQ(levels.size(), static_cast<std::size_t>(quadmc::detected_simd_level()) + 1);
+  const quadmc::simd_level saved = quadmc::active_simd_level();
+  for (const quadmc::simd_level level : levels) EXPECT_NO_THROW(quadmc::set_simd_level(level));
+  quadmc::set_simd_level(saved);
 }
 
 TEST(SimdLevel, RefusesALevelAboveWhatTheCpuHas) {

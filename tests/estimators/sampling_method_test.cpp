@@ -37,9 +37,7 @@ constexpr point_set_kind all_kinds[] = {point_set_kind::independent, point_set_k
 // dependence on the thread count).
 TEST(SamplingMethod, EveryMethodIsBitwiseIdenticalForAnyThreadCount) {
   const simd_level saved = active_simd_level();
-  for (simd_level level :
-       {simd_level::scalar, simd_level::sse2, simd_level::avx2, simd_level::avx512}) {
-    if (level > detected_simd_level()) continue;
+  for (simd_level level : available_simd_levels()) {
     set_simd_level(level);
     // A scalar integrand and a catalogue one that uses vector exp (functions/genz.hpp).
     integrand_params p;

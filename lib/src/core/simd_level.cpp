@@ -56,6 +56,14 @@ simd_level detected_simd_level() noexcept {
   }
 }
 
+std::vector<simd_level> available_simd_levels() {
+  std::vector<simd_level> levels;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (supported(static_cast<simd_level>(i))) levels.push_back(static_cast<simd_level>(i));
+  }
+  return levels;
+}
+
 simd_level active_simd_level() {
   int level = chosen.load(std::memory_order_acquire);
   if (level >= 0) [[likely]]

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 namespace quadmc {
 
@@ -28,6 +29,10 @@ simd_level parse_simd_level(std::string_view text, std::string_view parameter = 
 
 // The best level this CPU and this build support (scalar on a non-x86-64 or non-glibc build).
 simd_level detected_simd_level() noexcept;
+
+// Every level this CPU and build support, scalar first: what set_simd_level() accepts (the
+// tests run each kernel at each of them).
+std::vector<simd_level> available_simd_levels();
 
 // The level the kernels use now: QUADMC_SIMD if set (read once), else detected_simd_level().
 // An invalid or unsupported QUADMC_SIMD throws invalid_argument on first use.
