@@ -1,17 +1,24 @@
 #!/usr/bin/env bash
-# The two commands of the README, and the install step they share.
+# The two commands of the README, the CI stages, and the install step they share.
 #
-#   ./run.sh bench   install what is missing, build (Release), run the default scene → results/
-#                    (extra arguments go to `quadmc run`, e.g. --out DIR, --threads T)
-#   ./run.sh test    install what is missing, build, run every test with CTest
+#   ./run.sh bench      install what is missing, build (Release), run the default scene → results/
+#                       (extra arguments go to `quadmc run`, e.g. --out DIR, --threads T)
+#   ./run.sh test       install what is missing, build, run every test with CTest
+#   ./run.sh sanitize   the same tests (the command's end-to-end runs included) under ASan + UBSan
+#   ./run.sh format     check that every C++ file is clang-format clean
 #   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
-#   ./run.sh deps    only install what is missing (idempotent: does nothing when all is present)
+#   ./run.sh consumer   install the package into a prefix and build an outside find_package user
+#   ./run.sh deps       only install what is missing (idempotent: does nothing when all is present)
+#   ./run.sh packages   print every package of every install list, one per line (.ci/run uses it)
 #
-# Every dependency is a Debian 12 package; nothing is downloaded from anywhere else.
+# Each command installs exactly the packages of its own list, so a machine that happens to have a
+# package already cannot hide a missing install step: .ci/run removes them all first (CI=true)
+# and reinstalls them through these commands. Every dependency is a Debian 12 package; nothing is
+# downloaded from anywhere else.
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# What the library and its tests need.
+# What the library and the quadmc command need to build.
 LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libgtest-dev libgmock-dev       # GoogleTest
               libbenchmark-dev                # Google Benchmark
@@ -20,11 +27,16 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libcli11-dev                    # CLI11 (command-line flags)
               libtomlplusplus-dev             # toml++ (scene files)
               librandom123-dev)               # Random123 (Philox counter-based RNG)
-# What only the benchmark command needs: plots (Debian's python3, not a pyenv one) and the
-# peers measured beside quadmc in bench/peers/ (GSL, cubature).
-BENCH_PACKAGES=(python3 python3-matplotlib libgsl-dev libcubature-dev)
+# Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
+# end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
+PLOT_PACKAGES=(python3 python3-matplotlib)
+# What the tests need: the library, and the plots of the end-to-end runs.
+TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}")
+# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/.
+BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev)
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
-FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
+FORMAT_PACKAGES=(clang-format)
 
 install_missing() {
   local missing=()
@@ -41,27 +53,53 @@ install_missing() {
 
 case "${1:-}" in
   deps)
-    install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}"
+    install_missing "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" "${FORMAT_PACKAGES[@]}"
     ;;
-  fuzz)
-    install_missing "${LIB_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}"
-    tests/fuzz/run.sh "${2:-60}" build/fuzz
+  packages)
+    printf '%s\n' "${BENCH_PACKAGES[@]}" "${TEST_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
+      "${FORMAT_PACKAGES[@]}" | sort -u
     ;;
   bench)
-    install_missing "${LIB_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
+    install_missing "${BENCH_PACKAGES[@]}"
     cmake --preset release >/dev/null
     cmake --build --preset release
     shift
     ./build/release/bench/quadmc run bench/scenes/default.toml "$@"
     ;;
   test)
-    install_missing "${LIB_PACKAGES[@]}"
+    install_missing "${TEST_PACKAGES[@]}"
     cmake --preset test >/dev/null
     cmake --build --preset test
     ctest --preset test
     ;;
+  sanitize)
+    install_missing "${TEST_PACKAGES[@]}"
+    cmake --preset sanitize >/dev/null
+    cmake --build --preset sanitize
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      ctest --preset sanitize -j2
+    ;;
+  format)
+    install_missing "${FORMAT_PACKAGES[@]}"
+    find lib bench tests \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
+      xargs -0 clang-format --dry-run --Werror
+    ;;
+  fuzz)
+    install_missing "${FUZZ_PACKAGES[@]}"
+    tests/fuzz/run.sh "${2:-60}" build/fuzz
+    ;;
+  consumer)
+    # Installs what the test preset built (run `./run.sh test` first).
+    install_missing "${LIB_PACKAGES[@]}"
+    rm -rf build/install build/consumer
+    cmake --install build/test --prefix build/install >/dev/null
+    cmake -S tests/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" \
+      >/dev/null
+    cmake --build build/consumer
+    ./build/consumer/consumer
+    ;;
   *)
-    echo "usage: ./run.sh bench | test | fuzz [SECONDS] | deps" >&2
+    echo "usage: ./run.sh bench | test | sanitize | format | fuzz [SECONDS] | consumer | deps | packages" >&2
     exit 2
     ;;
 esac
