@@ -6,15 +6,16 @@ Needs: Debian's python3 and python3-matplotlib (run.sh installs them); stdlib cs
 Not for: reading anything but the two CSV files of a results folder (their column contract is
 lib/include/quadmc/report/results_csv.hpp; added columns are ignored, a missing one is an error).
 
-Per (integrand, s) it writes, next to the CSV files, the two files README.md links
-(lib/src/report/markdown_report.cpp, keep the names in step):
-  <integrand>_s<s>.svg                 RMSE (|error| for a deterministic rule) against N = total
+Per (integrand, s) it writes, next to the CSV files, the two files README.md links, under names
+distinct for distinct (integrand, s) (the rule of lib/include/quadmc/report/markdown_report.hpp,
+keep the two in step):
+  error_<name>.svg                     RMSE (|error| for a deterministic rule) against N = total
                                        evaluations, log-log, one line per method; rounding-floor
                                        points as crosses off the line; dashed theory guides with the
                                        slope of slopes.csv's `theory` column, anchored at the
                                        method's first point and drawn over its fitted range (a
                                        guide shows the rate, not a bound).
-  work_precision_<integrand>_s<s>.svg  RMSE against seconds per estimate (seconds/repetitions).
+  work_precision_<name>.svg            RMSE against seconds per estimate (seconds/repetitions).
 Output is deterministic (fixed svg.hashsalt, no date in the metadata), so regenerating the plots
 of unchanged data does not churn git.
 """
@@ -38,14 +39,17 @@ SAFE = set(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 
 
 def plot_stem(name):
-    """Same rule as quadmc::plot_stem: every byte outside [A-Za-z0-9_.-] becomes '_'."""
-    return "".join(chr(b) if b in SAFE else "_" for b in name.encode("utf-8"))
+    """Same rule as quadmc::plot_stem, one-to-one: bytes in [A-Za-z0-9_.-] stay, any other byte
+    becomes "~XX" (two upper-case hex digits)."""
+    return "".join(chr(b) if b in SAFE else f"~{b:02X}" for b in name.encode("utf-8"))
 
 
-def plot_name(integrand, s):
-    """Same rule as quadmc's plot file names: "<stem>_s<s>", the suffix not repeated."""
-    stem, suffix = plot_stem(integrand), f"_s{s}"
-    return stem if stem.endswith(suffix) else stem + suffix
+def plot_files(integrand, s):
+    """Same names as quadmc::convergence_plot_file and quadmc::work_precision_plot_file: the
+    stem, with "_s=<s>" appended unless the integrand's name already ends in "_s<s>"."""
+    stem = plot_stem(integrand)
+    name = stem if stem.endswith(f"_s{s}") else f"{stem}_s={s}"
+    return f"error_{name}.svg", f"work_precision_{name}.svg"
 
 
 def read_csv(path, required):
@@ -154,12 +158,12 @@ def plot_folder(folder):
                 ax.plot([n0, n1], [e0, e0 * (n1 / n0) ** theory], "--", color=color,
                         linewidth=0.9, alpha=0.7)
                 theory_seen = True
-        name = plot_name(integrand, s)
-        finish(fig, ax, f"{folder}/{name}.svg", "N (integrand evaluations per estimate)",
+        error_file, work_precision_file = plot_files(integrand, s)
+        finish(fig, ax, f"{folder}/{error_file}", "N (integrand evaluations per estimate)",
                f"{integrand}, s = {s}: error against N", floor_seen, theory_seen)
-        finish(wfig, wax, f"{folder}/work_precision_{name}.svg", "seconds per estimate",
+        finish(wfig, wax, f"{folder}/{work_precision_file}", "seconds per estimate",
                f"{integrand}, s = {s}: work-precision", floor_seen, False)
-        written += [f"{name}.svg", f"work_precision_{name}.svg"]
+        written += [error_file, work_precision_file]
     return written
 
 

@@ -1,36 +1,102 @@
 // The `quadmc` command: run a scene, print its plan, list what scenes may name, compare two
-// result folders. Every failure is one line on stderr and a non-zero exit:
-//   1  bad input (scene file, flags, values) or a failed run
-//   1  compare found a regression (so it can gate CI); 0 when none
-//   2  command-line usage errors (CLI11's own codes otherwise)
+// result folders.
+//
+// Exit status (also in `quadmc --help`):
+//   0        success; for `compare`, no slope regression
+//   1        bad input (scene file, values), a failed run, a failed write (stdout included), a
+//            refused results folder; for `compare`, a slope regression (so it can gate CI)
+//   2        command-line usage error: unknown flag or subcommand, missing or malformed argument,
+//            value out of range. One line on stderr (CLI11's own codes 104–114 and its
+//            two-line message are not used); `--help` prints help on stdout and exits 0
+//   3        `compare` only: the folders are incomparable (B lacks a series or a fit of A, or
+//            no series is fitted in both), report/compare.hpp
+//   130/143  interrupted by SIGINT/SIGTERM: the plot process killed, this run's staging folder
+//            removed, the old results untouched (interruption.hpp)
+// Every failure is one line on stderr, "quadmc: …".
+//
+// Environment: QUADMC_SIMD pins the SIMD level (core/simd_level.hpp). Plots are drawn by
+// Debian's /usr/bin/python3 with python3-matplotlib (report/results_folder.hpp).
+//
+// `run` writes its folder by the rules of results_staging.hpp (own staging folder, lock, atomic
+// replace, never deleting what it did not create), checks before computing anything what would
+// make the write fail (folder name lengths, writability, a concurrent run, matplotlib when plots
+// are on), and touches no folder when every [output] is off. When stdout cannot be written (a
+// full disk, /dev/full, a closed pipe) the run still writes its folder, which is the product
+// (stdout only repeats the plan and the summary), and then exits 1 saying so.
 #include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/core/errors.hpp"
-#include "quadmc/core/parallel_reduce.hpp"
 #include "quadmc/core/simd_level.hpp"
 #include "quadmc/report/compare.hpp"
+#include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_folder.hpp"
 #include "quadmc/scene/parse.hpp"
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
 
 #include "catalogue_listing.hpp"
+#include "interruption.hpp"
 #include "progress_bar.hpp"
+#include "results_staging.hpp"
 #include "subprocess.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <stdexcept>
 #include <string>
-#include <system_error>
+#include <string_view>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using quadmc_cli::results_staging;
+namespace interruption = quadmc_cli::interruption;
+
+constexpr int exit_failure = 1;
+constexpr int exit_usage = 2;
+constexpr int exit_incomparable = 3;
+
+constexpr std::string_view exit_status_help =
+    "Exit status: 0 success (compare: no slope regression); 1 bad input, a failed run or write, "
+    "or (compare) a slope regression; 2 usage error; 3 (compare) incomparable: B lacks a series "
+    "or a fit of A, or no series is fitted in both; 130/143 interrupted by SIGINT/SIGTERM.\n"
+    "Environment: QUADMC_SIMD=scalar|sse2|avx2|avx512 pins the SIMD level.";
+
+// stdout is fully buffered when redirected, so a write error (a full disk, /dev/full, a closed
+// pipe) shows only when the buffer is flushed: every print is flushed and checked, and the first
+// error is kept for the exit status.
+class standard_output {
+ public:
+  void print(std::string_view text) noexcept {
+    if (error_ != 0) return;
+    errno = 0;
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() ||
+        std::fflush(stdout) != 0) {
+      error_ = errno != 0 ? errno : EIO;
+    }
+  }
+  bool failed() const noexcept { return error_ != 0; }
+  std::string message() const {
+    return fmt::format("cannot write to standard output: {}", std::strerror(error_));
+  }
+
+ private:
+  int error_ = 0;
+};
 
 // The SIMD level is part of what fixes the last bits of exp/cos (core/simd_level.hpp), so the
 // results page names it beside the thread count.
@@ -40,156 +106,279 @@ std::string machine_description() {
                      quadmc::to_string(quadmc::active_simd_level()));
 }
 
-// The folder a run writes, absolute and without a trailing separator: with "out/" filename() is
-// empty, so the staging folder "out/.partial" would land inside the target and be deleted with it;
-// with "." the target would be the working directory itself. Checked before the run, so a refusal
-// costs nothing: an existing folder is replaced only when it holds nothing but files a run writes
-// (CSV, README.md, SVG plots), so `--out .` or `--out ~` is an error, not a deleted folder.
-fs::path results_folder(const std::string& out_dir, const std::string& scene_name) {
-  const fs::path given = out_dir.empty() ? fs::path("results") / scene_name : fs::path(out_dir);
-  fs::path folder = fs::absolute(given).lexically_normal();
-  if (!folder.has_filename()) folder = folder.parent_path();  // "/a/out/" → "/a/out"
-  if (!folder.has_filename() || folder == folder.root_path()) {
-    throw quadmc::invalid_argument("--out", given.string(), "a folder below the file system root");
-  }
+// Before the run, not after it: a missing matplotlib found by the plot step would throw away the
+// whole computation.
+void check_plotting() {
+  const std::string python = quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, "").front();
   std::error_code ec;
-  const fs::file_status status = fs::status(folder, ec);
-  if (!fs::exists(status)) return folder;
-  if (!fs::is_directory(status)) {
-    throw quadmc::invalid_argument("--out", given.string(), "a folder, not a file");
+  if (!fs::is_regular_file(QUADMC_PLOT_SCRIPT, ec)) {
+    throw std::runtime_error(fmt::format(
+        "plots need the plot script {}, which is missing (or set plots = false in [output])",
+        QUADMC_PLOT_SCRIPT));
   }
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    const fs::path name = entry.path().filename();
-    const bool written_by_a_run = name == "convergence.csv" || name == "slopes.csv" ||
-                                  name == "README.md" || name.extension() == ".svg";
-    if (!written_by_a_run) {
-      throw quadmc::invalid_argument(
-          "--out", given.string(),
-          fmt::format("a new folder or an earlier results folder; it holds '{}', which a run does "
-                      "not write, so it is not replaced",
-                      name.string()));
-    }
+  if (::access(python.c_str(), X_OK) != 0) {
+    throw std::runtime_error(fmt::format(
+        "plots need Python with matplotlib, but {} cannot be run ({}): install python3 and "
+        "python3-matplotlib (./run.sh deps) or set plots = false in [output]",
+        python, std::strerror(errno)));
   }
-  return folder;
-}
-
-// Writes the results into a fresh sibling folder and moves it into place only when everything
-// (CSV, Markdown, plots) succeeded: a failed run never leaves files claiming success, and the
-// staging folder is removed when a step fails.
-void write_results(const quadmc::plan& p, const quadmc::run_output& out,
-                   const std::vector<quadmc::convergence_table>& tables, const fs::path& folder) {
-  quadmc::run_info info;
-  info.scene = p.source.name;
-  info.seed = p.source.seed;
-  info.threads = out.threads;
-  info.machine = machine_description();
-  info.compiler = fmt::format("{} ({})", QUADMC_COMPILER, QUADMC_BUILD_TYPE);
-  info.run_seconds = out.seconds;
-  for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
-  for (const auto& skip : out.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
-
-  const fs::path staging = folder.parent_path() / (folder.filename().string() + ".partial");
-  fs::remove_all(staging);
-  quadmc::results_outputs outputs;
-  outputs.csv = p.source.output.csv;
-  outputs.markdown = p.source.output.markdown;
-  try {
-    quadmc::write_results_folder(staging, info, tables, outputs);
-    if (p.source.output.plots) {
-      const auto argv = quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, staging);
-      quadmc_cli::run_subprocess(argv);
-    }
-    fs::remove_all(folder);
-    fs::rename(staging, folder);
-  } catch (...) {
-    std::error_code ignored;  // the first error is the one to report
-    fs::remove_all(staging, ignored);
-    throw;
+  if (quadmc_cli::subprocess_status({python, "-c", "import matplotlib"},
+                                    quadmc_cli::child_output::none) != 0) {
+    throw std::runtime_error(
+        fmt::format("plots need matplotlib, but `{} -c 'import matplotlib'` failed: install "
+                    "python3-matplotlib (./run.sh deps) or set plots = false in [output]",
+                    python));
   }
 }
 
-int run_command(const std::string& scene_file, const std::string& out_dir, unsigned threads) {
-  const quadmc::scene scene = quadmc::parse_scene_file(scene_file);
+// The names the run will write into its folder, for the name-length checks made before it.
+std::vector<std::string> result_file_names(const quadmc::plan& p) {
+  std::vector<std::string> files;
+  const quadmc::output_spec& output = p.source.output;
+  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
+  if (output.markdown) files.emplace_back("README.md");
+  if (output.plots) {
+    std::set<std::pair<std::string, std::size_t>> groups;
+    for (const quadmc::plan_cell& cell : p.cells) {
+      groups.emplace(p.source.integrands[cell.integrand].name, cell.dimension);
+    }
+    for (const auto& [integrand, s] : groups) {
+      files.push_back(quadmc::convergence_plot_file(integrand, s));
+      files.push_back(quadmc::work_precision_plot_file(integrand, s));
+    }
+  }
+  return files;
+}
+
+// Owns the staging folder during a run. Whatever ends the run (success, an exception, a signal),
+// the staging is finished under the interruption mutex, so the signal thread and the main thread
+// never both clean up.
+struct staged_results {
+  std::unique_ptr<results_staging> staging;
+  staged_results() = default;
+  staged_results(const staged_results&) = delete;
+  staged_results& operator=(const staged_results&) = delete;
+  ~staged_results() {
+    const auto held = interruption::hold();
+    interruption::set_cleanup({});
+    staging.reset();
+  }
+};
+
+struct run_request {
+  std::string scene_file;
+  std::string out_dir;
+  std::optional<unsigned> threads;  // empty: the scene's
+};
+
+std::string cells_ran_text(std::size_t ran, std::size_t planned, double seconds) {
+  if (ran == planned) return fmt::format("ran {} cells in {:.1f} s", ran, seconds);
+  return fmt::format("ran {} of {} cells in {:.1f} s ({} skipped by budget.max_seconds)", ran,
+                     planned, seconds, planned - ran);
+}
+
+std::string threads_text(const quadmc::run_output& out) {
+  if (out.threads == out.threads_allowed) return fmt::format("on {} threads", out.threads);
+  return fmt::format("on {} threads ({} allowed; no cell had work for more)", out.threads,
+                     out.threads_allowed);
+}
+
+int run_command(const run_request& request, standard_output& out) {
+  const quadmc::scene scene = quadmc::parse_scene_file(request.scene_file);
   const quadmc::plan p = quadmc::make_plan(scene);
-  const fs::path folder = results_folder(out_dir, scene.name);
-  fmt::print("{}\n", quadmc::format_plan(p));
-  std::fflush(stdout);
+  if (p.cells.empty()) {
+    out.print(quadmc::format_plan(p) + "\n");
+    throw std::runtime_error(fmt::format(
+        "{}: no cell to run: the plan skips every cell (reasons in the plan); nothing written",
+        request.scene_file));
+  }
+  const quadmc::output_spec& outputs = scene.output;
+  const bool writes = outputs.csv || outputs.markdown || outputs.plots;
 
+  staged_results staged;
+  if (writes) {
+    const fs::path folder = quadmc_cli::results_folder_path(request.out_dir, scene.name);
+    const bool given = !request.out_dir.empty();
+    {
+      const auto held = interruption::hold();
+      staged.staging = std::make_unique<results_staging>(
+          given ? "--out" : "results folder",
+          given ? request.out_dir : (fs::path("results") / scene.name).string(), folder,
+          result_file_names(p));
+      interruption::set_cleanup([s = staged.staging.get()] {
+        s->finish();
+        return fmt::format("removed this run's unfinished results; {} is untouched",
+                           s->folder().string());
+      });
+    }
+    if (outputs.plots) check_plotting();
+  }
+
+  out.print(quadmc::format_plan(p) + "\n");
   quadmc_cli::progress_bar bar;
   quadmc::run_options options;
-  options.threads = threads;
-  options.on_progress = [&bar](const quadmc::run_progress& progress) { bar.update(progress); };
-  const quadmc::run_output out = quadmc::run_plan(p, options);
-  bar.finish();
+  options.threads = request.threads;
+  options.on_progress = [&bar](const quadmc::run_progress& progress) {
+    const auto held = interruption::hold();
+    bar.update(progress);
+  };
+  const quadmc::run_output result = quadmc::run_plan(p, options);
+  {
+    const auto held = interruption::hold();
+    bar.finish();
+  }
+  const std::size_t ran = p.cells.size() - result.skips.size();
+  if (ran == 0) {
+    throw std::runtime_error(fmt::format(
+        "no cell ran: budget.max_seconds = {} s was spent before the first cell; nothing written",
+        p.source.budget.max_seconds.value_or(0.0)));
+  }
 
   std::vector<quadmc::convergence_table> tables;
-  tables.reserve(out.series.size());
-  for (const auto& series : out.series) tables.push_back(quadmc::analyse_convergence(series));
+  tables.reserve(result.series.size());
+  for (const auto& series : result.series) tables.push_back(quadmc::analyse_convergence(series));
 
-  write_results(p, out, tables, folder);
-  fmt::print("{}\n", quadmc_cli::slope_summary(tables));
-  fmt::print("ran {} cells in {:.1f} s on {} threads; wrote {}\n", p.cells.size(), out.seconds,
-             out.threads, folder.string());
+  std::string written = "wrote nothing: [output] turns csv, markdown and plots off";
+  std::string warning;
+  if (writes) {
+    results_staging& staging = *staged.staging;
+    quadmc::run_info info;
+    info.scene = p.source.name;
+    info.description = p.source.description;
+    info.seed = p.source.seed;
+    info.threads = result.threads;
+    info.threads_allowed = result.threads_allowed;
+    info.machine = machine_description();
+    info.compiler = fmt::format("{} ({})", QUADMC_COMPILER, QUADMC_BUILD_TYPE);
+    info.run_seconds = result.seconds;
+    for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+    for (const auto& skip : result.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+    quadmc::results_outputs files;
+    files.csv = outputs.csv;
+    files.markdown = outputs.markdown;
+    {
+      const auto held = interruption::hold();
+      quadmc::write_results_folder(staging.staging(), info, tables, files);
+    }
+    if (outputs.plots) {
+      quadmc_cli::run_subprocess(quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, staging.staging()));
+    }
+    {
+      const auto held = interruption::hold();
+      warning = staging.commit();
+      staging.finish();
+      written = "wrote " + staging.folder().string();
+      if (!staging.link().empty()) written += " (through the link " + staging.link().string() + ")";
+      interruption::set_cleanup([written] { return "the run had already " + written; });
+    }
+  }
+
+  out.print(quadmc_cli::slope_summary(tables) + "\n");
+  out.print(fmt::format("{} {}; {}\n", cells_ran_text(ran, p.cells.size(), result.seconds),
+                        threads_text(result), written));
+  if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
+  if (out.failed()) {
+    throw std::runtime_error(
+        out.message() + (writes ? "; the run itself succeeded and " + written : std::string()));
+  }
   return 0;
 }
 
-int plan_command(const std::string& scene_file) {
+int plan_command(const std::string& scene_file, standard_output& out) {
   const quadmc::plan p = quadmc::make_plan(quadmc::parse_scene_file(scene_file));
-  fmt::print("{}\n", quadmc::format_plan(p));
+  out.print(quadmc::format_plan(p) + "\n");
+  if (out.failed()) throw std::runtime_error(out.message());
   return 0;
 }
 
-int compare_command(const std::string& a, const std::string& b, double tolerance) {
+int compare_command(const std::string& a, const std::string& b, double tolerance,
+                    standard_output& out) {
   const quadmc::compare_result result = quadmc::compare_results(a, b, tolerance);
-  fmt::print("{}\n", quadmc::render_compare_markdown(result));
-  return result.regression ? 1 : 0;
+  out.print(quadmc::render_compare_markdown(result) + "\n");
+  if (out.failed()) throw std::runtime_error(out.message());
+  switch (result.outcome) {
+    case quadmc::compare_outcome::no_regression:
+      return 0;
+    case quadmc::compare_outcome::regression:
+      fmt::print(stderr, "quadmc: compare: {}\n", result.reason);
+      return exit_failure;
+    case quadmc::compare_outcome::incomparable:
+      fmt::print(stderr, "quadmc: compare: incomparable: {}\n", result.reason);
+      return exit_incomparable;
+  }
+  return exit_failure;
+}
+
+// CLI11's messages, made one line.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  interruption::install();  // before any thread starts (the signal mask is inherited)
+
   CLI::App app{"quadmc: convergence of quadrature rules against Monte Carlo"};
+  app.footer(std::string(exit_status_help));
   app.require_subcommand(1);
 
-  std::string scene_file;
-  std::string out_dir;
+  run_request request;
   unsigned threads = 0;
   auto* run =
       app.add_subcommand("run", "Run a scene and write results/<name>/ (CSV, Markdown, plots)");
-  run->add_option("scene", scene_file, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
-  run->add_option("--out", out_dir, "Output folder (default: results/<scene name>)");
-  run->add_option("--threads", threads, "Threads (default: the scene's; 0 = all cores)");
+  run->add_option("scene", request.scene_file, "Scene file (TOML)")->required();
+  run->add_option("--out", request.out_dir, "Output folder (default: results/<scene name>)");
+  auto* threads_option =
+      run->add_option("--threads", threads,
+                      "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
+          ->check(CLI::Range(0u, 4096u));
 
+  std::string plan_file;
   auto* plan = app.add_subcommand("plan", "Print the cells a scene would run and what it skips");
-  plan->add_option("scene", scene_file, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  plan->add_option("scene", plan_file, "Scene file (TOML)")->required();
 
   auto* list = app.add_subcommand("list", "List integrands, methods, point sets and warps");
 
   std::string folder_a;
   std::string folder_b;
   double tolerance = 0.1;
-  auto* compare = app.add_subcommand(
-      "compare", "Compare two results folders; exit 1 when a slope regresses (see README)");
+  auto* compare = app.add_subcommand("compare",
+                                     "Compare two results folders; exit 1 when a slope regresses, "
+                                     "3 when B lacks what A has (see the footer)");
   compare->add_option("baseline", folder_a, "Results folder A (baseline)")->required();
   compare->add_option("candidate", folder_b, "Results folder B (candidate)")->required();
-  compare->add_option("--tolerance", tolerance,
-                      "Slope regression tolerance (default 0.1; see README)");
+  compare->add_option("--tolerance", tolerance, "Slope regression tolerance, ≥ 0 (default 0.1)")
+      ->check(CLI::NonNegativeNumber);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help is a ParseError with exit code 0: CLI11 prints the help on stdout.
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    fmt::print(stderr, "quadmc: {} (quadmc --help for usage)\n", one_line(e.what()));
+    return exit_usage;
+  }
+  if (threads_option->count() > 0) request.threads = threads;
+
+  standard_output out;
   try {
     // A bad QUADMC_SIMD is reported before any work, not from inside the first batch.
     (void)quadmc::active_simd_level();
-    if (*run) return run_command(scene_file, out_dir, threads);
-    if (*plan) return plan_command(scene_file);
+    if (*run) return run_command(request, out);
+    if (*plan) return plan_command(plan_file, out);
     if (*list) {
-      fmt::print("{}", quadmc_cli::catalogue_listing());
+      out.print(quadmc_cli::catalogue_listing());
+      if (out.failed()) throw std::runtime_error(out.message());
       return 0;
     }
-    if (*compare) return compare_command(folder_a, folder_b, tolerance);
+    if (*compare) return compare_command(folder_a, folder_b, tolerance, out);
   } catch (const std::exception& e) {
     // One line: the library's messages are single lines naming file, line, key or parameter.
-    fmt::print(stderr, "quadmc: {}\n", e.what());
-    return 1;
+    fmt::print(stderr, "quadmc: {}\n", one_line(e.what()));
+    return exit_failure;
   }
-  return 2;
+  return exit_usage;
 }

@@ -186,4 +186,24 @@ TEST(ResolveThreads, ZeroMeansHardwareConcurrency) {
   EXPECT_EQ(bits_of(reduce_sum(2, 64)), bits_of(chunk_value(0) + chunk_value(1)));
 }
 
+TEST(ParallelReducePeakThreads, CountsTheThreadsReallyUsed) {
+  // min(threads, chunks) threads run a call (the caller among them), and the counter keeps the
+  // largest such count since it was set to 0: what a run reports as "threads used".
+  unsigned& peak = quadmc::parallel_reduce_peak_threads();
+  peak = 0;
+  (void)reduce_sum(1, 64);
+  EXPECT_EQ(peak, 1u) << "one chunk runs inline, whatever is allowed";
+  (void)reduce_sum(3, 8);
+  EXPECT_EQ(peak, 3u);
+  (void)reduce_sum(2, 8);
+  EXPECT_EQ(peak, 3u) << "a peak, not the last call";
+  (void)reduce_sum(100, 5);
+  EXPECT_EQ(peak, 5u);
+  // Another thread has its own counter: concurrent runs do not mix.
+  unsigned other = 99;
+  std::thread([&] { other = quadmc::parallel_reduce_peak_threads(); }).join();
+  EXPECT_EQ(other, 0u);
+  peak = 0;
+}
+
 }  // namespace

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace quadmc {
 namespace {
@@ -59,6 +61,8 @@ TEST(Compare, IdenticalFoldersPass) {
   const compare_result r = compare_results(dir.path / "a", dir.path / "b", 0.1);
   EXPECT_FALSE(r.regression);
   EXPECT_EQ(r.regressions, 0u);
+  EXPECT_EQ(r.outcome, compare_outcome::no_regression);
+  EXPECT_EQ(r.compared, 2u);
   ASSERT_EQ(r.slopes.size(), 2u);
   for (const slope_comparison& c : r.slopes) EXPECT_EQ(c.status, "ok") << c.method;
   ASSERT_EQ(r.errors.size(), 22u);
@@ -113,6 +117,91 @@ TEST(Compare, SmallSlopeChangeWithinToleranceAndMissingSeries) {
   EXPECT_TRUE(compare_results(dir.path / "a", dir.path / "b", 0.01).regression);
   EXPECT_THROW(compare_results(dir.path / "a", dir.path / "missing", 0.1), invalid_argument);
   EXPECT_THROW(compare_results(dir.path / "a", dir.path / "b", -1.0), invalid_argument);
+}
+
+// A power-law series c·N^rate on N = 2^2…2^points+1 (fewer than three points: no fit).
+convergence_series power_series(const std::string& integrand, const std::string& method,
+                                double rate, int points) {
+  convergence_series s{integrand, 1, method, "analytic", 1.0, {}, "", 0};
+  for (int k = 2; k < 2 + points; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const auto nk = static_cast<std::uint64_t>(n);
+    s.cells.push_back({nk, {{1.0 + 0.1 * std::pow(n, rate), nan, nk, 1e-8 * n}}});
+  }
+  return s;
+}
+
+void write_series(const fs::path& folder, const std::vector<convergence_series>& series) {
+  std::vector<convergence_table> tables;
+  for (const auto& s : series) tables.push_back(analyse_convergence(s));
+  run_info info;
+  info.scene = "compare_test";
+  write_results_folder(folder, info, tables);
+}
+
+TEST(Compare, NothingToCompareIsIncomparableNotAPass) {
+  // Regression: an empty B, another scene, or B without the fits A had gave "no regression",
+  // a silent pass of the CI gate.
+  const temporary_directory dir;
+  const auto mid = power_series("f", "midpoint", -2.0, 8);
+  const auto simpson = power_series("f", "simpson", -4.0, 8);
+  write_series(dir.path / "a", {mid, simpson});
+
+  write_series(dir.path / "empty", {});  // both CSV files with their header only
+  const compare_result empty = compare_results(dir.path / "a", dir.path / "empty");
+  EXPECT_EQ(empty.outcome, compare_outcome::incomparable);
+  EXPECT_FALSE(empty.regression);
+  EXPECT_EQ(empty.missing_in_b, 2u);
+  EXPECT_EQ(empty.compared, 0u);
+  EXPECT_EQ(empty.reason,
+            "2 series of A missing in B (first: f (s = 1) midpoint); no series is fitted in both A "
+            "and B");
+  EXPECT_NE(render_compare_markdown(empty).find("**INCOMPARABLE**: 2 series of A missing"),
+            std::string::npos);
+  EXPECT_EQ(render_compare_markdown(empty).find("No slope regression"), std::string::npos);
+
+  write_series(dir.path / "other", {power_series("g", "midpoint", -2.0, 8)});
+  const compare_result other = compare_results(dir.path / "a", dir.path / "other");
+  EXPECT_EQ(other.outcome, compare_outcome::incomparable);
+  EXPECT_EQ(other.compared, 0u);
+
+  // Simpson with two points in B: no fit (a NaN slope in slopes.csv) where A had one.
+  write_series(dir.path / "lost", {mid, power_series("f", "simpson", -4.0, 2)});
+  const compare_result lost = compare_results(dir.path / "a", dir.path / "lost");
+  EXPECT_EQ(lost.outcome, compare_outcome::incomparable);
+  EXPECT_EQ(lost.lost_fits, 1u);
+  EXPECT_EQ(lost.compared, 1u);
+  EXPECT_EQ(lost.reason, "1 series fitted in A without a fit in B (first: f (s = 1) simpson)");
+
+  write_series(dir.path / "half", {mid});
+  const compare_result half = compare_results(dir.path / "a", dir.path / "half");
+  EXPECT_EQ(half.outcome, compare_outcome::incomparable);
+  EXPECT_EQ(half.missing_in_b, 1u);
+}
+
+TEST(Compare, NewSeriesInBAndFitsNewInBAreFine) {
+  const temporary_directory dir;
+  const auto mid = power_series("f", "midpoint", -2.0, 8);
+  write_series(dir.path / "a", {mid, power_series("f", "simpson", -4.0, 2)});  // simpson: no fit
+  write_series(dir.path / "b", {mid, power_series("f", "simpson", -4.0, 8),
+                                power_series("f", "trapezoid", -2.0, 8)});
+  const compare_result r = compare_results(dir.path / "a", dir.path / "b");
+  EXPECT_EQ(r.outcome, compare_outcome::no_regression);
+  EXPECT_EQ(r.reason, "");
+  EXPECT_EQ(r.compared, 1u);
+  EXPECT_EQ(r.missing_in_b + r.lost_fits, 0u);
+}
+
+TEST(Compare, ARegressionOutranksIncomparabilityAndTheReasonNamesBoth) {
+  const temporary_directory dir;
+  write_series(dir.path / "a",
+               {power_series("f", "midpoint", -2.0, 8), power_series("f", "simpson", -4.0, 8)});
+  write_series(dir.path / "b", {power_series("f", "midpoint", -1.0, 8)});
+  const compare_result r = compare_results(dir.path / "a", dir.path / "b");
+  EXPECT_EQ(r.outcome, compare_outcome::regression);
+  EXPECT_EQ(r.reason,
+            "1 slope regression (first: f (s = 1) midpoint); 1 series of A missing in B (first: f "
+            "(s = 1) simpson)");
 }
 
 }  // namespace

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace quadmc {
 namespace {
@@ -30,13 +33,73 @@ std::vector<convergence_table> sample_tables() {
 }
 
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
-  EXPECT_EQ(convergence_plot_file("genz_gaussian", 3), "genz_gaussian_s3.svg");
-  EXPECT_EQ(work_precision_plot_file("genz_gaussian", 3), "work_precision_genz_gaussian_s3.svg");
-  // A `dimensions` expansion already names its integrands "<name>_s<s>": no second suffix.
-  EXPECT_EQ(convergence_plot_file("gaussian_s3", 3), "gaussian_s3.svg");
+  // A name that already ends in "_s<s>" (a default name, a `dimensions` expansion) is used as it
+  // is; any other gets "_s=<s>".
+  EXPECT_EQ(convergence_plot_file("gaussian_s3", 3), "error_gaussian_s3.svg");
   EXPECT_EQ(work_precision_plot_file("gaussian_s3", 3), "work_precision_gaussian_s3.svg");
-  EXPECT_EQ(convergence_plot_file("gaussian_s3", 4), "gaussian_s3_s4.svg");
-  EXPECT_EQ(plot_stem("disk indicator/r=0.3"), "disk_indicator_r_0.3");
+  EXPECT_EQ(convergence_plot_file("gaussian_s3", 4), "error_gaussian_s3_s=4.svg");
+  EXPECT_EQ(convergence_plot_file("exp", 1), "error_exp_s=1.svg");
+  EXPECT_EQ(plot_stem("disk indicator/r=0.3"), "disk~20indicator~2Fr~3D0.3");
+  EXPECT_EQ(plot_stem("genz_gaussian-2.5"), "genz_gaussian-2.5") << "scene names stay as they are";
+}
+
+TEST(MarkdownReport, PlotFileNamesAreDistinctForDistinctSeries) {
+  // Regression: `x` and `x_s1` in s = 1 both drew "x_s1.svg", and `y`'s work-precision plot had
+  // the name of the error plot of an integrand called `work_precision_y`. Every name of both kinds
+  // over these (integrand, s) pairs must be distinct: the pairs are built to collide under
+  // simpler rules (suffix dropped or always added, '_' for unsafe bytes, '~' or '=' kept).
+  const std::vector<std::string> names{"x",
+                                       "x_s1",
+                                       "x_s1_s1",
+                                       "x_s=1",
+                                       "x~s1",
+                                       "y",
+                                       "work_precision_y",
+                                       "error_y",
+                                       "a b",
+                                       "a_b",
+                                       "a~20b",
+                                       "a=b",
+                                       "a_s01",
+                                       "é",
+                                       "~C3~A9",
+                                       "x_s12",
+                                       "x_s2",
+                                       "x_s",
+                                       "",
+                                       "_s1",
+                                       "s1",
+                                       "work_precision_x_s1",
+                                       "error_x_s1"};
+  std::set<std::string> files;
+  std::size_t made = 0;
+  for (const std::string& name : names) {
+    for (const std::size_t s : {1u, 2u, 12u}) {
+      files.insert(convergence_plot_file(name, s));
+      files.insert(work_precision_plot_file(name, s));
+      made += 2;
+    }
+  }
+  EXPECT_EQ(files.size(), made);
+}
+
+TEST(MarkdownReport, DescriptionAndThreadsUsedAreOnThePage) {
+  run_info info;
+  info.scene = "described";
+  info.description = "  Why this scene exists: **Simpson** against plain MC.\n";
+  info.threads = 1;
+  info.threads_allowed = 64;
+  const auto tables = sample_tables();
+  const std::string page = render_results_markdown(info, tables);
+  // The author's Markdown, trimmed, right under the title.
+  EXPECT_EQ(page.rfind("# Results: described\n\nWhy this scene exists: **Simpson** against plain "
+                       "MC.\n\n- seed:",
+                       0),
+            0u)
+      << page;
+  EXPECT_NE(page.find("- threads: 1 used (64 allowed"), std::string::npos) << page;
+  info.threads_allowed = 1;
+  EXPECT_NE(render_results_markdown(info, tables).find("- threads: 1\n"), std::string::npos);
 }
 
 TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
@@ -63,8 +126,9 @@ TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   EXPECT_NE(page.find("| genz\\|odd | 1 | plain_mc | -0.500 ± 0.000 | -0.500 | agrees |"),
             std::string::npos)
       << page;
-  EXPECT_NE(page.find("![error against N](genz_odd_s1.svg)"), std::string::npos);
-  EXPECT_NE(page.find("![work-precision](work_precision_genz_odd_s1.svg)"), std::string::npos);
+  EXPECT_NE(page.find("![error against N](error_genz~7Codd_s=1.svg)"), std::string::npos) << page;
+  EXPECT_NE(page.find("![work-precision](work_precision_genz~7Codd_s=1.svg)"), std::string::npos);
+  EXPECT_EQ(page.find("- threads: 2\n"), page.find("- threads:")) << "used = allowed: one number";
   // One section for the (integrand, s) group, with both methods and a work-precision table.
   EXPECT_NE(page.find("## genz\\|odd (s = 1)"), std::string::npos);
   EXPECT_EQ(page.find("## genz\\|odd (s = 1)"), page.rfind("## genz\\|odd (s = 1)"));

@@ -75,5 +75,17 @@ TEST(ResultsFolder, PlotCommandLine) {
   EXPECT_EQ(argv[2], "results/default");
 }
 
+TEST(ResultsFolder, ResultsFileNamesAreWhatARunWrites) {
+  for (const char* name : {"convergence.csv", "slopes.csv", "README.md", "error_exp_s=1.svg",
+                           "exp_s1.svg", "work_precision_gaussian_s3.svg"}) {
+    EXPECT_TRUE(is_results_file_name(name)) << name;
+  }
+  // Near misses: other cases, other files, a bare extension (a hidden file, not a plot).
+  for (const char* name : {"readme.md", "README.txt", "notes.txt", "thesis.tex", ".svg", "svg",
+                           "plot.svg.bak", "convergence.csv~", ""}) {
+    EXPECT_FALSE(is_results_file_name(name)) << name;
+  }
+}
+
 }  // namespace
 }  // namespace quadmc

@@ -3,10 +3,12 @@
 // (integrand, method label).
 #include "quadmc/scene/run.hpp"
 
+#include "quadmc/core/parallel_reduce.hpp"
 #include "quadmc/scene/parse.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string_view>
@@ -107,6 +109,53 @@ N = [64, 256, 1024]
   }
   const convergence_table table = analyse_convergence(series);
   EXPECT_EQ(table.rows.size(), 3u);
+}
+
+// Threads: an empty run_options::threads takes the scene's, an explicit 0 means all cores (not
+// "the scene's", as it once did), and the run reports the threads it really used: plain MC at
+// N = 65536 has several chunks per repetition (sample_mean.hpp), Simpson at N = 9 one.
+TEST(RunPlan, ThreadsAllowedAndThreadsUsed) {
+  constexpr std::string_view text = R"(name = "threads"
+threads = 1
+[[integrand]]
+family = "exp"
+[[method]]
+name = "plain_mc"
+repetitions = 1
+[[method]]
+name = "simpson"
+[budget]
+N = [9, 65536]
+)";
+  const plan p = make_plan(parse_scene(text, "threads.toml"));
+  const unsigned cores = resolve_threads(0);
+
+  const run_output scene_value = run_plan(p);
+  EXPECT_EQ(scene_value.threads_allowed, 1u);
+  EXPECT_EQ(scene_value.threads, 1u);
+
+  run_options all_cores;
+  all_cores.threads = 0u;
+  const run_output all = run_plan(p, all_cores);
+  EXPECT_EQ(all.threads_allowed, cores);
+  EXPECT_EQ(all.threads, std::min(cores, all.threads_allowed));
+  EXPECT_GE(all.threads, std::min(cores, 2u)) << "65536 points are more than one chunk";
+
+  // Only the one-chunk cell: however many threads are allowed, one is used.
+  const plan small = make_plan(parse_scene(R"(name = "small"
+[[integrand]]
+family = "exp"
+[[method]]
+name = "simpson"
+[budget]
+N = [9]
+)",
+                                           "small.toml"));
+  run_options many;
+  many.threads = 64u;
+  const run_output one = run_plan(small, many);
+  EXPECT_EQ(one.threads_allowed, 64u);
+  EXPECT_EQ(one.threads, 1u);
 }
 
 }  // namespace

@@ -49,6 +49,38 @@ std::vector<time_to_error> times_of(const std::vector<convergence_record>& rows)
   return work_precision(seconds, errors);
 }
 
+std::string series_name(const slope_comparison& c) {
+  return fmt::format("{} (s = {}) {}", c.integrand, c.s, c.method);
+}
+
+// The reason line of compare_result: counts, and the first series of each kind.
+std::string outcome_reason(const compare_result& r) {
+  const auto first = [&](auto&& predicate) {
+    const auto it = std::find_if(r.slopes.begin(), r.slopes.end(), predicate);
+    return it == r.slopes.end() ? std::string() : series_name(*it);
+  };
+  std::vector<std::string> parts;
+  if (r.regressions > 0) {
+    parts.push_back(fmt::format("{} slope regression{} (first: {})", r.regressions,
+                                r.regressions == 1 ? "" : "s",
+                                first([](const slope_comparison& c) { return c.regression; })));
+  }
+  if (r.missing_in_b > 0) {
+    parts.push_back(
+        fmt::format("{} series of A missing in B (first: {})", r.missing_in_b,
+                    first([](const slope_comparison& c) { return c.status == "missing in B"; })));
+  }
+  if (r.lost_fits > 0) {
+    parts.push_back(
+        fmt::format("{} series fitted in A without a fit in B (first: {})", r.lost_fits,
+                    first([](const slope_comparison& c) { return c.status == "no fit in B"; })));
+  }
+  if (r.compared == 0) parts.push_back("no series is fitted in both A and B");
+  std::string out;
+  for (const std::string& part : parts) out += (out.empty() ? "" : "; ") + part;
+  return out;
+}
+
 std::string optional_number(const std::optional<double>& x, const char* format_spec) {
   return x ? fmt::format(fmt::runtime(format_spec), *x) : std::string("—");
 }
@@ -96,11 +128,14 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
       c.status = "missing in A";
     } else if (ib == slopes_b.end()) {
       c.status = "missing in B";
+      ++result.missing_in_b;
     } else if (!c.slope_a) {
       c.status = "no fit in A";
     } else if (!c.slope_b) {
       c.status = "no fit in B";
+      ++result.lost_fits;
     } else {
+      ++result.compared;
       const double loss = *c.slope_b - *c.slope_a;  // > 0: B converges more slowly
       c.regression = loss > c.allowed;
       c.status = c.regression ? "regression" : (loss < -c.allowed ? "steeper in B" : "ok");
@@ -109,6 +144,11 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
     result.slopes.push_back(std::move(c));
   }
   result.regression = result.regressions > 0;
+  result.outcome = result.regression ? compare_outcome::regression
+                   : result.missing_in_b > 0 || result.lost_fits > 0 || result.compared == 0
+                       ? compare_outcome::incomparable
+                       : compare_outcome::no_regression;
+  result.reason = result.outcome == compare_outcome::no_regression ? "" : outcome_reason(result);
 
   const auto rows_a = by_series(read_convergence_csv(a / "convergence.csv"));
   const auto rows_b = by_series(read_convergence_csv(b / "convergence.csv"));
@@ -144,14 +184,24 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
 
 std::string render_compare_markdown(const compare_result& r) {
   std::string out = fmt::format("# Compare: A = `{}`, B = `{}`\n\n", r.a.string(), r.b.string());
-  out += r.regression ? fmt::format(
-                            "**REGRESSION**: {} slope(s) of B are shallower than A's by more than "
-                            "max({}, √(h_A² + h_B²)).\n\n",
-                            r.regressions, r.tolerance)
-                      : fmt::format(
-                            "No slope regression (tolerance max({}, √(h_A² + h_B²)), h = 95% CI "
-                            "half-width).\n\n",
-                            r.tolerance);
+  switch (r.outcome) {
+    case compare_outcome::regression:
+      out += fmt::format(
+          "**REGRESSION**: {} slope(s) of B are shallower than A's by more than "
+          "max({}, √(h_A² + h_B²)). {}.\n\n",
+          r.regressions, r.tolerance, r.reason);
+      break;
+    case compare_outcome::incomparable:
+      out += fmt::format("**INCOMPARABLE**: {}. A gate cannot pass on what it did not compare.\n\n",
+                         r.reason);
+      break;
+    case compare_outcome::no_regression:
+      out += fmt::format(
+          "No slope regression in {} series (tolerance max({}, √(h_A² + h_B²)), h = 95% CI "
+          "half-width).\n\n",
+          r.compared, r.tolerance);
+      break;
+  }
   out += "## Slopes\n\n| integrand | s | method | A | B | B − A | allowed | theory | status |\n";
   out += "|---|---:|---|---:|---:|---:|---:|---:|---|\n";
   for (const slope_comparison& c : r.slopes) {

@@ -26,6 +26,12 @@ std::string cell(std::string_view text) {
   return out;
 }
 
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
 std::string sci(double x) {
   return std::isnan(x) ? "—" : fmt::format("{:.3e}", x);
 }
@@ -83,27 +89,29 @@ void append_method_table(std::string& out, const convergence_table& t) {
 }  // namespace
 
 std::string plot_stem(std::string_view integrand) {
-  std::string out(integrand);
-  for (char& c : out) {
-    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+  std::string out;
+  for (const char c : integrand) {
+    const bool kept = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                       c == '_' || c == '.' || c == '-';
-    if (!safe) c = '_';
+    if (kept) {
+      out += c;
+    } else {
+      out += fmt::format("~{:02X}", static_cast<unsigned char>(c));
+    }
   }
   return out;
 }
 
 namespace {
-// "<stem>_s<s>", without repeating the suffix when the name already carries it (the
-// `dimensions` expansion of a scene names its integrands "<name>_s<s>").
+// The integrand part of both plot names (the rule in markdown_report.hpp).
 std::string plot_name(std::string_view integrand, std::size_t s) {
   const std::string stem = plot_stem(integrand);
-  const std::string suffix = fmt::format("_s{}", s);
-  return stem.ends_with(suffix) ? stem : stem + suffix;
+  return stem.ends_with(fmt::format("_s{}", s)) ? stem : fmt::format("{}_s={}", stem, s);
 }
 }  // namespace
 
 std::string convergence_plot_file(std::string_view integrand, std::size_t s) {
-  return plot_name(integrand, s) + ".svg";
+  return "error_" + plot_name(integrand, s) + ".svg";
 }
 
 std::string work_precision_plot_file(std::string_view integrand, std::size_t s) {
@@ -113,7 +121,14 @@ std::string work_precision_plot_file(std::string_view integrand, std::size_t s) 
 std::string render_results_markdown(const run_info& info,
                                     std::span<const convergence_table> tables) {
   std::string out = fmt::format("# Results: {}\n\n", info.scene);
-  out += fmt::format("- seed: {}\n- threads: {}\n", info.seed, info.threads);
+  // The scene's own words first, as Markdown (it is the author's text): what the run is for.
+  const std::string_view description = trimmed(info.description);
+  if (!description.empty()) out += fmt::format("{}\n\n", description);
+  out += fmt::format("- seed: {}\n", info.seed);
+  out += info.threads_allowed != 0 && info.threads_allowed != info.threads
+             ? fmt::format("- threads: {} used ({} allowed; no cell had work for more)\n",
+                           info.threads, info.threads_allowed)
+             : fmt::format("- threads: {}\n", info.threads);
   if (!info.machine.empty()) out += fmt::format("- machine: {}\n", info.machine);
   if (!info.compiler.empty()) out += fmt::format("- compiler: {}\n", info.compiler);
   out += fmt::format("- run time: {:.3g} s\n\n", info.run_seconds);

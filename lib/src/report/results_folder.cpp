@@ -32,6 +32,11 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
   if (outputs.markdown) write_text(folder / "README.md", render_results_markdown(info, tables));
 }
 
+bool is_results_file_name(std::string_view name) {
+  return name == "convergence.csv" || name == "slopes.csv" || name == "README.md" ||
+         (name.size() > 4 && name.ends_with(".svg"));
+}
+
 std::vector<std::string> plot_command_line(const std::filesystem::path& script,
                                            const std::filesystem::path& folder,
                                            const std::string& python) {

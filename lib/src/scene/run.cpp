@@ -110,7 +110,8 @@ run_output run_plan(const plan& p, const run_options& options) {
   using clock = std::chrono::steady_clock;
   const auto run_start = clock::now();
   run_output out;
-  out.threads = resolve_threads(options.threads != 0 ? options.threads : p.source.threads);
+  out.threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
+  parallel_reduce_peak_threads() = 0;
 
   // One series per (integrand, method), in order of first appearance (the plan's order).
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> series_index;
@@ -176,8 +177,8 @@ run_output run_plan(const plan& p, const run_options& options) {
       const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
       const auto t0 = clock::now();
       repetition_result result = method->kind == method_kind::deterministic_rule
-                                     ? run_rule(mspec, inst.function, cell, out.threads)
-                                     : run_random(mspec, p, cell, stream, out.threads);
+                                     ? run_rule(mspec, inst.function, cell, out.threads_allowed)
+                                     : run_random(mspec, p, cell, stream, out.threads_allowed);
       result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
       result.value += shift;
       target.repetitions.push_back(result);
@@ -189,6 +190,8 @@ run_output run_plan(const plan& p, const run_options& options) {
     if (options.on_progress) options.on_progress(progress);
   }
   out.seconds = std::chrono::duration<double>(clock::now() - run_start).count();
+  // A rule evaluated inline (one chunk, or a path without parallel_reduce) used this thread.
+  out.threads = std::max(1u, parallel_reduce_peak_threads());
   return out;
 }
 

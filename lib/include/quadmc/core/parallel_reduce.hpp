@@ -29,6 +29,16 @@ inline unsigned resolve_threads(unsigned requested) noexcept {
   return hw == 0 ? 1 : hw;
 }
 
+// The most threads (the caller included) that any parallel_reduce called from this thread has
+// run on since the counter was last set to 0. A call with fewer chunks than threads runs on
+// fewer, so this, not the count asked for, is the number of threads a run really used (the
+// runner reports it). One counter per calling thread, so runs on different threads do not mix;
+// updated once per window of chunks, never per chunk.
+inline unsigned& parallel_reduce_peak_threads() noexcept {
+  thread_local unsigned peak = 0;
+  return peak;
+}
+
 // result = combine(…combine(combine(init, chunk_fn(0)), chunk_fn(1))…, chunk_fn(chunks − 1)).
 // chunk_fn(std::size_t) -> T must be safe to call concurrently for distinct chunks; combine(T&,
 // const T&) folds a chunk result into the accumulator. An exception thrown by a chunk is rethrown
@@ -50,6 +60,8 @@ T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_
   for (std::size_t begin = 0; begin < chunks; begin += window) {
     const std::size_t count = std::min(window, chunks - begin);
     const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(threads, count));
+    unsigned& peak = parallel_reduce_peak_threads();
+    peak = std::max({peak, workers, 1u});
     if (workers <= 1) {
       for (std::size_t c = 0; c < count; ++c) slots[c].value = chunk_fn(begin + c);
     } else {

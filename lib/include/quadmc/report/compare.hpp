@@ -1,6 +1,6 @@
 // Compares two results folders (A = baseline, B = candidate): slopes side by side, the error
-// ratio at equal N and the time-to-error ratio, and a regression flag for `quadmc compare`
-// (which exits 1 on a regression).
+// ratio at equal N and the time-to-error ratio, and an outcome for `quadmc compare`, which gates
+// CI on it (exit 0 no regression, 1 regression, 3 incomparable).
 //
 // Use it on folders written by write_results_folder (it reads only convergence.csv and slopes.csv,
 // so folders from older versions with fewer added columns compare fine). Not a timing benchmark:
@@ -13,8 +13,14 @@
 // h = half-width of the 95% CI. The root-sum-square is the half-width of the difference of two
 // independent estimates (normal approximation), so two runs of the same method differing only in
 // noise pass; `tolerance` (default 0.1) is the smallest slope loss worth failing a build over on
-// clean deterministic ladders whose CIs are ~0. A series that lost its fit in B, or is missing
-// from one side, is reported but is not a regression (scene changes do that).
+// clean deterministic ladders whose CIs are ~0.
+//
+// Incomparable: a gate that passes because there was nothing to compare is a silent pass, so the
+// pair is incomparable (not "no regression") when a series of A is missing from B, when a series
+// fitted in A has no fit in B (a NaN slope, too few points, every cell skipped), or when no
+// series is fitted on both sides (a header-only CSV, another scene). A series only in B, or not
+// fitted in A, is new and fine. A regression outranks incomparability in the outcome; the
+// reason names both.
 #pragma once
 
 #include <cstddef>
@@ -57,6 +63,12 @@ struct time_comparison {
   std::optional<double> ratio;                 // seconds_b / seconds_a when both reached
 };
 
+enum class compare_outcome {
+  no_regression,  // every series of A fitted in B, none shallower beyond the allowance
+  regression,     // at least one series regressed
+  incomparable,   // no regression, but B lacks series or fits of A, or nothing was compared
+};
+
 struct compare_result {
   std::filesystem::path a, b;
   double tolerance = 0.1;
@@ -65,6 +77,13 @@ struct compare_result {
   std::vector<time_comparison> times;
   bool regression = false;
   std::size_t regressions = 0;
+  std::size_t missing_in_b = 0;  // series of A that B does not have
+  std::size_t lost_fits = 0;     // series fitted in A, present in B without a fit
+  std::size_t compared = 0;      // series fitted on both sides: the ones the rule judged
+  compare_outcome outcome = compare_outcome::incomparable;
+  // One line saying why the outcome is not no_regression (counts, and the first series of each
+  // kind); empty for no_regression.
+  std::string reason;
 };
 
 // Reads a/{convergence,slopes}.csv and b/{…}; throws invalid_argument when a file is missing or
@@ -72,8 +91,8 @@ struct compare_result {
 compare_result compare_results(const std::filesystem::path& a, const std::filesystem::path& b,
                                double tolerance = 0.1);
 
-// Markdown: a verdict line, the slope table, per-series error ratios (geometric mean and worst)
-// and time-to-error ratios.
+// Markdown: a verdict line (with the reason), the slope table, per-series error ratios (geometric
+// mean and worst) and time-to-error ratios.
 std::string render_compare_markdown(const compare_result& result);
 
 }  // namespace quadmc

@@ -20,19 +20,33 @@ namespace quadmc {
 // What the header of a results page says about the run. Empty strings / NaN are omitted.
 struct run_info {
   std::string scene;
+  std::string description;  // the scene's `description`, free text
   std::uint64_t seed = 0;
-  unsigned threads = 0;
+  unsigned threads = 0;              // threads the run really used (run_output::threads)
+  unsigned threads_allowed = 0;      // the limit it had; 0 or equal to threads: not repeated
   std::string machine;               // e.g. "x86_64, 2 cores"
   std::string compiler;              // e.g. "GCC 12.2.0 -O2"
   double run_seconds = 0.0;          // wall time of the whole run
   std::vector<std::string> skipped;  // the plan's skipped cells, with their reason
 };
 
-// File-name-safe form of an integrand name: every character outside [A-Za-z0-9_.-] becomes '_'.
+// Plot file names, distinct for distinct (integrand, s) by construction, so that no two series
+// overwrite each other's plots (before, `x` and `x_s1` in s = 1 shared "x_s1.svg", and `y` and
+// `work_precision_y` shared "work_precision_y_s1.svg"):
+//  - a prefix per kind, "error_" and "work_precision_", keeps the two kinds apart;
+//  - the integrand part is plot_stem(integrand) when the name already ends in "_s<s>" (every
+//    default name and every `dimensions` expansion, scene/parse.hpp: "gaussian_s3" in s = 3 gives
+//    error_gaussian_s3.svg), else plot_stem(integrand) + "_s=<s>" (`x` in s = 1 gives
+//    error_x_s=1.svg, apart from `x_s1`'s error_x_s1.svg);
+//  - plot_stem is one-to-one and never writes '=': bytes in [A-Za-z0-9_.-] (all a scene's names
+//    may hold) stay, any other byte becomes "~XX" (two upper-case hex digits).
+// So a name with '=' is an appended one and splits at it; one without is the integrand's own.
+// '=' and '~' need no escaping in a Markdown link or a URL path (RFC 3986), so README.md links
+// the names as they are. bench/plot.py writes the same names (keep the two in step).
 std::string plot_stem(std::string_view integrand);
-// "<integrand>_s<s>.svg": error against N, one line per method (bench/plot.py draws it).
+// "error_<…>.svg": error against N, one line per method (bench/plot.py draws it).
 std::string convergence_plot_file(std::string_view integrand, std::size_t s);
-// "work_precision_<integrand>_s<s>.svg": error against seconds per estimate.
+// "work_precision_<…>.svg": error against seconds per estimate.
 std::string work_precision_plot_file(std::string_view integrand, std::size_t s);
 
 // The whole page. Tables are grouped by (integrand, s) in order of first appearance.

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc {
@@ -27,6 +28,12 @@ struct results_outputs {
 void write_results_folder(const std::filesystem::path& folder, const run_info& info,
                           std::span<const convergence_table> tables,
                           const results_outputs& outputs = {});
+
+// True for the names of the files a run writes into a results folder: convergence.csv,
+// slopes.csv, README.md and plots (*.svg, including the names of earlier versions). Only the
+// name: whether the entry is a regular file (a folder "figures.svg" is not a plot) is the
+// caller's check, since it needs the file system.
+bool is_results_file_name(std::string_view name);
 
 // argv of the plot step: {python, script, folder}, e.g.
 // {"/usr/bin/python3", "bench/plot.py", "results/default"}. Debian's python3 with

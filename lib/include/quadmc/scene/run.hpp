@@ -15,6 +15,7 @@
 #include "quadmc/scene/plan.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,9 @@ struct run_progress {
 };
 
 struct run_options {
-  unsigned threads = 0;  // 0 = the scene's threads (which may itself be 0 = all cores)
+  // Threads allowed: empty = the scene's `threads`; 0, given here or in the scene, = all cores
+  // (core/parallel_reduce.hpp, resolve_threads).
+  std::optional<unsigned> threads;
   // Called after each repetition and after each cell (cells_done counts finished cells).
   std::function<void(const run_progress&)> on_progress;
 };
@@ -37,7 +40,11 @@ struct run_output {
   std::vector<convergence_series> series;  // in plan order: integrand, then method
   std::vector<plan_skip> skips;            // cells not run because max_seconds ran out
   double seconds = 0.0;                    // wall time of the whole run
-  unsigned threads = 1;                    // threads actually used
+  // Threads actually used: the most any cell ran on. A cell with fewer chunks of work than the
+  // threads allowed runs on fewer (parallel_reduce_peak_threads), so this can be below
+  // threads_allowed, the limit after resolving 0 to the core count.
+  unsigned threads = 1;
+  unsigned threads_allowed = 1;
 };
 
 run_output run_plan(const plan& p, const run_options& options = {});

@@ -1,0 +1,94 @@
+// SIGINT/SIGTERM handling of the `quadmc` command; the design is in interruption.hpp.
+#include "interruption.hpp"
+
+#include <fmt/format.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <utility>
+
+namespace quadmc_cli::interruption {
+namespace {
+
+// Allocated once and never freed: the waiting thread may still use it while the process exits.
+struct shared_state {
+  std::mutex mutex;
+  std::function<std::string()> cleanup;  // guarded by mutex
+  std::atomic<pid_t> child{0};
+};
+
+shared_state& state() {
+  static shared_state* s = new shared_state;
+  return *s;
+}
+
+sigset_t handled_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
+}
+
+void kill_child(pid_t child) {
+  if (child <= 0) return;
+  ::kill(-child, SIGKILL);  // its process group: the script and anything it started
+  ::kill(child, SIGKILL);
+}
+
+[[noreturn]] void on_signal(int signal) {
+  shared_state& s = state();
+  // Kill first, without the mutex: the main thread waits for the child without holding it.
+  kill_child(s.child.load());
+  s.mutex.lock();  // never unlocked: this thread ends the process
+  const pid_t child = s.child.load();
+  kill_child(child);
+  // Reap it, so it is gone before we are; ECHILD when the main thread reaped it first.
+  if (child > 0) ::waitpid(child, nullptr, 0);
+  std::string done;
+  try {
+    if (s.cleanup) done = s.cleanup();
+  } catch (...) {
+    done = "could not remove everything this run created";
+  }
+  // A progress bar may be drawn on the terminal without a newline: start on a clean line.
+  if (::isatty(STDERR_FILENO) != 0) std::fputs("\r\033[K", stderr);
+  fmt::print(stderr, "quadmc: interrupted by {}{}{}\n", signal == SIGINT ? "SIGINT" : "SIGTERM",
+             done.empty() ? "" : "; ", done);
+  std::fflush(stderr);
+  ::_exit(128 + signal);
+}
+
+}  // namespace
+
+void install() {
+  ::signal(SIGPIPE, SIG_IGN);
+  const sigset_t set = handled_signals();
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  std::thread([set] {
+    int signal = 0;
+    while (sigwait(&set, &signal) != 0) {
+    }
+    on_signal(signal);
+  }).detach();
+}
+
+std::unique_lock<std::mutex> hold() {
+  return std::unique_lock<std::mutex>(state().mutex);
+}
+
+void set_cleanup(std::function<std::string()> cleanup) {
+  state().cleanup = std::move(cleanup);
+}
+
+void set_child_process(pid_t pid) {
+  state().child.store(pid);
+}
+
+}  // namespace quadmc_cli::interruption
