@@ -5,6 +5,9 @@
 #include "quadmc/core/rng.hpp"
 
 #include <gtest/gtest.h>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -52,22 +55,46 @@ TEST(PowerLawFit, RecoversAnExactPowerLaw) {
   EXPECT_NEAR(fit.predict(1024.0), 3.0 * std::pow(1024.0, -1.5), 1e-12 * 3.0 / 32768.0);
 }
 
-TEST(PowerLawFit, NoisyLadderIntervalCoversTheTruth) {
-  // Seed 20240611, stream 1: one ladder of 12 points with σ = 0.3 (RMSE of ~5 repetitions).
-  // A random seed would fail with probability 0.05; this seed is fixed, not chosen by retrying.
+// One ladder of 12 points with σ = 0.3 (RMSE of ~5 repetitions), seed 20240611, stream 1. σ is
+// known here, so both outputs have exact distributions under the fit's own model (Draper & Smith,
+// "Applied Regression Analysis", 3rd ed., §1.4): b̂ − b ~ N(0, σ²/Sxx), and, independent of it,
+// (n − 2)·se²·Sxx/σ² ~ χ²(n − 2) with se = slope_std_error; the interval is b̂ ± t_{n−2,0.975}·se.
+// Each of the two checks is two-sided at α = 4e-5 (8e-5 for the test; a simulation of 4·10⁶
+// streams with α = 5e-5 each failed at 1.04e-4, as designed). Sxx = ln²2·143 here, so
+// sd(b̂) = 0.036 and the slope band is ±4.11·0.036 = ±0.149: a slope biased by 0.2 fails with
+// probability ≥ 0.92. The se band is [0.251σ, 1.990σ]/√Sxx, wide for one ladder of 10 degrees of
+// freedom: an se off by a factor 8 or more either way (a forgotten square root, Sxx² for Sxx)
+// fails with probability ≥ 0.9999, a factor 3 too large with 0.93; subtler errors are the
+// coverage test's job below.
+TEST(PowerLawFit, NoisyLadderSlopeAndStandardErrorFollowTheirDistributions) {
+  constexpr double sigma = 0.3, alpha = 4e-5;
+  constexpr std::size_t points = 12;
   std::vector<double> n, error;
-  synthetic_ladder(0.7, -0.5, 0.3, 12, philox_stream(20240611, 1), n, error);
+  synthetic_ladder(0.7, -0.5, sigma, points, philox_stream(20240611, 1), n, error);
   const power_law_fit fit = fit_power_law(n, error);
   ASSERT_TRUE(fit.ok());
-  EXPECT_LE(fit.ci_low, -0.5) << "slope " << fit.slope << " ± " << fit.half_width();
-  EXPECT_GE(fit.ci_high, -0.5) << "slope " << fit.slope << " ± " << fit.half_width();
-  EXPECT_LT(fit.half_width(), 0.2) << "12 points over 11 doublings with σ = 0.3";
+  double mean = 0.0, sxx = 0.0;
+  for (double v : n) mean += std::log(v) / static_cast<double>(points);
+  for (double v : n) sxx += (std::log(v) - mean) * (std::log(v) - mean);
+  const double z = boost::math::quantile(boost::math::complement(boost::math::normal(), alpha / 2));
+  EXPECT_NEAR(fit.slope, -0.5, z * sigma / std::sqrt(sxx)) << "slope " << fit.slope;
+  const boost::math::chi_squared chi(static_cast<double>(points - 2));
+  const double dof = static_cast<double>(points - 2);
+  const double se_low = sigma * std::sqrt(boost::math::quantile(chi, alpha / 2) / dof / sxx);
+  const double se_high =
+      sigma * std::sqrt(boost::math::quantile(boost::math::complement(chi, alpha / 2)) / dof / sxx);
+  EXPECT_GE(fit.slope_std_error, se_low);
+  EXPECT_LE(fit.slope_std_error, se_high);
+  const double t =
+      boost::math::quantile(boost::math::complement(boost::math::students_t(dof), 0.025));
+  EXPECT_NEAR(fit.half_width(), t * fit.slope_std_error, 1e-12) << "the 95% interval is t·se";
 }
 
 TEST(PowerLawFit, IntervalCoversInNinetyFivePercentOfLadders) {
   // M = 2000 independent ladders (seed 7, stream m), 8 points each, σ = 0.5: the Student-t
   // interval is exact for this model, so the number covering is Binomial(M, 0.95): mean 1900,
-  // sd √(M·0.95·0.05) = 9.75. Accepting ±4 sd (±39) has a false-alarm probability ≈ 6e-5.
+  // sd √(M·0.95·0.05) = 9.75. Accepting ±4 sd (±39): the exact binomial tails give a
+  // false-alarm probability of 5.9e-5 (below 1861) + 7.0e-6 (above 1939) = 6.6e-5.
   constexpr std::size_t ladders = 2000;
   std::size_t covered = 0;
   std::vector<double> n, error;

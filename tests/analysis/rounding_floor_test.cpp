@@ -87,25 +87,46 @@ TEST(RoundingFloor, FlagsARisingFloorOfNaiveSummation) {
   }
 }
 
+// Method error 0.05·N⁻² plus rounding noise ε·√N·|Z| (a random-walk rounding error), j = log₂N
+// = 1…30, Z_j independent standard normals by Box–Muller from a Philox stream. The two terms
+// cross near j = 19 ((0.05/ε)^0.4 = 2^19.0). Where can the floor start?
+//  - Not before 2^18: for j ≤ 17, e_j ≥ 0.05·4^−j is far above ℓ (no (i)) and above B·ℓ for
+//    j ≤ 14 (no stall); at j = 15…17 a stall needs e_{j+1} > e_j/2, i.e. noise
+//    ε·2^{(j+1)/2}|Z| > 0.05·4^−j/4: |Z| > 6.4 at j = 17, > 36 at 16, > 200 at 15.
+//    P(first < 2^18) ≤ 1.6e-10 per ladder.
+//  - Not long after the crossover: no floor point up to j = K means no stall there, so from j₀ = 19
+//    there is a chain j₀ < j₁ < … (steps 1 or 2, past K) along which the error at least halves at
+//    each step, hence ε·2^{j_i/2}|Z_{j_i}| ≤ 2^−i·e_19. Given Z_19 these are independent, with
+//    P(|Z| ≤ t) ≤ t·√(2/π); summing over all chains and integrating over Z_19 bounds
+//    P(first > 2^K) by 0.061 for K = 22 and 2.3e-8 for K = 28 (leaving the band B·ℓ needs
+//    |Z| > 23 for j ≥ 19: negligible). A simulation of 10⁶ ladders gives 0.008 and 0 (none after
+//    2^24): the bound is conservative.
+// Over M = 200 ladders (seed 99, streams 0…199): every floor starts in [2^18, 2^28] (false alarm
+// ≤ 200·(1.6e-10 + 2.3e-8) = 4.7e-6), and at most 27 start after 2^22 (P(Binomial(200, 0.061)
+// > 27) = 4.2e-5): total ≤ 5e-5. What it detects: a rule whose floor starts two doublings later
+// than this one (23% of ladders after 2^22, by the simulation) fails with probability ≥ 0.999;
+// one that fires before the crossover (a κ or band too large, a stall test that ignores the
+// improvement) fails the 2^18 bound.
 TEST(RoundingFloor, FlagsARandomFloorGrowingLikeSqrtN) {
-  // Method error 0.05·N⁻² plus rounding noise ε·√N·|Z| (a random-walk rounding error, Z standard
-  // normal from Philox seed 99, stream 3). The two are equal near N = 2^19 ((0.05/ε)^0.4). The
-  // floor must start within a few points of that crossover: a noise point stalls (neither of the
-  // next two improves by 2) with probability ≈ 0.5 each, so starting more than 5 points late has
-  // probability ≲ 2^-5 for a random seed; this seed is fixed, not chosen.
-  const philox_stream stream(99, 3);
+  constexpr std::uint64_t ladders = 200;
   const std::vector<double> n = doubling_ladder(1, 30);
-  std::vector<double> error;
-  for (std::size_t k = 0; k < n.size(); ++k) {
-    const double u1 = 1.0 - stream.uniform(2 * k), u2 = stream.uniform(2 * k + 1);
-    const double z = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    error.push_back(0.05 / (n[k] * n[k]) + eps * std::sqrt(n[k]) * std::abs(z));
+  std::size_t late = 0;
+  for (std::uint64_t m = 0; m < ladders; ++m) {
+    const philox_stream stream(99, m);
+    std::vector<double> error;
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      const double u1 = 1.0 - stream.uniform(2 * k), u2 = stream.uniform(2 * k + 1);
+      const double z = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+      error.push_back(0.05 / (n[k] * n[k]) + eps * std::sqrt(n[k]) * std::abs(z));
+    }
+    const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+    ASSERT_TRUE(floor.reached()) << "stream " << m;
+    const double first_n = n[*floor.first];
+    EXPECT_GE(first_n, std::ldexp(1.0, 18)) << "stream " << m << ": before the crossover";
+    EXPECT_LE(first_n, std::ldexp(1.0, 28)) << "stream " << m;
+    if (first_n > std::ldexp(1.0, 22)) ++late;
   }
-  const rounding_floor floor = detect_rounding_floor(n, error, 1.0);
-  ASSERT_TRUE(floor.reached());
-  const double first_n = n[*floor.first];
-  EXPECT_GE(first_n, std::ldexp(1.0, 14)) << "method error ≥ 6000× the noise scale up to 2^14";
-  EXPECT_LE(first_n, std::ldexp(1.0, 24)) << "at most 5 points past the crossover";
+  EXPECT_LE(late, 27u) << "floors starting after 2^22, of " << ladders;
 }
 
 TEST(RoundingFloor, LeavesCleanLaddersUnflagged) {

@@ -6,6 +6,7 @@
 // single methods (tests/analysis, tests/estimators check those more tightly). Rates: THEORY.md
 // (composite midpoint/trapezoid O(n⁻²), Simpson O(n⁻⁴); plain MC RMSE σ/√N; jittered points on a
 // smooth f in s dimensions O(N^(−1/2−1/s)), Owen, "Monte Carlo theory, methods and examples" §10).
+#include "quadmc/analysis/slope_verdict.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_csv.hpp"
 #include "quadmc_command.hpp"
@@ -13,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -123,34 +127,97 @@ TEST(RunTest, ConvergenceSlopesMatchTheory) {
 
   // Deterministic rules: the error ladder has no noise, so the fit's CI is narrower than the
   // pre-asymptotic bias and "theory ∈ CI" is the wrong test (midpoint's CI is ±7e-5 around
-  // −1.99993). The fit is against evaluations N = p(n): trapezoid and Simpson use n + 1 nodes,
-  // so error ∝ (N − 1)^−r, whose log-log slope over N = 9…1025 is −r·N/(N − 1) ≈ −1.02·r on
-  // average. Hence the tight bound |slope − theory| ≤ 0.05·|theory| (2.5× that bias) and
-  // verdict "agrees" (slope_verdict.hpp: within max(CI, 10 %) of theory).
-  for (const auto& [method, theory] : std::vector<std::pair<std::string, double>>{
-           {"midpoint", -2.0}, {"trapezoid", -2.0}, {"simpson", -4.0}}) {
+  // −1.99993). The fit is against evaluations N = p(n): midpoint n, trapezoid and Simpson n + 1
+  // nodes (checked on the N column). For eˣ on [0, 1] the errors have closed forms (geometric
+  // sums, h = 1/n): midpoint (e − 1)(1 − (h/2)/sinh(h/2)), trapezoid (e − 1)((h/2)coth(h/2) − 1),
+  // so their fitted slopes are known: the OLS slope of those closed forms against ln N. The
+  // computed errors differ from them by rounding, at most r = 16ε·(M₀ + M₁) = 32eε
+  // (tests/rules/reference_integrands.hpp's model), a relative δ_k = r/error_k ≤ 3e-7 here, which
+  // moves the slope by at most Σ|w_k|·2δ_k (w_k the OLS weights). Fitting against n instead of
+  // n + 1 would move the trapezoid slope by 0.04 (−2.0000 instead of −2.0417), and the old check
+  // |slope + 2| ≤ 0.1 could not see it. Simpson's last error, 8.7e-15, is ~40 ulp of I, too
+  // close to rounding for that model, so its slope is held to theory: the closed form's slope is
+  // −4.083 (the (N − 1)⁻⁴ bias), and pairwise summation of 1025 terms rounds by at most
+  // ~ε·log₂1025·Σ|w f| ≈ 4e-15 (Higham, "Accuracy and Stability of Numerical Algorithms", §4.2),
+  // which on the last point (OLS weight 0.124) moves the slope by ≤ 0.124·|ln(1 − 4/8.7)| = 0.077
+  // and on the others by < 0.003: |slope + 4| ≤ 0.17 < 0.05·4.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const auto ols_weights = [](const std::vector<double>& x) {
+    double mean = 0.0;
+    for (double v : x) mean += v / static_cast<double>(x.size());
+    double sxx = 0.0;
+    for (double v : x) sxx += (v - mean) * (v - mean);
+    std::vector<double> w;
+    for (double v : x) w.push_back((v - mean) / sxx);
+    return w;
+  };
+  for (const std::string method : {"midpoint", "trapezoid", "simpson"}) {
+    std::vector<double> ln_n, ln_error, closed_form_error;
+    std::vector<std::uint64_t> expected_n;
+    for (std::uint64_t n = 8; n <= 1024; n *= 2) {
+      expected_n.push_back(method == "midpoint" ? n : n + 1);
+      ln_n.push_back(std::log(static_cast<double>(expected_n.back())));
+      const long double half = 0.5L / static_cast<long double>(n), e1 = std::expm1(1.0L);
+      closed_form_error.push_back(static_cast<double>(method == "midpoint"
+                                                          ? e1 * (1.0L - half / std::sinh(half))
+                                                          : e1 * (half / std::tanh(half) - 1.0L)));
+      ln_error.push_back(std::log(closed_form_error.back()));
+    }
+    std::vector<std::uint64_t> csv_n;
+    for (const auto& c : cells) {
+      if (c.method == method) csv_n.push_back(c.n);
+    }
+    EXPECT_EQ(csv_n, expected_n) << method << ": N = p(n) nodes";
     ASSERT_EQ(by_method.count(method), 1u) << method;
     const auto& s = by_method[method];
+    const double theory = method == "simpson" ? -4.0 : -2.0;
     EXPECT_EQ(s.theory, theory) << method;
-    EXPECT_NEAR(s.slope, theory, 0.05 * std::abs(theory)) << method;
     EXPECT_EQ(s.verdict, "agrees") << method << " slope " << s.slope;
     EXPECT_EQ(s.points_used, 8u) << method;  // no rounding-floor point on this ladder
+    if (method == "simpson") {
+      EXPECT_NEAR(s.slope, theory, 0.05 * std::abs(theory)) << method;
+      continue;
+    }
+    const std::vector<double> w = ols_weights(ln_n);
+    double closed_form_slope = 0.0, tolerance = 0.0;
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      closed_form_slope += w[k] * ln_error[k];
+      tolerance += std::abs(w[k]) * 2.0 * (32.0 * std::numbers::e * eps / closed_form_error[k]);
+    }
+    EXPECT_NEAR(s.slope, closed_form_slope, tolerance + 64.0 * eps) << method;
   }
 
-  // Random methods: here the 95% CI of the fitted slope is the honest statement (16 repetitions
-  // per N, 5 N), so the test asks that theory lies inside it: plain MC −1/2, jittered in s = 2
-  // −1/2 − 1/s = −1. For a random seed each check fails with probability ≈ 5 %; the seed is
-  // fixed (seed = 7 in the scene) and the streams depend on nothing else (not the thread count),
-  // so the outcome is deterministic: it passes for this seed every time, and a failure means
-  // the sampling or the fit changed, not bad luck.
+  // Random methods: plain MC (theory −1/2) and jittered points in s = 2 (−1/2 − 1/s = −1).
+  // Model: the R = 16 errors of a cell are independent N(0, σ_N²) (each a mean of N ≥ 64
+  // independent terms; plain MC σ_N = σ/√N, jittered σ_N² = Σ_cells Var_cell(f)/N²; every
+  // (N, repetition) has its own Philox stream). Then RMSE_N² = σ_N²·χ²_R/R exactly, and the OLS
+  // slope of ln RMSE on x = ln N is b + S, with b the slope of ln σ_N and
+  //   S = Σ_i w_i·½ln(χ²_{R,i}/R),  w_i = (x_i − x̄)/Sxx
+  // (Σ w_i = 0 cancels E[½ ln(χ²/R)]). S is symmetric (w_i = −w_{4−i}) and its moment generating
+  // function is exact: E e^{λS} = Π_i (2/R)^{λw_i/2}·Γ(R/2 + λw_i/2)/Γ(R/2). Chernoff's bound
+  // P(|S| ≥ c) ≤ 2·min_λ e^{−λc}·E e^{λS}, for R = 16 and N = 64…16384 by factors of 4
+  // (Sxx = 10·ln²4, sd S = √(ψ′(8)/(4·Sxx)) = 0.042), is 1e-4 at c = 0.1998 and 4.1e-5 at 0.21.
+  // b = −1/2 exactly for plain MC; for jittered on this Gaussian the exact σ_N (cell variances in
+  // closed form with erf, product over the two axes) has slope −0.99915 over the ladder, a bias
+  // of 8.5e-4. So |slope − theory| ≤ 0.21 fails by chance with probability ≤ 1e-4 (the 0.01
+  // margin also absorbs the non-normality of a mean of ≥ 64 bounded terms, which changes
+  // Var ln RMSE by ~κ/(2N), a few per cent). What it detects, by the same bound: a true slope off
+  // by 0.35 passes with probability ≤ 5.4e-3, off by 0.4 ≤ 1.2e-4, off by 0.5 (jittered no
+  // better than plain MC, or plain MC with correlated repetitions at slope 0) ≤ 1e-8.
+  // The seed is fixed (seed = 7); the verdict is checked to be the one slope_verdict.hpp gives
+  // for the written slope and interval (a 95% statement itself, so not asserted to be "agrees").
   for (const auto& [method, theory] :
        std::vector<std::pair<std::string, double>>{{"plain_mc", -0.5}, {"jittered", -1.0}}) {
     ASSERT_EQ(by_method.count(method), 1u) << method;
     const auto& s = by_method[method];
     EXPECT_EQ(s.theory, theory) << method;
-    EXPECT_LE(s.ci_low, theory) << method << " slope " << s.slope << " seed 7";
-    EXPECT_GE(s.ci_high, theory) << method << " slope " << s.slope << " seed 7";
-    EXPECT_EQ(s.verdict, "agrees") << method << " slope " << s.slope << " seed 7";
+    EXPECT_NEAR(s.slope, theory, 0.21) << method << " seed 7";
+    quadmc::power_law_fit fit;
+    fit.status = quadmc::fit_status::ok;
+    fit.slope = s.slope;
+    fit.ci_low = s.ci_low;
+    fit.ci_high = s.ci_high;
+    EXPECT_EQ(s.verdict, quadmc::to_string(quadmc::judge_slope(fit, theory))) << method;
     EXPECT_EQ(s.points_used, 5u) << method;
   }
 }

@@ -35,8 +35,8 @@ const auto product =
                    [](std::span<const double> x) { return x[0] * std::sin(x[1]) * (1.0 + x[2]); });
 
 // Mean of R independent estimates against the exact value: within 4 standard errors of the mean
-// (sample SD of the R estimates / √R). False-alarm probability ≈ 6e-5 per check (normal tail;
-// the estimates are means of 64 bounded values, close to normal).
+// (sample SD of the R estimates / √R). False-alarm probability 7.5e-5 per check (Student's t with
+// R − 1 = 399 degrees of freedom; the estimates are means of 64 bounded values, close to normal).
 template <class F, class MakePoints>
 void expect_unbiased(const F& f, MakePoints make_points, const std::string& method) {
   constexpr int runs = 400;
@@ -124,23 +124,37 @@ slope_fit jittered_slope(const F& f, const std::vector<std::uint64_t>& ks, int r
   return slope_fit(fit_slope(ns, rmse));
 }
 
-// Theory (Mitchell 1996; THEORY.md): RMSE ∝ N^(−1/2 − 1/s) = N^−1 for a smooth f in s = 2.
-// 9 values of N from 16 to 4096, 64 repetitions each: the RMSE of each N is known to ≈ 9%
-// (relative SD of a root mean square of 64 squares ≈ 1/√(2·64)), which puts the slope's
-// standard error near 0.02. Tolerance ±0.12 around −1 (≈ 6 of those standard errors, and room
-// for the pre-asymptotic curvature at N = 16); the fitted 95% interval must exclude −1/2.
+// How far a fitted slope can stray by chance. The R = 64 errors at each N are independent and
+// close to N(0, σ_N²) (sums of N independent stratum terms), so RMSE_N² = σ_N²·χ²_R/R and the
+// OLS slope of ln RMSE on x = ln N is b + S, b the slope of the exact ln σ_N over the ladder and
+//   S = Σ_i w_i·½ln(χ²_{R,i}/R),  w_i = (x_i − x̄)/Sxx,  E e^{λS} = Π_i (2/R)^{λw_i/2}·Γ(R/2 +
+//   λw_i/2)/Γ(R/2)
+// exactly (Σ w_i = 0 cancels the mean of the log). Chernoff's bound, P(S ≥ c) ≤ min_{λ>0}
+// e^{−λc}·E e^{λS} and the same for −S, gives the false-alarm probabilities below. Both ladders
+// have Sxx ≈ 28.9, so sd S = √(ψ′(32)/(4·Sxx)) = 0.0166 and P(|S| ≥ 0.0746) ≤ 1e-4.
+
+// Theory (Mitchell 1996, "Consequences of stratified sampling in graphics"): RMSE ∝ N^(−1/2 − 1/s)
+// = N^−1 for a smooth f in s = 2. 9 values of N from 16 to 4096, 64 repetitions each. Exact σ_N
+// (cell variances of e^x·e^y in closed form, E_cell[g²] and E_cell[g]² per axis) has slope
+// −0.99938 over this ladder, a bias of 6e-4, so |slope + 1| ≤ 0.08 fails by chance with
+// probability ≤ 2.8e-5 (the stratum sums have negative excess kurtosis, ≈ −1.2/N, which only
+// narrows S). The band excludes plain MC's −1/2: jittering that gained nothing, or a pre-
+// asymptotic slope off by 0.1, fails.
 TEST(MonteCarlo, JitteredRmseSlopeOnASmoothIntegrandIsMinusOne) {
   const slope_fit fit = jittered_slope(exponential, {4, 6, 8, 12, 16, 24, 32, 48, 64}, 64, 11);
   std::cout << "[ measured ] jittered, e^(x+y): slope " << fit.slope << " ± " << fit.half_width
             << " (95%), theory −1\n";
-  EXPECT_NEAR(fit.slope, -1.0, 0.12);
-  EXPECT_LT(fit.slope + fit.half_width, -0.5);
+  EXPECT_NEAR(fit.slope, -1.0, 0.08);
 }
 
 // Indicator of the disk of radius 0.4 centred in the unit square, area 0.16π. Theory:
 // N^(−1/2 − 1/(2s)) = N^−0.75 (only the ≈ 4·0.4·π·k strata cut by the circle contribute).
-// 9 values of N from 64 to 16384, 64 repetitions each; tolerance ±0.12 as above, and the 95%
-// interval must exclude both −1/2 (plain MC) and −1 (the smooth rate).
+// 9 values of N from 64 to 16384, 64 repetitions each. The exact σ_N (Σ over the cut cells of
+// p(1 − p)/N², p the area fraction of the disk in the cell, from the antiderivative of
+// √(r² − x²); the areas sum to 0.16π within 1e-13) has slope −0.7457 over this ladder, a bias of
+// 0.0043; the per-repetition errors have excess kurtosis ≤ 0.065 (at k = 8), which widens S by
+// ≤ 2%. So |slope + 0.75| ≤ 0.09 fails by chance with probability ≤ 7.2e-6, and the band
+// excludes both neighbouring rates, −1/2 (plain MC) and −1 (the smooth rate), by 0.16.
 TEST(MonteCarlo, JitteredRmseSlopeOnADiskIndicatorIsMinusThreeQuarters) {
   const auto disk = make_integrand("disk r=0.4", box::unit(2), std::numbers::pi * 0.16,
                                    [](std::span<const double> x) {
@@ -150,15 +164,17 @@ TEST(MonteCarlo, JitteredRmseSlopeOnADiskIndicatorIsMinusThreeQuarters) {
   const slope_fit fit = jittered_slope(disk, {8, 11, 16, 23, 32, 45, 64, 90, 128}, 64, 12);
   std::cout << "[ measured ] jittered, disk indicator: slope " << fit.slope << " ± "
             << fit.half_width << " (95%), theory −0.75\n";
-  EXPECT_NEAR(fit.slope, -0.75, 0.12);
-  EXPECT_LT(fit.slope + fit.half_width, -0.5);
-  EXPECT_GT(fit.slope - fit.half_width, -1.0);
+  EXPECT_NEAR(fit.slope, -0.75, 0.09);
 }
 
 // An additive integrand f = Σⱼ xⱼ² in s = 5: Latin hypercube sampling removes the additive part
-// from the variance (Stein 1987), leaving only the O(1/N²)-order within-row part. Variances over
-// 64 runs at N = 1024; for equal true variances the ratio would follow F(63, 63), whose 1e-4
-// upper quantile is ≈ 2.6: we assert plain/LHS > 100 (false alarm far below 1e-4).
+// from the variance (Stein 1987), leaving only the within-row part. Exact variances at N = 1024:
+// plain Var(Σx²)/N = 5·(4/45)/N = 4.3e-4; LHS Σ_j (1/N²)Σ_rows Var_row(x_j²) ≈ 5·(4/3)/(12N³) =
+// 5.2e-10, a true ratio ρ ≈ 8e5. The observed ratio is ρ·F with F ~ F(63, 63) (normal values),
+// whose 1e-4 lower quantile is ≈ 0.38, so "ratio > 100" fails by chance only if F < 1.2e-4:
+// never in practice. It fails for any LHS that does not stratify every axis (ratio ≈ 1, and
+// F(63, 63)'s 1e-4 upper quantile is ≈ 2.6). The mean check uses Student's t with 63 degrees
+// of freedom: 4.5 standard errors, false alarm 3e-5.
 TEST(MonteCarlo, LatinHypercubeBeatsPlainMonteCarloOnAnAdditiveIntegrand) {
   const auto additive =
       make_integrand("sum x_j^2", box::unit(5), 5.0 / 3.0, [](std::span<const double> x) {
@@ -174,7 +190,7 @@ TEST(MonteCarlo, LatinHypercubeBeatsPlainMonteCarloOnAnAdditiveIntegrand) {
   std::cout << "[ measured ] additive s=5, N=1024: Var plain / Var LHS = "
             << plain.variance() / lhs.variance() << "\n";
   EXPECT_GT(plain.variance() / lhs.variance(), 100.0);
-  EXPECT_NEAR(lhs.mean(), 5.0 / 3.0, 4 * lhs.std_error());
+  EXPECT_NEAR(lhs.mean(), 5.0 / 3.0, 4.5 * lhs.std_error());
 }
 
 TEST(MonteCarlo, RejectsAPointSetOfTheWrongDimension) {

@@ -1,6 +1,7 @@
 #include "quadmc/sampling/hemisphere_warps.hpp"
 
 #include "histogram_chi_square.hpp"
+#include "quadmc/core/ulp_distance.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 
 #include <gtest/gtest.h>
@@ -68,6 +69,35 @@ TEST(CosineHemisphereWarp, PdfIntegratesToOneAndSamplesFollowIt) {
   EXPECT_NEAR(pdf_integral(cosine_hemisphere_warp{}), 1.0, 1e-12);
   const auto r = histogram_test(cosine_hemisphere_warp{}, 2);
   EXPECT_TRUE(r.passes()) << "χ² = " << r.statistic << " > " << r.critical;
+}
+
+// The densities pointwise, against their formulas: 1/(2π) and cos θ/π on the upper hemisphere,
+// 0 below it (a density that leaks below the horizon, or has the right integral but the wrong
+// shape, passes ∫pdf = 1 over the upper hemisphere). Directions (sin θ cos φ, sin θ sin φ, cos θ)
+// with cos θ exact in binary; the references 1/(2π) and cos θ/π are each one correctly rounded
+// division (of fl(2π) or fl(π)), the library's products with fl(1/π) round once more, so 2 ulp.
+// A wrong normalisation (1/π for uniform, cos θ/(2π)) is a factor 2, i.e. 2^52 ulp away.
+TEST(HemisphereWarps, PdfsEqualTheirFormulasAtEveryDirection) {
+  constexpr std::uint64_t ulps = 2;
+  const double uniform_density = 1.0 / (2.0 * pi);
+  for (double z : {1.0, 0.875, 0.5, 0.25, 0x1p-10, 0.0}) {
+    for (double phi : {0.0, 1.0, 0.5 * pi, 3.0, 5.5}) {
+      const double r = std::sqrt(1.0 - z * z);
+      const double d[3] = {r * std::cos(phi), r * std::sin(phi), z};
+      const std::span<const double> w(d, 3);
+      EXPECT_LE(ulp_distance(uniform_hemisphere_warp{}.pdf(w), uniform_density), ulps)
+          << "uniform, z = " << z << ", φ = " << phi;
+      EXPECT_LE(ulp_distance(cosine_hemisphere_warp{}.pdf(w), z / pi), ulps)
+          << "cosine, z = " << z << ", φ = " << phi;
+      const double below[3] = {d[0], d[1], -z};
+      if (z > 0.0) {
+        EXPECT_EQ(uniform_hemisphere_warp{}.pdf(std::span<const double>(below, 3)), 0.0)
+            << "below the horizon, z = " << -z;
+        EXPECT_EQ(cosine_hemisphere_warp{}.pdf(std::span<const double>(below, 3)), 0.0)
+            << "below the horizon, z = " << -z;
+      }
+    }
+  }
 }
 
 // Uniform directions are not cosine-distributed: the cosine test must reject them.

@@ -8,6 +8,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -73,9 +74,12 @@ TEST(ExponentialWarp, SamplesFollowThePdf) {
   EXPECT_TRUE(r.passes()) << "χ² = " << r.statistic << " > " << r.critical;
 }
 
-// The lecture's last line, X = −U′/a, drops the logarithm: it returns values in (−1/a, 0],
-// outside the support. The correct inverse −ln(1 − U)/a maps U = 1 − e^(−a x) back to x.
-TEST(ExponentialWarp, KeepsTheLogarithmTheLectureDrops) {
+// X = −ln(1 − U)/a inverts P(x) = 1 − e^(−ax); the shortcut X = −U′/a (U′ = 1 − U) that drops the
+// logarithm lands in (−1/a, 0], outside the support, and the plain −log(1 − U)/a returns 0 for
+// U < ε/2 (1 − U rounds to 1). So: x = P⁻¹(u) on a grid of x, P(X(u)) = u across [0, 1) with
+// X ≥ 0, and full relative accuracy X = U/a at tiny U (log1p).
+TEST(ExponentialWarp, InvertsTheCdfOnTheWholeUnitInterval) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
   const exponential_warp w(2.0);
   for (double x : {0.0, 0.1, 1.0, 5.0}) {
     const double u = 1.0 - std::exp(-2.0 * x);
@@ -83,8 +87,16 @@ TEST(ExponentialWarp, KeepsTheLogarithmTheLectureDrops) {
     const double tol = 4 * 2.3e-16 * (1.0 / (2.0 * (1.0 - u)) + x);
     EXPECT_NEAR(w.sample(u), x, tol) << "x = " << x;
   }
-  const double lecture_form = -(1.0 - 0.5) / 2.0;  // −U′/a at U = 0.5
-  EXPECT_LT(lecture_form, 0.0);
+  // P(X(u)) − u: X has a relative error of ~2ε (log1p, one division), which moves P by
+  // p(X)·X·2ε = (1 − u)·(−ln(1 − u))·2ε ≤ 2ε/e; −expm1 adds ε/2·u. 4ε covers both.
+  for (double u :
+       {0x1p-60, 1e-9, 0.01, 0.25, 0.5, 0.75, 0.99, 1.0 - 0x1p-40, 0x1.fffffffffffffp-1}) {
+    const double x = w.sample(u);
+    EXPECT_GE(x, 0.0) << "u = " << u;
+    EXPECT_NEAR(w.cdf(x), u, 4.0 * eps) << "u = " << u;
+  }
+  // −log1p(−u)/a = (u + u²/2 + …)/a: at u = 1e-20 the u² term is 5e-21 relative, far below ε.
+  EXPECT_NEAR(w.sample(1e-20), 0.5e-20, 2.0 * eps * 0.5e-20);
   EXPECT_NEAR(w.sample(0.5), std::log(2.0) / 2.0, 1e-16);
   EXPECT_EQ(w.sample(0.0), 0.0);
   EXPECT_TRUE(std::isfinite(w.sample(0x1.fffffffffffffp-1)));

@@ -109,12 +109,15 @@ TEST(MakePlan, TensorVersusMcScene) {
   // Romberg and importance run on genz_gaussian_s1 only; in s = 8 the midpoint rule keeps one
   // grid per integer 8th root: N = 16·4^k ≤ 262144 = 2^18 gives q = 1, 1, 2, 2, 2, 3, 4 (65536
   // = 4^8 exactly), 4 → n = 1, 2, 3, 4, the rest skipped as repeats.
+  std::size_t one_dimensional_only = 0;  // so that the loop cannot pass by finding none
   for (const auto& c : p.cells) {
     const std::string& method = p.source.methods[c.method].name;
     if (method == "romberg" || method == "importance") {
       EXPECT_EQ(c.dimension, 1u) << method;
+      ++one_dimensional_only;
     }
   }
+  EXPECT_GT(one_dimensional_only, 0u) << "no romberg or importance cell planned";
   std::vector<std::uint64_t> n;
   for (const auto& c : p.cells) {
     if (c.instance == 0 && c.dimension == 8 && p.source.methods[c.method].name == "midpoint") {

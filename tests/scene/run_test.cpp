@@ -4,6 +4,8 @@
 #include "quadmc/scene/run.hpp"
 
 #include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/rules/midpoint_rule.hpp"
+#include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/scene/parse.hpp"
 
 #include <gtest/gtest.h>
@@ -156,6 +158,68 @@ N = [9]
   const run_output one = run_plan(small, many);
   EXPECT_EQ(one.threads_allowed, 64u);
   EXPECT_EQ(one.threads, 1u);
+}
+
+}  // namespace
+}  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// The ensemble shift (run.hpp): every pooled estimate is value_k + (Ī − I_k), so that against
+// the series' reference Ī its error is instance k's own error value_k − I_k. A deterministic rule
+// makes each instance's error a fixed number, computed here directly with the library (same
+// rule, same n per axis, same accumulator, same thread count: the same bits), so the pooled
+// error must equal it up to the roundings of the shift: fl(Ī − I_k) and fl(value_k + shift)
+// are each within ε/2 of their exact sums, and the test's two subtractions add ε/2·|error| each,
+// so |pooled error − own error| ≤ ε·(|Ī − I_k| + |pooled value| + |own error|). Without the
+// shift the pooled error would be off by Ī − I_k, with the wrong sign by 2(Ī − I_k); the test
+// asserts that these differences exceed the tolerance by orders of magnitude for these drawn
+// instances, so both mutations fail.
+TEST(RunPlan, EnsembleErrorsAreEachInstancesOwnError) {
+  constexpr std::string_view text = R"(name = "shift"
+seed = 5
+threads = 1
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+ensemble = 4
+[[method]]
+name = "midpoint"
+[budget]
+N = [16, 64, 256]
+)";
+  const plan p = make_plan(parse_scene(text, "shift.toml"));
+  ASSERT_EQ(p.instances.size(), 4u);
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 1u);
+  const convergence_series& series = out.series.front();
+  const double mean_reference = series.reference;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  std::size_t checked = 0;
+  for (const plan_cell& cell : p.cells) {
+    const plan_instance& inst = p.instance_of(cell);
+    const double exact = inst.function.info().exact;
+    const double own_value =
+        integrate(inst.function, midpoint_rule{}, cell.per_axis, 1, summation::pairwise).value;
+    const double own_error = own_value - exact;
+    const auto pooled_cell =
+        std::find_if(series.cells.begin(), series.cells.end(),
+                     [&](const convergence_cell& c) { return c.n == cell.nominal_N; });
+    ASSERT_NE(pooled_cell, series.cells.end()) << "N = " << cell.nominal_N;
+    ASSERT_EQ(pooled_cell->repetitions.size(), p.instances.size()) << "one estimate per instance";
+    // Cells run in (integrand, instance, method, N) order, so repetition k is instance k.
+    const double pooled_value = pooled_cell->repetitions.at(cell.instance).value;
+    const double pooled_error = pooled_value - mean_reference;
+    const double shift = mean_reference - exact;
+    const double tolerance = eps * (std::abs(shift) + std::abs(pooled_value) + std::abs(own_error));
+    EXPECT_NEAR(pooled_error, own_error, tolerance)
+        << "instance " << cell.instance << ", N = " << cell.nominal_N;
+    // The instances must differ enough that a missing or reversed shift is visible.
+    EXPECT_GT(std::abs(shift), 1e6 * tolerance) << "instance " << cell.instance;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4u * 3u) << "4 instances × 3 N";
 }
 
 }  // namespace
