@@ -251,8 +251,13 @@ any_integrand make_integrand(std::string_view name, const integrand_params& p) {
   if (name == "half_space") {
     const std::size_t s = dimension_or(p, 1);
     std::vector<double> w = vector_of_length(p, "w", s, std::vector<double>(s, 1.0));
-    const double total = std::accumulate(w.begin(), w.end(), 0.0);
-    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", 0.6 * total)));
+    // 0.6·Σw; when Σw overflows (weights near 1e308), as Σ 0.6·wᵢ, which may still be finite.
+    double t = 0.6 * std::accumulate(w.begin(), w.end(), 0.0);
+    if (!std::isfinite(t)) {
+      t = 0.0;
+      for (double wi : w) t += 0.6 * wi;
+    }
+    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", t)));
   }
   if (name == "sobol_g") {
     const std::size_t s = dimension_or(p, 1);
