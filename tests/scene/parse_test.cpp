@@ -613,6 +613,10 @@ TEST(SceneLimits, IntegrandTablesAreBounded) {
   expect_error(t, line_of(t, "name = \"nn"), "integrand[1].name");
   EXPECT_NO_THROW(parse(
       replace(valid, "dimension = 2", "dimension = 2\nname = \"" + std::string(128, 'n') + "\"")));
+  // The scene's own name is one folder name: the command checks its length, not the parser.
+  EXPECT_EQ(
+      parse(replace(valid, "name = \"t\"", "name = \"" + std::string(200, 's') + "\"")).name.size(),
+      200u);
   t = replace(valid, "dimension = 2", "dimension = 2\na = [" + repeated("1.0", 1025, ", ") + "]");
   expect_error(t, line_of(t, "a = "), "integrand[1].a");
   t = replace(valid, "family = \"genz_gaussian\"", "family = \"" + std::string(129, 'f') + "\"");

@@ -464,13 +464,17 @@ class scene_reader {
     expected(e, "true or false");
   }
 
-  // Names become file and directory names in results/, so they stay portable, and short enough
-  // for a file name with a prefix and a suffix (NAME_MAX is 255 bytes).
-  std::string display_name(const entry& e) const {
-    const std::string what = fmt::format(
-        "a name of letters, digits, '_', '-', '.' (at most {} characters)", max_name_length);
+  // Names become file and directory names in results/, so they stay portable. Integrand names
+  // and method labels are also copied into every cell's listing and file names with a prefix
+  // and a suffix, so they are at most max_name_length long; the scene's own `name` is one folder
+  // name, whose length the command checks against the file system.
+  std::string display_name(const entry& e, bool bounded = true) const {
+    const std::string what =
+        bounded ? fmt::format("a name of letters, digits, '_', '-', '.' (at most {} characters)",
+                              max_name_length)
+                : std::string("a name of letters, digits, '_', '-', '.'");
     std::string s = string(e, what);
-    if (!is_portable_name(s) || s.size() > max_name_length) expected(e, what);
+    if (!is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
     return s;
   }
   static constexpr std::size_t max_name_length = scene_limits::max_name_length;
@@ -929,7 +933,7 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
   scene sc;
   sc.file = r.file();
   if (const auto e = r.find(root, "name", "")) {
-    sc.name = r.display_name(*e);
+    sc.name = r.display_name(*e, false);
   } else {
     sc.name = std::filesystem::path(r.file()).stem().string();
     if (!scene_reader::is_portable_name(sc.name)) sc.name = "scene";
