@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace quadmc {
@@ -92,6 +93,40 @@ TEST(CellStatistics, RejectsBadInputNamingTheRepetition) {
   EXPECT_THROW(compute_cell_statistics(negative_time, 1.0), invalid_argument);
   const std::vector<repetition_result> negative_se = {{1.0, -0.1, 1, 1.0}};
   EXPECT_THROW(compute_cell_statistics(negative_se, 1.0), invalid_argument);
+}
+
+// Errors of 1e200 and −3e200 (an integral of 1e210 estimated to 1e-10): e² overflows double, and
+// the RMSE came out inf and its standard error NaN ("invalid error[0] = -nan" further on). The
+// errors are scaled by a power of two before squaring: RMSE = 1e200·√((1 + 9)/2) = √5·1e200,
+// se(MSE) = sd(e²)/√2 with sd({1, 9}·1e400) = √32·1e400, and se(RMSE) = se(MSE)/(2·RMSE).
+TEST(CellStatistics, HugeErrorsGiveFiniteStatistics) {
+  const std::vector<repetition_result> reps = {{1e210 + 1e200, 0.0, 10, 1.0},
+                                               {1e210 - 3e200, 0.0, 10, 1.0}};
+  const double reference = 1e210;
+  const cell_statistics c = compute_cell_statistics(reps, reference);
+  // The errors as double computes them (1e210 ± 1e200 carries the rounding of 1e210, whose ulp
+  // is 1.5e194), in units of 1e200; for two values, sd(e²)/√2 = |e₁² − e₂²|/2.
+  const double e1 = (reps[0].value - reference) / 1e200, e2 = (reps[1].value - reference) / 1e200;
+  EXPECT_NEAR(e1, 1.0, 1e-5);
+  EXPECT_NEAR(e2, -3.0, 1e-5);
+  const double rmse = std::sqrt((e1 * e1 + e2 * e2) / 2.0);
+  EXPECT_NEAR(c.rmse, rmse * 1e200, 1e-14 * rmse * 1e200);
+  EXPECT_NEAR(c.mean_abs_error, (std::abs(e1) + std::abs(e2)) / 2.0 * 1e200, 1e-14 * 2e200);
+  const double se_rmse = std::abs(e1 * e1 - e2 * e2) / 2.0 / (2.0 * rmse);
+  EXPECT_NEAR(c.std_error_of_rmse, se_rmse * 1e200, 1e-14 * se_rmse * 1e200);
+  // The largest finite errors, near DBL_MAX, still give a finite RMSE.
+  const std::vector<repetition_result> extreme = {{1.7e308, nan, 1, 0.0}};
+  EXPECT_DOUBLE_EQ(compute_cell_statistics(extreme, 0.0).rmse, 1.7e308);
+  // An error that itself overflows (estimate and reference of opposite signs) is named.
+  const std::vector<repetition_result> opposite = {{1.7e308, nan, 1, 0.0}};
+  try {
+    compute_cell_statistics(opposite, -1.7e308);
+    ADD_FAILURE() << "no error";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("repetitions[0].value − reference = inf"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -120,5 +120,20 @@ TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
   }
 }
 
+// The floor, fit and work-precision steps name their inputs by position ("error[0]",
+// "target"); the series goes in front of the message, so it says which integrand and method.
+TEST(ConvergenceTable, StepErrorsNameTheSeries) {
+  analysis_options options;
+  options.error_targets = {-1.0};
+  try {
+    analyse_convergence(midpoint_series(), options);
+    ADD_FAILURE() << "no error";
+  } catch (const invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("genz_gaussian / s = 1 / midpoint: invalid target", 0),
+              0u)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace quadmc

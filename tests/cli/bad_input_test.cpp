@@ -147,5 +147,81 @@ TEST(BadInputTest, UnknownSimdLevelInTheEnvironment) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.toml"}) << describe(r);
 }
 
+// --- Inputs that crashed, hung or ran before failing: refused before any work ------------------
+
+std::string repeated(const std::string& part, std::size_t count, const std::string& separator) {
+  std::string out;
+  for (std::size_t i = 0; i < count; ++i) out += (i > 0 ? separator : "") + part;
+  return out;
+}
+
+// A dotted key of 40,000 parts (80 KB) and a header of 50,000 parts made toml++ recurse until
+// the stack overflowed: exit status 139 (SIGSEGV), no message.
+TEST(BadInputTest, DeepDottedKeysAreAnErrorNotACrash) {
+  expect_scene_error(repeated("a", 40000, ".") + " = 1\n" + valid_tables, 1, std::nullopt,
+                     "nesting deeper than 64 levels");
+  expect_scene_error(valid_tables + "[" + repeated("a", 50000, ".") + "]\n", 12, std::nullopt,
+                     "nesting deeper than 64 levels");
+}
+
+// factor = 1.0000000001 ran the ladder loop for minutes before the plan was printed.
+TEST(BadInputTest, AGeometricLadderOfTooManySteps) {
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"simpson\"\n[budget]\n"
+      "N = { from = 1, to = 1e6, factor = 1.0000000001 }\n",
+      6, "budget.N.factor", "at most 4096");
+}
+
+// /dev/zero was read until memory ran out: it is no regular file, and is refused unread.
+TEST(BadInputTest, ADeviceIsNoSceneFile) {
+  scratch_folder dir;
+  const command_result r = run_quadmc(dir, {"run", "/dev/zero"});
+  EXPECT_EQ(r.exit_status, 1) << describe(r);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
+  EXPECT_NE(r.err.find("/dev/zero"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << describe(r);
+  EXPECT_TRUE(dir.entries().empty()) << describe(r);
+}
+
+// Each of these planned (with an exact value of inf or NaN, or a cell the run refuses) and
+// failed only when the run reached it; now `run` stops at the plan, naming the key.
+TEST(BadInputTest, ReferencesTheRunCannotUseAreRefusedAtPlanTime) {
+  const std::string tail = "[[method]]\nname = \"plain_mc\"\n[budget]\nN = [8, 16]\n";
+  expect_scene_error("[[integrand]]\nfamily = \"exp\"\nlower = 0.0\nupper = 1000.0\n" + tail, 4,
+                     "integrand[1].upper", "709.78");
+  expect_scene_error("[[integrand]]\nfamily = \"poly\"\nlower = -1e100\nupper = 1e100\n" + tail, 3,
+                     "integrand[1].lower", "1e51");
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"genz_product_peak\"\ndimension = 1\na = [1e300]\nu = [0.5]\n" +
+          tail,
+      4, "integrand[1].a", "aᵢ² must stay finite");
+  // Finite, but too large for the statistics: this one ended with "invalid error[0] = -nan".
+  expect_scene_error("[[integrand]]\nfamily = \"exp\"\nlower = 0.0\nupper = 700.0\n" + tail, 1,
+                     "integrand[1]", "too large for plain_mc at N = 8");
+}
+
+TEST(BadInputTest, CellsTheRunWouldRefuseAreRefusedAtPlanTime) {
+  // N·s > 2^62: the point set refused it after the plan was printed.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"genz_gaussian\"\ndimension = 1024\n[[method]]\n"
+      "name = \"plain_mc\"\nrepetitions = 1\n[budget]\nN = [9007199254740992]\n",
+      8, "budget.N", "N·s ≤ 2^62");
+  // A warp rate whose e^λ overflows: the warp refused it after the plan was printed.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"importance\"\n"
+      "warp = { name = \"exponential\", rate = 1e308 }\n[budget]\nN = [8, 16]\n",
+      5, "method[1].warp.rate", "|l| <= 700");
+  // Plots without the CSV they are drawn from: the plot script failed after the run.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"simpson\"\n[budget]\nN = [8, 16]\n"
+      "[output]\ncsv = false\n",
+      7, "output.plots", "plots need the CSV");
+  // An ensemble of a million instances at s = 1024 grew until memory ran out.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"genz_gaussian\"\ndimension = 1024\nensemble = 1000000\n"
+      "[[method]]\nname = \"plain_mc\"\n[budget]\nN = [64]\n",
+      4, "integrand[1].ensemble", "at most 65536");
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

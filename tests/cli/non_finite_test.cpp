@@ -1,12 +1,10 @@
-// An integrand whose values overflow, through `quadmc run`: the run must stop with one line
-// naming the integrand and the point (functions/integrand.hpp, check_finite_batch) and write
-// nothing, rather than fit slopes to inf or NaN.
+// An integrand whose values overflow, through `quadmc run`: the command must stop with one line
+// naming the key and write nothing, rather than fit slopes to inf or NaN.
 //
-// Use it for the command's handling of a failure in the middle of a run (after the plan
-// succeeded). No catalogue member returns NaN from valid parameters that this test could find
-// (sin on huge bounds is finite; bounds whose width overflows are refused when the plan is made);
-// eˣ on [700, 710] overflows to inf at x > ln(DBL_MAX) ≈ 709.78, and the rules' end node x = 710
-// is evaluated in the first cell.
+// eˣ on [700, 710] has an integral beyond double (e^710 > DBL_MAX), so `run` refuses it when the
+// plan is made, before any work. No catalogue member with valid parameters turns non-finite in
+// the middle of a run any more; that path (check_finite_batch naming the point, the runner naming
+// the cell) is tested in tests/scene/run_test.cpp.
 #include "quadmc_command.hpp"
 
 #include <gtest/gtest.h>
@@ -18,7 +16,7 @@
 namespace quadmc_cli_test {
 namespace {
 
-TEST(NonFiniteTest, OverflowingIntegrandStopsTheRunWithOneLine) {
+TEST(NonFiniteTest, AnIntegralBeyondDoubleIsRefusedByThePlan) {
   const std::string scene = R"(name = "overflow"
 [[integrand]]
 family = "exp"
@@ -39,7 +37,10 @@ plots = false
   const command_result r = run_quadmc(dir, {"run", (dir / "scene.toml").string()});
   EXPECT_EQ(r.exit_status, 1) << describe(r);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
-  EXPECT_NE(r.err.find("exp returned inf at x = (710)"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("scene.toml:5:1: key 'integrand[1].upper': invalid upper = 710: expected "
+                       "upper ≤ 709.78"),
+            std::string::npos)
+      << describe(r);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.toml"}) << describe(r);
 }
 

@@ -110,5 +110,34 @@ TEST(Classic1d, BadParametersAreNamed) {
   EXPECT_NE(message([] { step_1d(-0.1); }).find("invalid c = -0.1"), std::string::npos);
 }
 
+// exp on [0, 1000] had exact = inf and poly on [−1e100, 1e100] exact = NaN, and both planned:
+// the run then failed at the first value. The bounds that keep the closed forms finite are
+// checked when the integrand is built.
+TEST(Classic1d, BoundsWhoseIntegralOverflowsAreRefused) {
+  auto message = [](auto&& build) -> std::string {
+    try {
+      build();
+    } catch (const invalid_argument& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  std::string m = message([] { exp_1d(0.0, 1000.0); });
+  EXPECT_NE(m.find("invalid upper = 1000: expected upper ≤ 709.78"), std::string::npos) << m;
+  const double at_limit = exp_1d(709.0, 709.78).info().exact;
+  EXPECT_TRUE(std::isfinite(at_limit));
+  EXPECT_NEAR(at_limit, std::exp(709.78) - std::exp(709.0), 1e-15 * at_limit);
+  m = message([] { poly_1d(-1e100, 1e100); });
+  EXPECT_NE(m.find("invalid lower = -1e+100: expected |lower| ≤ 1e51"), std::string::npos) << m;
+  m = message([] { poly_1d(0.0, 2e51); });
+  EXPECT_NE(m.find("invalid upper = 2e+51"), std::string::npos) << m;
+  // (1e51)⁶/6 = 1.7e305: finite.
+  EXPECT_NEAR(poly_1d(0.0, 1e51).info().exact, 1e306 / 6.0, 1e-14 * 1e306 / 6.0);
+  // A width beyond double: every node lower + (upper − lower)·t would be NaN.
+  m = message([] { sin_1d(-1e308, 1e308); });
+  EXPECT_NE(m.find("a finite width upper − lower"), std::string::npos) << m;
+  EXPECT_TRUE(std::isfinite(sin_1d(-1e307, 1e307).info().exact));
+}
+
 }  // namespace
 }  // namespace quadmc

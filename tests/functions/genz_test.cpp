@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <cmath>
 #include <complex>
 #include <cstdio>
+#include <numbers>
 
 namespace quadmc {
 namespace {
@@ -314,6 +316,77 @@ TEST(Genz, BadParametersAreNamed) {
   EXPECT_NEAR(genz_oscillatory({0.0}, {0.0}).info().exact, 1.0, 1e-16);
   EXPECT_NEAR(genz_discontinuous({0.0, -1.0}, {0.5, 1.0}).info().exact, 0.5 * -std::expm1(-1.0),
               1e-16);
+}
+
+// --- Parameters at the edges of double: a finite, correct reference or a named refusal --------
+
+// Every instance either has a finite exact value and finite values at the points that matter
+// (the peak, the corners) or its constructor names the parameter.
+TEST(GenzRange, ProductPeakIsEvaluatedWithoutOverflowOnTheWay) {
+  // Π 1/(aᵢ⁻² + dᵢ²) reached 1e300·1e300 = inf after two factors at x = u although f(u) = 1;
+  // now f = C·Π 1/(1 + aᵢ²dᵢ²) with C = Π aᵢ² = 1 (computed past the overflow of its prefix).
+  const genz_product_peak f({1e150, 1e150, 1e-150, 1e-150}, {0.5, 0.5, 0.5, 0.5});
+  EXPECT_NEAR(at(f, {0.5, 0.5, 0.5, 0.5}), 1.0, 1e-15);
+  EXPECT_NEAR(f.info().derivative_bound[0].value(), 1.0, 1e-15);
+  // ∫ = Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)] = (1e150·π)²·(1e-150·1e-150)² = π²·1e-300.
+  const double expected = std::numbers::pi * std::numbers::pi * 1e-300;
+  EXPECT_NEAR(f.info().exact, expected, 1e-14 * expected);
+  // Ordinary parameters: the same values as the textbook form, to rounding.
+  const genz_product_peak g({2.0, 5.0}, {0.3, 0.7});
+  const double x = 0.1, y = 0.9;
+  const double textbook = 1.0 / (0.25 + (x - 0.3) * (x - 0.3)) / (0.04 + (y - 0.7) * (y - 0.7));
+  EXPECT_NEAR(at(g, {x, y}), textbook, 4e-16 * textbook);
+}
+
+TEST(GenzRange, HugeOrTinyAAreRefusedWithTheParameterNamed) {
+  // a = 1e300: a² = inf (and the integral π·1e300 the plan used to print as finite, with f = inf
+  // at x = u).
+  std::string m = message_of([] { genz_product_peak({1e300}, {0.5}); });
+  EXPECT_NE(m.find("invalid a = 1.0000000000000001e+300"), std::string::npos) << m;
+  // The peak Π aᵢ² = 1e320 overflows although each aᵢ² is finite.
+  m = message_of([] { genz_product_peak({1e80, 1e80}, {0.5, 0.5}); });
+  EXPECT_NE(m.find("peak Π aᵢ² at x = u is a normal double"), std::string::npos) << m;
+  // The Gaussian's aᵢ² = inf would give inf·0 = NaN at x = u.
+  m = message_of([] { genz_gaussian({1e155}, {0.5}); });
+  EXPECT_NE(m.find("invalid a = 1e+155: expected aᵢ ≤ 1.3e154"), std::string::npos) << m;
+  EXPECT_NEAR(genz_gaussian({1e150}, {0.5}).info().exact, std::sqrt(std::numbers::pi) * 1e-150,
+              1e-15 * 1.8e-150);
+  // Oscillatory: 2π + Σ|aᵢ| = inf, so cos of the phase is NaN.
+  m = message_of([] { genz_oscillatory({1.7e308, 1.7e308}, {0.0, 0.0}); });
+  EXPECT_NE(m.find("finite 2π + Σ|aᵢ|"), std::string::npos) << m;
+  EXPECT_TRUE(std::isfinite(genz_oscillatory({1e308, -1e307}, {0.0, 0.0}).info().exact));
+  // Discontinuous: e^(Σ aᵢ) overflows at the corner.
+  m = message_of([] { genz_discontinuous({400.0, 400.0}, {1.0, 1.0}); });
+  EXPECT_NE(m.find("above ln(DBL_MAX)"), std::string::npos) << m;
+  // Subnormal aᵢ: the closed forms divide by them.
+  m = message_of([] { genz_continuous({1e-310}, {0.5}); });
+  EXPECT_NE(m.find("not subnormal"), std::string::npos) << m;
+  // Integrals below the normal range: a relative error is no longer measurable.
+  m = message_of([] { genz_continuous({1e300, 1e300}, {0.5, 0.5}); });
+  EXPECT_NE(m.find("integral of genz_continuous is a normal double (it is about 1e-600, below"),
+            std::string::npos)
+      << m;
+  // s = 12, aᵢ = 1e27: the closed form is accurate (bound ≈ 1e-17) but 1/(12!·Π aᵢ) ≈ 1e-333.
+  m = message_of(
+      [] { genz_corner_peak(std::vector<double>(12, 1e27), std::vector<double>(12, 0.5)); });
+  EXPECT_NE(m.find("integral of genz_corner_peak is a normal double"), std::string::npos) << m;
+}
+
+TEST(GenzRange, DiscontinuousProductSurvivesAnUnderflowOnTheWay) {
+  // Factors 1e-200, 1e-200 (a = −1e200: ∫₀¹e^{ax} = 1/|a|) and (e^700 − 1)/700: the product of
+  // the first two underflows in double, the whole is 1e-400·e^700/700 ≈ 1.4e-99.
+  const genz_discontinuous f({-1e200, -1e200, 700.0}, {1.0, 1.0, 1.0}, {1});
+  const double expected = std::exp(700.0 - 400.0 * std::log(10.0)) / 700.0;
+  EXPECT_NEAR(f.info().exact, expected, 1e-13 * expected);
+}
+
+TEST(GenzRange, DerivativeBoundsThatOverflowAreLeftEmpty) {
+  const auto info = genz_gaussian({1e100}, {0.5}).info();
+  EXPECT_FALSE(info.derivative_bound[4].has_value()) << "12a⁴ = 1.2e401";
+  EXPECT_TRUE(info.derivative_bound[2].has_value());
+  const auto osc = genz_oscillatory({1e100}, {0.0}).info();
+  EXPECT_FALSE(osc.derivative_bound[4].has_value());
+  EXPECT_EQ(osc.derivative_bound[0], 1.0);
 }
 
 }  // namespace

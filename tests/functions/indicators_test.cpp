@@ -2,6 +2,8 @@
 // section lengths, split where the sections change formula.
 #include "quadmc/functions/indicators.hpp"
 
+#include "quadmc/functions/catalogue.hpp"
+
 #include "reference_quadrature.hpp"
 
 #include <gtest/gtest.h>
@@ -127,6 +129,44 @@ TEST(HalfSpace, BadParametersAreNamed) {
   // The worst cancellation at the largest s (t = Σw/2, all 2^20 terms alive) stays far inside
   // what 50 digits can carry: the accuracy rejection never fires for unit weights.
   EXPECT_LT(half_space_indicator(std::vector<double>(20, 1.0), 10.0).relative_error_bound(), 1e-25);
+}
+
+// w = (1e308, 1e308), t = 1.5e308 gave exact = 0 (s!·Π wᵢ = inf in double) and a run that fitted
+// a "shallower" slope to a wrong reference. The region does not change when w and t are scaled
+// together: the volume is that of w = (1, 1), t = 1.5, i.e. 1 − 0.5²/2 = 0.875.
+TEST(HalfSpace, HugeWeightsGiveTheVolumeOfTheScaledProblem) {
+  const half_space_indicator huge({1e308, 1e308}, 1.5e308);
+  EXPECT_NEAR(huge.info().exact, 0.875, 1e-15);
+  const half_space_indicator tiny({1e-300, 3e-300}, 2e-300);
+  const half_space_indicator unit({1.0, 3.0}, 2.0);
+  EXPECT_NEAR(tiny.info().exact, unit.info().exact, 1e-15);
+  // The scaled comparison decides the same points as the unscaled one.
+  EXPECT_EQ(at(huge, {0.7, 0.79}), 1.0);  // 1.49e308 ≤ 1.5e308
+  EXPECT_EQ(at(huge, {0.7, 0.81}), 0.0);  // 1.51e308 (inf in double) > 1.5e308
+  // The default t = 0.6·Σw is finite although Σw = 2e308 overflows.
+  integrand_params p;
+  p.dimension = 2;
+  p.vectors["w"] = {1e308, 1e308};
+  EXPECT_NEAR(make_integrand("half_space", p).info().exact, 1.0 - 0.8 * 0.8 / 2.0, 1e-15);
+  // Weights further apart than double's range are refused, naming w.
+  try {
+    half_space_indicator f({1e300, 1e-300}, 1.0);
+    FAIL();
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid w = 1e-300"), std::string::npos) << e.what();
+  }
+}
+
+// The volume of a ball of radius 1/2 is below 1e-308 from s ≈ 340 on (Γ(s/2 + 1) overflows too):
+// such a reference was 0 and is now refused.
+TEST(Ball, VolumesBelowTheNormalRangeAreRefused) {
+  EXPECT_GT(ball_indicator(std::vector<double>(300, 0.5), 0.5).info().exact, 1e-300);
+  try {
+    ball_indicator f(std::vector<double>(400, 0.5), 0.5);
+    FAIL();
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid r = 0.5"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -63,5 +63,13 @@ TEST(SobolG, BadParametersAreNamed) {
   EXPECT_THROW(sobol_g({}), invalid_argument);
 }
 
+// With aᵢ = 0 the largest value is 2^s: at s = 1024 it is 2^1024 = inf at the corners (a
+// trapezoid node), while the exact integral is 1. Refused, naming a.
+TEST(SobolG, ALargestValueThatOverflowsIsRefused) {
+  EXPECT_THROW(sobol_g(std::vector<double>(1024, 0.0)), invalid_argument);
+  const sobol_g f(std::vector<double>(1023, 0.0));
+  EXPECT_EQ(f.info().derivative_bound[0], std::ldexp(1.0, 1023));
+}
+
 }  // namespace
 }  // namespace quadmc

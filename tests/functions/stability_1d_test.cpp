@@ -165,5 +165,21 @@ TEST(BadInput, ShiftOutsideTheUnitInterval) {
             "invalid u = 1.25: expected uᵢ in [0, 1]");
 }
 
+// f = e^t/w reaches e/w at x = upper: a subnormal width made that inf (with a finite exact e − 1),
+// and exp_float overflowed float above 88.72 with a finite double reference.
+TEST(Stability1d, WidthsAndBoundsWhoseValuesOverflowAreRefused) {
+  EXPECT_NE(message_of([] { shifted_exp_1d(0.0, 1e-310); }).find("a width of at least"),
+            std::string::npos);
+  const shifted_exp_1d narrow(0.0, std::numeric_limits<double>::min());
+  double y = 0.0;
+  const double x = std::numeric_limits<double>::min();
+  narrow.evaluate(std::span<const double>(&x, 1), std::span<double>(&y, 1));
+  EXPECT_TRUE(std::isfinite(y)) << y;
+  EXPECT_NE(message_of([] { exp_float_1d(80.0, 89.0); }).find("invalid upper = 89"),
+            std::string::npos);
+  const auto info = exp_float_1d(80.0, 88.0).info();
+  EXPECT_EQ(info.derivative_bound[0], std::exp(88.0f)) << "f's largest value, in float";
+}
+
 }  // namespace
 }  // namespace quadmc

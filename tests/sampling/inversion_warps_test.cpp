@@ -120,4 +120,26 @@ TEST(InversionWarps, RejectParametersOutsideTheirDomain) {
   EXPECT_THROW(truncated_exponential_warp(0.0), invalid_argument);
 }
 
+// Exponents above 1e5: X = U^(1/(n+1)) rounds to the double grid below 1, which biases f(X)/p(X)
+// by up to n·2^-52 relative (inversion_warps.hpp); at n = 1e308 every sample was X = 1 and an
+// importance estimate of ∫eˣ came out e/1e308 ≈ 0. The bound and the rates' ±700 hold exactly.
+TEST(InversionWarps, ExponentsAndRatesWithinTheirAccurateRange) {
+  EXPECT_NO_THROW(power_warp{power_warp::max_exponent});
+  EXPECT_THROW(power_warp(std::nextafter(power_warp::max_exponent, 1e6)), invalid_argument);
+  EXPECT_THROW(power_warp(1e308), invalid_argument);
+  const double rate = truncated_exponential_warp::max_abs_rate;
+  EXPECT_NO_THROW(truncated_exponential_warp{rate});
+  EXPECT_NO_THROW(truncated_exponential_warp(-rate));
+  EXPECT_THROW(truncated_exponential_warp(std::nextafter(rate, 1e3)), invalid_argument);
+  EXPECT_THROW(truncated_exponential_warp(-std::nextafter(rate, 1e3)), invalid_argument);
+  // At the bound the density is finite and normal at both ends, and integrates to 1.
+  for (const double lambda : {rate, -rate}) {
+    const truncated_exponential_warp w(lambda);
+    for (const double x : {0.0, 1.0}) {
+      EXPECT_TRUE(std::isnormal(w.pdf(x))) << "λ = " << lambda << ", x = " << x;
+    }
+    EXPECT_TRUE(std::isfinite(w.sample(0.999999)));
+  }
+}
+
 }  // namespace

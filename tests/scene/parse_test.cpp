@@ -4,8 +4,17 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <string_view>
+#include <thread>
 
 namespace quadmc {
 namespace {
@@ -384,6 +393,269 @@ TEST(SceneErrors, UnreadableFile) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.toml:0:0:"), std::string::npos)
         << e.what();
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bounds: whatever a small file asks for, parsing it takes bounded time and memory.
+
+std::string repeated(std::string_view part, std::size_t count, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i > 0) out += separator;
+    out += part;
+  }
+  return out;
+}
+
+// toml++ recursed once per part of a dotted key or table header and overflowed the stack (a
+// segfault at 40,000 parts, an 80 KB file); the parser now measures the depth before toml++ sees
+// the text. The error is at the first part beyond 64: column 2·64 + 1 of `a.a.a…`.
+TEST(SceneLimits, DeepDottedKeysAndHeadersAreRefusedBeforeParsing) {
+  const std::string key = repeated("a", 40000, ".") + " = 1\n" + std::string(valid);
+  std::string m = expect_error(key, 1, "");
+  EXPECT_NE(m.find("scene.toml:1:129: nesting deeper than 64 levels"), std::string::npos) << m;
+  const std::string header = std::string(valid) + "[" + repeated("a", 50000, ".") + "]\n";
+  m = expect_error(header, line_of(header, "[a.a"), "");
+  EXPECT_NE(m.find(fmt::format("scene.toml:{}:130: nesting", line_of(header, "[a.a"))),
+            std::string::npos)
+      << m;
+  // Inside an inline table the parts add to the table's own depth: 2 + 63 > 64.
+  const std::string inline_key =
+      "x = { " + repeated("b", 63, ".") + " = 1 }\n" + std::string(valid);
+  expect_error(inline_key, 1, "");
+}
+
+TEST(SceneLimits, TheNestingLimitIsSixtyFourLevels) {
+  // 64 parts is the limit, met exactly: the scene goes on to toml++ and to the key checks.
+  const std::string at_limit = repeated("a", 64, ".") + " = 1\n" + std::string(valid);
+  std::string m = expect_error(at_limit, 1, "a");
+  EXPECT_NE(m.find("unknown key in the scene"), std::string::npos) << m;
+  m = expect_error(repeated("a", 65, ".") + " = 1\n" + std::string(valid), 1, "");
+  EXPECT_NE(m.find("nesting deeper than 64"), std::string::npos) << m;
+  // Arrays: the key is level 1, so 63 brackets reach 64 and 64 brackets do not fit.
+  m = expect_error(
+      "x = " + repeated("[", 63, "") + repeated("]", 63, "") + "\n" + std::string(valid), 1, "x");
+  EXPECT_NE(m.find("unknown key"), std::string::npos) << m;
+  m = expect_error(
+      "x = " + repeated("[", 64, "") + repeated("]", 64, "") + "\n" + std::string(valid), 1, "");
+  EXPECT_NE(m.find("scene.toml:1:68: nesting deeper than 64"), std::string::npos) << m;
+  // Nested 100,000 deep, arrays and inline tables stop at level 65 too.
+  expect_error("x = " + repeated("[", 100000, "") + "\n", 1, "");
+  expect_error("x = " + repeated("{b=", 100000, "") + "1" + repeated("}", 100000, "") + "\n", 1,
+               "");
+}
+
+TEST(SceneLimits, DotsAndBracketsInStringsAndCommentsDoNotCount) {
+  // 200 brackets and dots in a basic string and in a comment, and a quoted key of 100 dots: one
+  // level each, so the scene reaches the key checks.
+  std::string t =
+      replace(valid, "name = \"t\"",
+              "name = \"t\"\ndescription = \"" + repeated("[a.b{\\\"", 200, "") + "\"  # " +
+                  repeated("[.{", 200, "") + "\n\"" + repeated("q", 100, ".") + "\" = 1");
+  std::string m = expect_error(t, line_of(t, "\"q.q"), repeated("q", 100, "."));
+  EXPECT_NE(m.find("unknown key"), std::string::npos) << m;
+  // Multi-line strings of both kinds, with quotes and escapes inside, spanning lines.
+  t = replace(valid, "name = \"t\"",
+              "name = \"t\"\ndescription = \"\"\"" + repeated("[[{", 100, ".") +
+                  " \\\"\"\" \"\" \n" + repeated("[", 100, "") + "\"\"\"\nx = '''" +
+                  repeated("[.", 100, "") + " '' \n'''");
+  m = expect_error(t, line_of(t, "x = '''"), "x");
+  EXPECT_NE(m.find("unknown key"), std::string::npos) << m;
+}
+
+TEST(SceneLimits, ATextLargerThanOneMebibyteIsRefused) {
+  const std::string padding = "# " + std::string(scene_limits::max_file_bytes, 'x') + "\n";
+  const std::string m = expect_error(padding + std::string(valid), 0, "");
+  EXPECT_NE(m.find("a scene file has at most 1048576"), std::string::npos) << m;
+  // Exactly at the limit it is parsed.
+  std::string exact = std::string(valid) + "# ";
+  exact += std::string(scene_limits::max_file_bytes - exact.size() - 1, 'x') + "\n";
+  ASSERT_EQ(exact.size(), scene_limits::max_file_bytes);
+  EXPECT_NO_THROW(parse(exact));
+}
+
+// A scratch file or folder under the temp directory, removed at the end of the test.
+struct scratch_path {
+  std::filesystem::path path;
+  explicit scratch_path(std::string_view name)
+      : path(std::filesystem::temp_directory_path() /
+             fmt::format("quadmc_parse_test_{}_{}", ::getpid(), name)) {
+    std::filesystem::remove_all(path);
+  }
+  scratch_path(const scratch_path&) = delete;
+  scratch_path& operator=(const scratch_path&) = delete;
+  ~scratch_path() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+std::string file_error(const std::filesystem::path& path) {
+  try {
+    parse_scene_file(path);
+  } catch (const scene_error& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind(path.string() + ":0:0: ", 0), 0u) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    return m;
+  }
+  ADD_FAILURE() << "no scene_error for " << path;
+  return {};
+}
+
+// /dev/zero was read with rdbuf() until memory ran out; a device, a folder or an oversized file
+// is refused before (or while) reading, never read past the limit.
+TEST(SceneLimits, SceneFilesMustBeRegularAndAtMostOneMebibyte) {
+  std::string m = file_error("/dev/zero");
+  EXPECT_NE(m.find("not a regular file (a character device)"), std::string::npos) << m;
+  m = file_error(std::filesystem::temp_directory_path());
+  EXPECT_NE(m.find("is a directory"), std::string::npos) << m;
+
+  const scratch_path big("big.toml");
+  {
+    std::ofstream out(big.path, std::ios::binary);
+    out << valid << "# " << std::string(scene_limits::max_file_bytes, 'x') << "\n";
+  }
+  m = file_error(big.path);
+  EXPECT_NE(m.find("larger than 1048576 bytes"), std::string::npos) << m;
+
+  const scratch_path small("small.toml");
+  {
+    std::ofstream out(small.path, std::ios::binary);
+    out << valid;
+  }
+  EXPECT_EQ(parse_scene_file(small.path).name, "t");
+}
+
+// A pipe (`quadmc run <(generate-scene)`) is read like a file, with the same bound.
+TEST(SceneLimits, APipeIsReadUpToTheLimit) {
+  const scratch_path fifo("scene.fifo");
+  ASSERT_EQ(::mkfifo(fifo.path.c_str(), 0600), 0) << std::strerror(errno);
+  std::thread writer([&] {
+    std::ofstream out(fifo.path, std::ios::binary);
+    out << valid;
+  });
+  const scene sc = parse_scene_file(fifo.path);
+  writer.join();
+  EXPECT_EQ(sc.name, "t");
+}
+
+// factor = 1.0000000001 made the ladder loop run ~10^11 steps (minutes) before it had 256 values;
+// the steps ⌈ln(to/from)/ln(factor)⌉ are now bounded by 4096 before the loop.
+TEST(SceneLimits, GeometricLaddersTakeAtMost4096Steps) {
+  std::string t =
+      replace(valid, "N = [16, 64]", "N = { from = 1, to = 1e6, factor = 1.0000000001 }");
+  const std::string m = expect_error(t, line_of(t, "N = "), "budget.N.factor");
+  EXPECT_NE(m.find("needs 1.38e+11 steps from 1 to 1000000; at most 4096"), std::string::npos) << m;
+  EXPECT_NE(m.find("a factor ≥ 1.00338"), std::string::npos) << m;
+  // From 1 to 2: 2^(1/4095.5) takes ⌈4095.5⌉ = 4096 steps and gives {1, 2}; 2^(1/4096.5) needs
+  // one step more.
+  const auto ladder = [&](double factor) {
+    return replace(valid, "N = [16, 64]",
+                   fmt::format("N = {{ from = 1, to = 2, factor = {:.17g} }}", factor));
+  };
+  EXPECT_EQ(parse(ladder(std::pow(2.0, 1.0 / 4095.5))).budget.N,
+            (std::vector<std::uint64_t>{1, 2}));
+  t = ladder(std::pow(2.0, 1.0 / 4096.5));
+  expect_error(t, line_of(t, "N = "), "budget.N.factor");
+}
+
+// The plots are drawn from convergence.csv: plots without the CSV failed only after the run.
+TEST(SceneLimits, PlotsNeedTheCsv) {
+  std::string t = std::string(valid) + "[output]\ncsv = false\nplots = true\n";
+  std::string m = expect_error(t, line_of(t, "plots"), "output.plots");
+  EXPECT_NE(m.find("plots need the CSV"), std::string::npos) << m;
+  // plots defaults to true: the error is then at the [output] table.
+  t = std::string(valid) + "[output]\ncsv = false\n";
+  expect_error(t, line_of(t, "[output]"), "output.plots");
+  EXPECT_NO_THROW(parse(std::string(valid) + "[output]\ncsv = false\nplots = false\n"));
+}
+
+// The warps' own bounds (sampling/inversion_warps.hpp), at parse time: a rate of 1e308 used to
+// reach the run, where the truncated exponential refused it after the plan was printed.
+TEST(SceneLimits, WarpParametersWithinTheWarpsBounds) {
+  const auto warp = [](std::string_view table) {
+    return replace(valid, "name = \"plain_mc\"",
+                   fmt::format("name = \"importance\"\nwarp = {}", table));
+  };
+  for (const char* ok :
+       {"{ name = \"exponential\", rate = 700.0 }", "{ name = \"exponential\", rate = -700.0 }",
+        "{ name = \"power\", exponent = 1e5 }", "{ name = \"power\", exponent = -0.999 }"}) {
+    EXPECT_NO_THROW(parse(warp(ok))) << ok;
+  }
+  for (const char* bad : {"{ name = \"exponential\", rate = 1e308 }",
+                          "{ name = \"exponential\", rate = 700.0000000001 }",
+                          "{ name = \"exponential\", rate = -700.0000000001 }",
+                          "{ name = \"exponential\", rate = 0.0 }"}) {
+    const std::string t = warp(bad);
+    const std::string m = expect_error(t, line_of(t, "warp"), "method[2].warp.rate");
+    EXPECT_NE(m.find("|l| <= 700"), std::string::npos) << m;
+  }
+  for (const char* bad : {"{ name = \"power\", exponent = 1.00000000001e5 }",
+                          "{ name = \"power\", exponent = -1 }"}) {
+    const std::string t = warp(bad);
+    const std::string m = expect_error(t, line_of(t, "warp"), "method[2].warp.exponent");
+    EXPECT_NE(m.find("-1 < k <= 100000"), std::string::npos) << m;
+  }
+}
+
+// Every key of an [[integrand]] table is copied into each of up to 1024 `dimensions` expansions,
+// so tables, names and parameter arrays are bounded.
+TEST(SceneLimits, IntegrandTablesAreBounded) {
+  std::string keys;
+  for (int k = 0; k < 31; ++k) keys += fmt::format("p{} = 1\n", k);  // + family, dimension
+  std::string t = replace(valid, "dimension = 2", "dimension = 2\n" + keys);
+  const std::string m = expect_error(t, line_of(t, "[[integrand]]"), "integrand[1]");
+  EXPECT_NE(m.find("33 keys in one [[integrand]] table; at most 32"), std::string::npos) << m;
+  // 32 keys parse; the catalogue refuses the unknown parameters later (plan_test.cpp).
+  EXPECT_NO_THROW(parse(replace(valid, "dimension = 2", "dimension = 2\n" + keys.substr(7))));
+  t = replace(valid, "dimension = 2", "dimension = 2\nname = \"" + std::string(129, 'n') + "\"");
+  expect_error(t, line_of(t, "name = \"nn"), "integrand[1].name");
+  EXPECT_NO_THROW(parse(
+      replace(valid, "dimension = 2", "dimension = 2\nname = \"" + std::string(128, 'n') + "\"")));
+  // The scene's own name is one folder name: the command checks its length, not the parser.
+  EXPECT_EQ(
+      parse(replace(valid, "name = \"t\"", "name = \"" + std::string(200, 's') + "\"")).name.size(),
+      200u);
+  t = replace(valid, "dimension = 2", "dimension = 2\na = [" + repeated("1.0", 1025, ", ") + "]");
+  expect_error(t, line_of(t, "a = "), "integrand[1].a");
+  t = replace(valid, "family = \"genz_gaussian\"", "family = \"" + std::string(129, 'f') + "\"");
+  expect_error(t, line_of(t, "family"), "integrand[1].family");
+}
+
+TEST(SceneLimits, AtMost4096IntegrandsAnd1024Methods) {
+  std::string all_s = "dimensions = [";
+  for (int s = 1; s <= 1024; ++s) all_s += fmt::format("{}{}", s == 1 ? "" : ", ", s);
+  all_s += "]";
+  std::string tables;
+  for (int k = 1; k <= 4; ++k) {
+    tables +=
+        fmt::format("[[integrand]]\nfamily = \"genz_gaussian\"\nname = \"g{}\"\n{}\n", k, all_s);
+  }
+  const std::string rest = "[[method]]\nname = \"plain_mc\"\n[budget]\nN = [16]\n";
+  EXPECT_EQ(parse(tables + rest).integrands.size(), 4096u);
+  const std::string five = tables + "[[integrand]]\nfamily = \"exp\"\n" + rest;
+  std::string m = expect_error(five, line_of(five, "family = \"exp\"") - 1, "integrand[5]");
+  EXPECT_NE(m.find("4097 integrands"), std::string::npos) << m;
+
+  std::string methods;
+  for (int k = 1; k <= 1025; ++k) {
+    methods += fmt::format("[[method]]\nname = \"plain_mc\"\nlabel = \"m{}\"\n", k);
+  }
+  const std::string t = "[[integrand]]\nfamily = \"exp\"\n" + methods + "[budget]\nN = [16]\n";
+  m = expect_error(t, line_of(t, "\"m1025\"") - 2, "method[1025]");
+  EXPECT_NE(m.find("1025 [[method]] tables; at most 1024"), std::string::npos) << m;
+}
+
+TEST(SceneLimits, PanelListsAndIntegrandListsAreBounded) {
+  std::string panels;
+  for (int n = 1; n <= 257; ++n) panels += fmt::format("{}{}", n == 1 ? "" : ", ", 2 * n);
+  std::string t =
+      replace(valid, "name = \"simpson\"", "name = \"simpson\"\npanels = [" + panels + "]");
+  expect_error(t, line_of(t, "panels"), "method[1].panels");
+  t = replace(valid, "repetitions = 8",
+              "integrands = [" + repeated("\"genz_gaussian_s2\"", 4097, ", ") + "]");
+  expect_error(t, line_of(t, "integrands"), "method[2].integrands");
 }
 
 }  // namespace

@@ -20,6 +20,14 @@ plan plan_of(std::string_view text) {
   return make_plan(parse_scene(text, "scene.toml"));
 }
 
+std::string replace(std::string_view text, std::string_view from, std::string_view to) {
+  std::string s(text);
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
 std::vector<plan_cell> cells_of(const plan& p, std::string_view label) {
   std::vector<plan_cell> out;
   for (const auto& c : p.cells) {
@@ -380,6 +388,212 @@ N = [16]
   t = ok;
   t.replace(t.find("a = [1.0, 2.0]"), 14, "a = [1.0, 2.0, 3.0]");
   expect_plan_error(t, line_of(t, "a = "), "integrand[1].a", "a");
+}
+
+// ---------------------------------------------------------------------------------------------
+// What a run would refuse is refused by make_plan, before any work, at the key concerned.
+
+// The issue's three examples of an exact value that is inf or NaN: `plan` listed them (exact =
+// inf, exact = -nan, 3.14e+300 with f = inf at x = u) and `run` failed after the plan. The
+// families refuse the parameter now, and make_plan reports it at its key.
+TEST(PlanChecks, ReferencesBeyondDoubleAreRefusedAtTheParameter) {
+  const std::string exp_scene = R"([[integrand]]
+family = "exp"
+lower = 0.0
+upper = 1000.0
+[[method]]
+name = "simpson"
+[budget]
+N = [8, 16]
+)";
+  expect_plan_error(exp_scene, line_of(exp_scene, "upper"), "integrand[1].upper", "upper ≤ 709.78");
+  std::string t =
+      replace(replace(exp_scene, "\"exp\"", "\"poly\""), "lower = 0.0", "lower = -1e100");
+  t = replace(t, "upper = 1000.0", "upper = 1e100");
+  expect_plan_error(t, line_of(t, "lower"), "integrand[1].lower", "|lower| ≤ 1e51");
+  const std::string peak = R"([[integrand]]
+family = "genz_product_peak"
+dimension = 1
+a = [1e300]
+u = [0.5]
+[[method]]
+name = "plain_mc"
+[budget]
+N = [8, 16]
+)";
+  expect_plan_error(peak, line_of(peak, "a = "), "integrand[1].a", "aᵢ² must stay finite");
+}
+
+// The generic check behind the families' own: an exact value or a largest value max|f| that is
+// not finite. A radiance near DBL_MAX makes the hemisphere integrand's 2π·L overflow.
+TEST(PlanChecks, NonFiniteExactOrLargestValueIsAnError) {
+  const std::string t = R"([[integrand]]
+family = "irradiance_hemisphere"
+radiance = 1.7e308
+[[method]]
+name = "irradiance_hemisphere_uniform"
+[budget]
+N = [8, 16]
+)";
+  expect_plan_error(t, line_of(t, "[[integrand]]"), "integrand[1]", "overflow double");
+}
+
+// A run of Monte Carlo on eˣ over [0, 700] failed with "invalid error[0] = -nan": values up to
+// 700·e^700 ≈ 7e306 made the sums of squared deviations inf. 8·M²·N ≤ DBL_MAX is the bound.
+TEST(PlanChecks, ValuesTooLargeForTheRunsSumsAreAnError) {
+  const std::string t = R"([[integrand]]
+family = "exp"
+lower = 0.0
+upper = 700.0
+[[method]]
+name = "plain_mc"
+[budget]
+N = [8, 16]
+)";
+  expect_plan_error(
+      t, line_of(t, "[[integrand]]"), "integrand[1]",
+      "values up to 7.1e+306 (max(|I|, max|f|·volume)) are too large for plain_mc at N = 8");
+  // A rule only needs its error est − I finite: Simpson on [0, 700] plans (and runs,
+  // run_test.cpp).
+  EXPECT_NO_THROW(plan_of(replace(t, "plain_mc", "simpson")));
+  // At the boundary: M = e^350·350 ≈ 3.5e154 is above √(DBL_MAX/64) ≈ 1.7e153 for N = 8, and
+  // e^340·340 ≈ 7.2e149 is below √(DBL_MAX/128) ≈ 1.2e153 for N = 16.
+  expect_plan_error(replace(t, "upper = 700.0", "upper = 350.0"), 1, "integrand[1]",
+                    "too large for plain_mc at N = 8");
+  EXPECT_NO_THROW(plan_of(replace(t, "upper = 700.0", "upper = 340.0")));
+}
+
+// Point sets need N·s ≤ 2^62 (sampling/point_set.hpp): the run refused N = 2^53 at s = 1024
+// after printing the plan. It is an error at budget.N, unless the budget skips the cell.
+TEST(PlanChecks, RandomCellsNeedNTimesSWithinTheStreamsCounters) {
+  const std::string t = R"([[integrand]]
+family = "genz_gaussian"
+dimension = 1024
+[[method]]
+name = "plain_mc"
+repetitions = 1
+[budget]
+N = [4503599627370496, 4503599627370497]
+)";
+  // 2^52·1024 = 2^62 is the largest allowed; one more point is too many.
+  expect_plan_error(t, line_of(t, "N = "), "budget.N",
+                    "N = 4503599627370497: plain_mc × genz_gaussian_s1024 would draw "
+                    "4503599627370497 points in s = 1024");
+  const plan p = plan_of(replace(t, "[4503599627370496, 4503599627370497]", "[4503599627370496]"));
+  EXPECT_EQ(p.cells.size(), 1u);
+  // Skipped by the budget, the cell never runs and is no error.
+  EXPECT_NO_THROW(
+      plan_of(replace(t, "4503599627370497]", "4503599627370497]\nmax_evaluations = 1e8")));
+}
+
+// ensemble = 1000000 at dimension = 1024 built instances until memory ran out. The plan's size is
+// estimated from the scene and bounded before anything is built.
+TEST(PlanChecks, InstancesAndCoordinatesAreBounded) {
+  const std::string t = R"([[integrand]]
+family = "genz_gaussian"
+dimension = 1024
+ensemble = 1000000
+[[method]]
+name = "plain_mc"
+[budget]
+N = [64]
+)";
+  expect_plan_error(t, line_of(t, "ensemble"), "integrand[1].ensemble",
+                    "1000000 integrand instances; at most 65536");
+  // 1025 × 1024 coordinates is one instance too many; 1024 × 1024 = 2^20 is the limit.
+  expect_plan_error(replace(t, "ensemble = 1000000", "ensemble = 1025"), line_of(t, "ensemble"),
+                    "integrand[1].ensemble",
+                    "1049600 instance coordinates (Σ ensemble × s); at most 1048576");
+  EXPECT_EQ(plan_of(replace(t, "ensemble = 1000000", "ensemble = 1024")).instances.size(), 1024u);
+}
+
+TEST(PlanChecks, CellsAndRepetitionsAreBounded) {
+  std::string ladder = "N = [";
+  for (int k = 1; k <= 256; ++k) ladder += fmt::format("{}{}", k == 1 ? "" : ", ", k);
+  ladder += "]";
+  // 4097 instances × 256 N values = 1048832 cells, 256 more than the limit.
+  const std::string many = R"([[integrand]]
+family = "genz_gaussian"
+dimension = 1
+ensemble = 4097
+[[method]]
+name = "plain_mc"
+repetitions = 1
+[budget]
+)" + ladder + "\n";
+  expect_plan_error(many, line_of(many, "ensemble"), "integrand[1].ensemble",
+                    "bring the scene to 1048832 cells; at most 1048576");
+  // Without an ensemble the error names budget.N: 5 integrands × 820 methods × 256 N values.
+  std::string wide;
+  for (int k = 1; k <= 5; ++k)
+    wide += fmt::format("[[integrand]]\nfamily = \"exp\"\nname = \"e{}\"\n", k);
+  for (int k = 1; k <= 820; ++k) {
+    wide += fmt::format("[[method]]\nname = \"plain_mc\"\nlabel = \"m{}\"\nrepetitions = 1\n", k);
+  }
+  wide += "[budget]\n" + ladder + "\n";
+  expect_plan_error(wide, line_of(wide, "N = "), "budget.N",
+                    "e5: 209920 (method, N) pairs × 1 instances bring the scene to 1049600 cells");
+  // The runner keeps one result per repetition: 2^25 in all.
+  const std::string reps = R"([[integrand]]
+family = "exp"
+[[method]]
+name = "plain_mc"
+repetitions = 1000000000
+[budget]
+N = [1]
+)";
+  expect_plan_error(
+      reps, line_of(reps, "repetitions"), "method[1].repetitions",
+      "1000000000 repetitions; the runner keeps a result per repetition, at most 33554432");
+}
+
+// genz_corner_peak sums 2^s vertices in 50-digit arithmetic (~1.4 µs each) per drawn instance:
+// an ensemble of 17 at s = 20 would be 25 s of planning. Families that draw nothing are built
+// once, so their ensembles cost one reference.
+TEST(PlanChecks, ReferenceTermsAreBoundedAndSharedInstancesAreBuiltOnce) {
+  const std::string t = R"([[integrand]]
+family = "genz_corner_peak"
+dimension = 20
+ensemble = 17
+[[method]]
+name = "plain_mc"
+[budget]
+N = [64]
+)";
+  expect_plan_error(t, line_of(t, "ensemble"), "integrand[1].ensemble",
+                    "17 instance(s) of genz_corner_peak at s = 20 need 17825792 terms");
+  // half_space draws nothing: 300 instances at s = 16 are one sum of 2^16 terms, not 300.
+  const plan p = plan_of(R"([[integrand]]
+family = "half_space"
+dimension = 16
+ensemble = 300
+[[method]]
+name = "plain_mc"
+[budget]
+N = [64]
+)");
+  ASSERT_EQ(p.instances.size(), 300u);
+  EXPECT_EQ(p.instances[299].function.info().exact, p.instances[0].function.info().exact);
+  EXPECT_NE(p.instances[299].seed, p.instances[0].seed);
+  EXPECT_EQ(p.cells.size(), 300u);
+}
+
+// Ī, the series' reference, is computed once by the plan (run.hpp uses it).
+TEST(PlanChecks, MeanReferenceOfAnEnsemble) {
+  const plan p = plan_of(R"(seed = 5
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+ensemble = 3
+[[method]]
+name = "plain_mc"
+[budget]
+N = [64]
+)");
+  ASSERT_EQ(p.mean_reference.size(), 1u);
+  double sum = 0.0;
+  for (const auto& inst : p.instances) sum += inst.function.info().exact;
+  EXPECT_EQ(p.mean_reference[0], sum / 3.0);
 }
 
 }  // namespace

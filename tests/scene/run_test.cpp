@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -220,6 +222,121 @@ N = [16, 64, 256]
     ++checked;
   }
   EXPECT_EQ(checked, 4u * 3u) << "4 instances × 3 N";
+}
+
+}  // namespace
+}  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// eˣ on [0, 1], except NaN at one point: what a family with a hole in its formula would give.
+struct exp_with_a_hole {
+  double hole;
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      y[i] = x[i] == hole ? std::numeric_limits<double>::quiet_NaN() : std::exp(x[i]);
+    }
+  }
+  integrand_info info() const {
+    return integrand_info{.name = "exp_with_a_hole",
+                          .formula = "eˣ, NaN at one point",
+                          .domain = box::unit(1),
+                          .exact = std::exp(1.0) - 1.0,
+                          .reference = "closed form"};
+  }
+};
+
+// Finite values whose sum overflows: 1e308 everywhere, exact 1e308.
+struct huge_constant {
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double>, std::span<double> y) const noexcept {
+    for (double& v : y) v = 1e308;
+  }
+  integrand_info info() const {
+    return integrand_info{.name = "huge_constant",
+                          .formula = "1e308",
+                          .domain = box::unit(1),
+                          .exact = 1e308,
+                          .reference = "closed form"};
+  }
+};
+
+std::string run_error_of(const plan& p) {
+  try {
+    run_plan(p);
+  } catch (const run_error& e) {
+    return e.what();
+  }
+  return "no run_error";
+}
+
+// "invalid error[0] = -nan" named neither the cell nor the key. A value that is not finite now
+// stops the run with the cell (method, integrand, N, repetition) before the cause and its point.
+TEST(RunPlan, ANonFiniteValueNamesTheCellAndThePoint) {
+  plan p = make_plan(parse_scene(R"([[integrand]]
+family = "exp"
+[[method]]
+name = "trapezoid"
+[budget]
+N = [3, 5]
+)",
+                                 "hole.toml"));
+  // Trapezoid with n = 4 panels on [0, 1] evaluates x = 0.75.
+  p.instances[0].function = any_integrand(exp_with_a_hole{0.75});
+  const std::string m = run_error_of(p);
+  EXPECT_EQ(m.rfind("trapezoid × exp, N = 5 (5 evaluations), repetition 1 of 1: ", 0), 0u) << m;
+  EXPECT_NE(m.find("exp_with_a_hole returned nan at x = (0.75)"), std::string::npos) << m;
+}
+
+TEST(RunPlan, AnEstimateThatOverflowsNamesTheCell) {
+  plan p = make_plan(parse_scene(R"([[integrand]]
+family = "exp"
+[[method]]
+name = "plain_mc"
+repetitions = 2
+[budget]
+N = [4]
+)",
+                                 "huge.toml"));
+  p.instances[0].function = any_integrand(huge_constant{});
+  // 4·1e308 overflows in the batch sum (Neumaier's correction then gives inf − inf = NaN).
+  const std::string m = run_error_of(p);
+  EXPECT_EQ(
+      m.rfind("plain_mc × exp, N = 4 (4 evaluations), repetition 1 of 2: the estimate is ", 0), 0u)
+      << m;
+  EXPECT_NE(m.find("the sum of its values (f·volume, or f/p for importance sampling) overflowed"),
+            std::string::npos)
+      << m;
+}
+
+// Simpson on eˣ over [0, 700]: I ≈ 1.0e304 and the first errors ≈ 1e302 square to inf; the run
+// ended with "invalid error[0] = -nan". The cell statistics scale the errors, so the series
+// analyses with finite errors and the slope of Simpson's h⁴.
+TEST(RunPlan, HugeIntegralsAnalyseWithFiniteErrors) {
+  const plan p = make_plan(parse_scene(R"([[integrand]]
+family = "exp"
+lower = 0.0
+upper = 700.0
+[[method]]
+name = "simpson"
+panels = [2048, 4096, 8192, 16384]
+[budget]
+N = [8]
+)",
+                                       "big.toml"));
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 1u);
+  const convergence_table table = analyse_convergence(out.series[0]);
+  ASSERT_EQ(table.rows.size(), 4u);
+  for (const auto& row : table.rows) {
+    EXPECT_TRUE(std::isfinite(row.stats.rmse) && row.stats.rmse > 1e200) << row.stats.rmse;
+  }
+  // h = 700/n: Simpson's error (b − a)h⁴f⁽⁴⁾/180 falls 16× per doubling while h ≫ 1 is far from
+  // asymptotic only in the constant; the fitted slope of |error| against N = n + 1 is −4 ± 0.1.
+  ASSERT_TRUE(table.fit.ok());
+  EXPECT_NEAR(table.fit.slope, -4.0, 0.1);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <boost/math/distributions/normal.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -31,6 +32,25 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
             where + ".std_error", rep.std_error, "NaN (none) or a finite value >= 0");
   }
 
+  // Large errors are divided by a power of two c before they are squared: e² overflows above
+  // 1.3e154 and the spread of e² (a sum of e⁴) above 1.2e77, while (e/c)² < 4. Scaling by a power
+  // of two is exact and commutes with every rounding, so the statistics are those of the unscaled
+  // formulas; errors up to 2^200 ≈ 1.6e60 (e⁴ ≤ 2^800) are left as they are, bit for bit.
+  double largest_error = 0.0;
+  for (std::size_t r = 0; r < repetitions.size(); ++r) {
+    const double error = repetitions[r].value - reference;
+    require(std::isfinite(error), fmt::format("repetitions[{}].value − reference", r), error,
+            "a finite error (estimate and reference are too far apart for double)");
+    largest_error = std::max(largest_error, std::abs(error));
+  }
+  double scale = 1.0;
+  if (largest_error > 0x1p200) {
+    int exponent = 0;
+    (void)std::frexp(largest_error, &exponent);  // 2^(exponent − 1) ≤ largest_error < 2^exponent
+    scale = std::ldexp(1.0, exponent - 1);       // ≤ 2^1023: finite
+  }
+  const double inverse_scale = 1.0 / scale;  // exact: a power of two ≥ 2^-1023
+
   const double count = static_cast<double>(repetitions.size());
   const double z = normal_quantile_975();
   neumaier_sum value_sum, squared_error_sum, abs_error_sum, seconds_sum;
@@ -40,11 +60,12 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   bool every_rep_has_std_error = true;
   for (const repetition_result& rep : repetitions) {
     const double error = rep.value - reference;
+    const double scaled = error * inverse_scale;
     value_sum += rep.value;
-    squared_error_sum += error * error;
-    abs_error_sum += std::abs(error);
+    squared_error_sum += scaled * scaled;
+    abs_error_sum += std::abs(scaled);
     seconds_sum += rep.seconds;
-    squared_error_spread.add(error * error);
+    squared_error_spread.add(scaled * scaled);
     evaluations += rep.evaluations;
     if (std::isnan(rep.std_error)) {
       every_rep_has_std_error = false;
@@ -59,16 +80,17 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   out.evaluations =
       static_cast<std::uint64_t>(std::llround(static_cast<double>(evaluations) / count));
   out.estimate_mean = value_sum.value() / count;
-  const double mse = squared_error_sum.value() / count;
-  out.rmse = std::sqrt(mse);
-  out.mean_abs_error = abs_error_sum.value() / count;
+  const double scaled_mse = squared_error_sum.value() / count;  // MSE / c²
+  const double scaled_rmse = std::sqrt(scaled_mse);             // RMSE / c: c² is a power of 4
+  out.rmse = scaled_rmse * scale;
+  out.mean_abs_error = abs_error_sum.value() / count * scale;
   if (repetitions.size() >= 2) {
-    if (out.rmse == 0.0) {
+    if (scaled_rmse == 0.0) {
       out.std_error_of_rmse = 0.0;  // every error is exactly 0: no spread at all
     } else {
-      // Welford's variance has divisor R − 1; se(MSE) = sd(e²)/√R.
-      const double se_mse = std::sqrt(squared_error_spread.variance() / count);
-      out.std_error_of_rmse = se_mse / (2.0 * out.rmse);
+      // Welford's variance has divisor R − 1; se(MSE) = sd(e²)/√R, here both divided by c².
+      const double scaled_se_mse = std::sqrt(squared_error_spread.variance() / count);
+      out.std_error_of_rmse = scaled_se_mse / (2.0 * scaled_rmse) * scale;
     }
   }
   if (every_rep_has_std_error) out.coverage_95 = static_cast<double>(covered) / count;

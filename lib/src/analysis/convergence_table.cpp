@@ -57,7 +57,18 @@ convergence_table analyse_convergence(const convergence_series& series,
     largest_error = std::max(largest_error, row.stats.rmse);
   }
   const double scale = series.reference != 0.0 ? std::abs(series.reference) : largest_error;
-  table.floor = detect_rounding_floor(evaluations, errors, scale, options.floor);
+  // The floor, fit and work-precision steps name their inputs by position ("error[0]"); the
+  // series they came from goes in front, so a failure says which integrand and method.
+  const auto in_series = [&](auto&& step) {
+    try {
+      return step();
+    } catch (const invalid_argument& e) {
+      throw invalid_argument(
+          fmt::format("{} / s = {} / {}: {}", series.integrand, series.s, series.method, e.what()));
+    }
+  };
+  table.floor =
+      in_series([&] { return detect_rounding_floor(evaluations, errors, scale, options.floor); });
 
   std::vector<double> fit_n, fit_error;
   for (std::size_t k = 0; k < table.rows.size(); ++k) {
@@ -67,9 +78,10 @@ convergence_table analyse_convergence(const convergence_series& series,
       fit_error.push_back(errors[k]);
     }
   }
-  table.fit = fit_power_law(fit_n, fit_error, options.confidence);
+  table.fit = in_series([&] { return fit_power_law(fit_n, fit_error, options.confidence); });
   table.verdict = judge_slope(table.fit, table.theory.slope, options.verdict_tolerance);
-  table.work_precision = work_precision(seconds, errors, options.error_targets);
+  table.work_precision =
+      in_series([&] { return work_precision(seconds, errors, options.error_targets); });
   return table;
 }
 

@@ -33,8 +33,9 @@ constexpr std::array<std::string_view, 1> a_key{"a"};
 constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
 
 constexpr std::string_view genz_doc =
-    "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b); "
-    "u: shift in [0,1], length s (default: drawn from seed)";
+    "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b), "
+    "not subnormal, and such that f's values and ∫f are normal doubles; u: shift in [0,1], "
+    "length s (default: drawn from seed)";
 
 const std::array<catalogue_entry, 26> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
@@ -53,11 +54,11 @@ const std::array<catalogue_entry, 26> entries = {{
      "a, u as the other Genz families; cut: 1-based indices of the cut coordinates, distinct, in "
      "1..s (default [1, 2], [1] when s = 1; [1, …, s] cuts every coordinate)"},
     {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1); dimension 1"},
+     "lower, upper: the interval (default 0, 1), |lower|, |upper| ≤ 1e51; dimension 1"},
     {"exp", "eˣ on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1); dimension 1"},
+     "lower, upper: the interval (default 0, 1), upper ≤ 709.78; dimension 1"},
     {"sin", "sin x on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, π); dimension 1"},
+     "lower, upper: the interval (default 0, π), of finite width; dimension 1"},
     {"inverse_quadratic", "1/(1 + x²) on [0, 1]", "analytic", no_keys, no_keys,
      "no parameters; dimension 1"},
     {"sqrt", "√x on [0, 1]", "singular", no_keys, no_keys, "no parameters; dimension 1"},
@@ -70,7 +71,8 @@ const std::array<catalogue_entry, 26> entries = {{
      "center: length s (default all 0.5); r: radius > 0 (default 0.45); the ball must lie "
      "inside the cube"},
     {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
-     "w: weights > 0, length s (default all 1); t: in (0, Σw) (default 0.6·Σw); s ≤ 20"},
+     "w: weights > 0 of any magnitude, within 2^1021 of each other, length s (default all 1); t: "
+     "in (0, Σw) (default 0.6·Σw); s ≤ 20"},
     {"sobol_g", "Π (|4xᵢ − 2| + aᵢ)/(1 + aᵢ) on [0,1]^s", "C0", a_key, no_keys,
      "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)"},
     {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,
@@ -85,7 +87,8 @@ const std::array<catalogue_entry, 26> entries = {{
     // Floating-point stress members (stability_1d.hpp).
     {"shifted_exp", "e^((x − lower)/w)/w on [lower, upper], w = upper − lower; ∫ = e − 1",
      "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1), any finite box with a finite width; dimension 1"},
+     "lower, upper: the interval (default 0, 1), any finite box with a finite width ≥ 2.2e-308; "
+     "dimension 1"},
     {"cosc_naive", "(1 − cos x)/x² on [0, 1], computed as written (cancellation near 0)",
      "analytic", no_keys, no_keys, "no parameters; dimension 1"},
     {"cosc_stable", "2·sin²(x/2)/x² on [0, 1], the same function without cancellation", "analytic",
@@ -95,7 +98,7 @@ const std::array<catalogue_entry, 26> entries = {{
     {"log", "log x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
      "no parameters; dimension 1"},
     {"exp_float", "eˣ on [lower, upper] evaluated in float", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1); dimension 1"},
+     "lower, upper: the interval (default 0, 1), upper ≤ 88.72; dimension 1"},
     {"inverse_quadratic_float", "1/(1 + x²) on [0, 1] evaluated in float", "analytic", no_keys,
      no_keys, "no parameters; dimension 1"},
 }};
@@ -251,8 +254,13 @@ any_integrand make_integrand(std::string_view name, const integrand_params& p) {
   if (name == "half_space") {
     const std::size_t s = dimension_or(p, 1);
     std::vector<double> w = vector_of_length(p, "w", s, std::vector<double>(s, 1.0));
-    const double total = std::accumulate(w.begin(), w.end(), 0.0);
-    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", 0.6 * total)));
+    // 0.6·Σw; when Σw overflows (weights near 1e308), as Σ 0.6·wᵢ, which may still be finite.
+    double t = 0.6 * std::accumulate(w.begin(), w.end(), 0.0);
+    if (!std::isfinite(t)) {
+      t = 0.0;
+      for (double wi : w) t += 0.6 * wi;
+    }
+    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", t)));
   }
   if (name == "sobol_g") {
     const std::size_t s = dimension_or(p, 1);

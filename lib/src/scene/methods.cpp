@@ -76,8 +76,8 @@ constexpr std::array<point_set_info, 5> point_sets{{
 }};
 
 constexpr std::array<warp_info, 2> warps{{
-    {"power", "p(x) = (k+1) x^k on [0,1], k > -1", "exponent", 1.0},
-    {"exponential", "p(x) = l e^(l x) / (e^l - 1) on [0,1], l != 0", "rate", 1.0},
+    {"power", "p(x) = (k+1) x^k on [0,1], -1 < k <= 1e5", "exponent", 1.0},
+    {"exponential", "p(x) = l e^(l x) / (e^l - 1) on [0,1], 0 < |l| <= 700", "rate", 1.0},
 }};
 
 template <class Table>

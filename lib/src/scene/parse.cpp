@@ -6,6 +6,7 @@
 #include "quadmc/scene/parse.hpp"
 
 #include "quadmc/rules/gauss_legendre_rule.hpp"
+#include "quadmc/sampling/inversion_warps.hpp"
 #include "quadmc/scene/methods.hpp"
 
 #include <fmt/format.h>
@@ -17,17 +18,18 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
+#include <map>
+#include <set>
 
 namespace quadmc {
 
 namespace {
 
 // Counts above 2^53 are not exactly representable as doubles, which the analysis layer uses for
-// N; and point sets need N·s < 2^62 (sampling/point_set.hpp).
+// N; point sets also need N·s < 2^62 (sampling/point_set.hpp), which make_plan checks per cell.
 constexpr std::uint64_t max_count = std::uint64_t{1} << 53;
-constexpr std::size_t max_dimension = 1024;
-constexpr std::size_t max_ladder = 256;
+constexpr std::size_t max_dimension = scene_limits::max_dimension;
+constexpr std::size_t max_ladder = scene_limits::max_ladder;
 
 std::string describe(const toml::node& n) {
   if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
@@ -168,6 +170,212 @@ std::string without_stand_ins(std::string_view text) {
   return out;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Nesting bound, checked before toml++ sees the text.
+//
+// toml++ 3.3 bounds arrays and inline tables (TOML_MAX_NESTED_VALUES = 256) but not dotted keys or
+// table headers: every part of `a.a.a… = 1` or `[a.a.a…]` is one more nested table, and its
+// recursion overflows the stack somewhere between 20,000 and 40,000 parts (an 80 KB file). So a
+// lexical scan measures the depth first: each part of a dotted key or table header and each array
+// or inline table is one level, summed from the root to the innermost value, and a file deeper
+// than scene_limits::max_nesting is refused at the first level too many. A scene needs 4
+// ([budget] N = { from = … }). The scan knows TOML's four string forms and its comments, so dots,
+// brackets and braces inside them do not count; anything else it steps over without judging, since
+// toml++ reports the syntax errors. Its own recursion is bounded by the same limit.
+class nesting_scan {
+ public:
+  nesting_scan(std::string_view text, std::string_view file) : text_(text), file_(file) {}
+
+  void run() {
+    std::size_t header_depth = 0;
+    while (skip_blank(true)) {
+      if (peek() == '[') {  // [table] or [[array of tables]]
+        const bool array = peek(1) == '[';
+        advance();
+        if (array) advance();
+        header_depth = key(0);
+      } else {
+        const std::size_t depth = header_depth + key(header_depth);
+        skip_blank(false);
+        if (peek() == '=') {
+          advance();
+          value(depth);
+        }
+      }
+      skip_line();
+    }
+  }
+
+ private:
+  bool at_end() const noexcept { return i_ >= text_.size(); }
+  char peek(std::size_t ahead = 0) const noexcept {
+    return i_ + ahead < text_.size() ? text_[i_ + ahead] : '\0';
+  }
+  bool starts_with(std::string_view s) const noexcept { return text_.substr(i_, s.size()) == s; }
+  // Columns count code points, as toml++ and with_stand_ins do: UTF-8 continuation bytes do not
+  // advance the column.
+  void advance() noexcept {
+    const char c = text_[i_++];
+    if (c == '\n') {
+      ++line_;
+      column_ = 1;
+    } else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) {
+      ++column_;
+    }
+  }
+
+  // Called with the depth of the level that starts at the current position.
+  void check_depth(std::size_t depth) const {
+    if (depth <= scene_limits::max_nesting) return;
+    throw scene_error({std::string(file_), line_, column_}, "",
+                      fmt::format("nesting deeper than {} levels (each part of a dotted key or "
+                                  "table header and each array or inline table counts one; a "
+                                  "scene needs at most 4)",
+                                  scene_limits::max_nesting));
+  }
+
+  // Spaces, tabs and comments, and newlines when `newlines`; false at the end of the text.
+  bool skip_blank(bool newlines) noexcept {
+    while (!at_end()) {
+      const char c = peek();
+      if (c == ' ' || c == '\t' || c == '\r' || (newlines && c == '\n')) {
+        advance();
+      } else if (c == '#') {
+        while (!at_end() && peek() != '\n') advance();
+      } else {
+        break;
+      }
+    }
+    return !at_end();
+  }
+  // The rest of a top-level line (a comment, or text toml++ will reject) and its newline.
+  void skip_line() noexcept {
+    while (!at_end() && peek() != '\n') {
+      if (peek() == '"' || peek() == '\'') {
+        string();
+      } else if (peek() == '#') {
+        skip_blank(false);
+      } else {
+        advance();
+      }
+    }
+    if (!at_end()) advance();
+  }
+
+  // One string of any of TOML's four forms, from its opening quote. An unterminated one ends at
+  // the end of its line (single-line forms) or of the text (multi-line forms).
+  void string() noexcept {
+    const char quote = peek();
+    const bool basic = quote == '"';
+    const std::string_view triple = basic ? std::string_view("\"\"\"") : "'''";
+    if (starts_with(triple)) {
+      for (int k = 0; k < 3; ++k) advance();
+      while (!at_end() && !starts_with(triple)) {
+        if (basic && peek() == '\\') advance();  // an escape: the next character is taken as is
+        if (!at_end()) advance();
+      }
+      // The closing run may be up to five quotes long; the first two belong to the string.
+      for (int k = 0; k < 5 && !at_end() && peek() == quote; ++k) advance();
+      return;
+    }
+    advance();
+    while (!at_end() && peek() != '\n') {
+      const char c = peek();
+      advance();
+      if (c == quote) return;
+      if (basic && c == '\\' && !at_end() && peek() != '\n') advance();
+    }
+  }
+
+  // A possibly dotted key whose first part is at depth `base` + 1; returns its number of parts.
+  std::size_t key(std::size_t base) {
+    std::size_t parts = 0;
+    for (;;) {
+      skip_blank(false);
+      check_depth(base + parts + 1);
+      const std::size_t start = i_;
+      if (peek() == '"' || peek() == '\'') {
+        string();
+      } else {
+        while (!at_end() && (std::isalnum(static_cast<unsigned char>(peek())) != 0 ||
+                             peek() == '_' || peek() == '-')) {
+          advance();
+        }
+      }
+      if (i_ == start) return parts;  // not a key: toml++ will say what it is
+      ++parts;
+      skip_blank(false);
+      if (peek() != '.') return parts;
+      advance();
+    }
+  }
+
+  // One value whose key ends at `depth`: an array or inline table is one level deeper.
+  void value(std::size_t depth) {
+    skip_blank(false);
+    const char c = peek();
+    if (c == '[' || c == '{') {
+      check_depth(depth + 1);
+      advance();
+      if (c == '[') {
+        array(depth + 1);
+      } else {
+        inline_table(depth + 1);
+      }
+    } else if (c == '"' || c == '\'') {
+      string();
+    } else {
+      // A number, boolean or date; it ends where a separator, comment or another value begins.
+      constexpr std::string_view ends = ",]}#[{\"' \t\r\n";
+      while (!at_end() && ends.find(peek()) == std::string_view::npos) advance();
+    }
+  }
+
+  void array(std::size_t depth) {
+    while (skip_blank(true)) {
+      if (peek() == ']') {
+        advance();
+        return;
+      }
+      const std::size_t start = i_;
+      value(depth);
+      skip_blank(true);
+      if (peek() == ',') {
+        advance();
+      } else if (i_ == start && !at_end()) {
+        advance();  // neither a value nor a separator: step over it
+      }
+    }
+  }
+
+  void inline_table(std::size_t depth) {
+    while (skip_blank(true)) {
+      if (peek() == '}') {
+        advance();
+        return;
+      }
+      const std::size_t start = i_;
+      const std::size_t parts = key(depth);
+      skip_blank(false);
+      if (peek() == '=') {
+        advance();
+        value(depth + parts);
+      }
+      skip_blank(true);
+      if (peek() == ',') {
+        advance();
+      } else if (i_ == start && !at_end()) {
+        advance();
+      }
+    }
+  }
+
+  std::string_view text_;
+  std::string_view file_;
+  std::size_t i_ = 0;
+  std::uint32_t line_ = 1, column_ = 1;
+};
+
 // A key and its value inside a table, with the dotted path used in messages.
 struct entry {
   const toml::key* key = nullptr;
@@ -256,12 +464,20 @@ class scene_reader {
     expected(e, "true or false");
   }
 
-  // Names become file and directory names in results/, so they stay portable.
-  std::string display_name(const entry& e) const {
-    std::string s = string(e, "a name of letters, digits, '_', '-', '.'");
-    if (!is_portable_name(s)) expected(e, "a name of letters, digits, '_', '-', '.'");
+  // Names become file and directory names in results/, so they stay portable. Integrand names
+  // and method labels are also copied into every cell's listing and file names with a prefix
+  // and a suffix, so they are at most max_name_length long; the scene's own `name` is one folder
+  // name, whose length the command checks against the file system.
+  std::string display_name(const entry& e, bool bounded = true) const {
+    const std::string what =
+        bounded ? fmt::format("a name of letters, digits, '_', '-', '.' (at most {} characters)",
+                              max_name_length)
+                : std::string("a name of letters, digits, '_', '-', '.'");
+    std::string s = string(e, what);
+    if (!is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
     return s;
   }
+  static constexpr std::size_t max_name_length = scene_limits::max_name_length;
 
   static bool is_portable_name(std::string_view s) {
     if (s.empty() || s == "." || s == "..") return false;
@@ -298,18 +514,29 @@ key_locations locations_of(const scene_reader& r, const toml::table& t) {
 // ---------------------------------------------------------------------------------------------
 // [[integrand]]
 
+// `taken` maps each display name in `out` to its index there.
 void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t index,
-                     std::vector<integrand_spec>& out) {
+                     std::vector<integrand_spec>& out, std::map<std::string, std::size_t>& taken) {
   const std::string prefix = fmt::format("integrand[{}]", index);
   integrand_spec base;
   base.table_index = index;
   base.table = r.at(t.source());
   base.keys = locations_of(r, t);
 
+  // Every key is copied into each integrand a `dimensions` list expands to: the count is
+  // bounded so that a long table cannot multiply into gigabytes.
+  if (t.size() > scene_limits::max_integrand_keys) {
+    r.fail(base.table, prefix,
+           fmt::format("{} keys in one [[integrand]] table; at most {} (family, name, dimension, "
+                       "ensemble and the family's parameters)",
+                       t.size(), scene_limits::max_integrand_keys));
+  }
   const auto family = r.find(t, "family", prefix);
   if (!family) r.fail(base.table, prefix + ".family", "missing required key (a catalogue name)");
   base.family = r.string(*family, "a family name (`quadmc list` prints them)");
-  if (base.family.empty()) r.expected(*family, "a family name (`quadmc list` prints them)");
+  if (base.family.empty() || base.family.size() > scene_limits::max_name_length) {
+    r.expected(*family, "a family name (`quadmc list` prints them)");
+  }
 
   std::optional<std::string> given_name;
   if (const auto e = r.find(t, "name", prefix)) given_name = r.display_name(*e);
@@ -353,6 +580,12 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
       base.scalars.emplace(without_stand_ins(k), r.number(e, what));
     } else if (const auto* a = value.as_array()) {
       if (a->empty()) r.expected(e, what);
+      // A vector parameter has one entry per coordinate (the catalogue checks the exact length).
+      if (a->size() > max_dimension) {
+        r.fail(e, fmt::format("an array of {} numbers; a parameter has at most {} (one per "
+                              "dimension)",
+                              a->size(), max_dimension));
+      }
       std::vector<double> v;
       for (std::size_t i = 0; i < a->size(); ++i) {
         const entry element{&key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
@@ -365,6 +598,12 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
   }
 
   base.base_name = given_name.value_or(base.family);
+  if (out.size() + dimensions.size() > scene_limits::max_integrands) {
+    r.fail(dims ? r.at(*dims) : base.table, dims ? dims->path : prefix,
+           fmt::format("the scene would have {} integrands (after `dimensions` lists expand); at "
+                       "most {}",
+                       out.size() + dimensions.size(), scene_limits::max_integrands));
+  }
   for (std::size_t s : dimensions) {
     integrand_spec spec = base;
     spec.dimension = s;
@@ -373,14 +612,14 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     } else {
       spec.name = s == 0 ? base.base_name : fmt::format("{}_s{}", base.base_name, s);
     }
-    for (const auto& other : out) {
-      if (other.name == spec.name) {
-        r.fail(spec.table, prefix + ".name",
-               fmt::format("integrand name '{}' is already used by integrand[{}] (line {}); set "
-                           "a distinct `name`",
-                           spec.name, other.table_index, other.table.line));
-      }
+    if (const auto it = taken.find(spec.name); it != taken.end()) {
+      const integrand_spec& other = out[it->second];
+      r.fail(spec.table, prefix + ".name",
+             fmt::format("integrand name '{}' is already used by integrand[{}] (line {}); set "
+                         "a distinct `name`",
+                         spec.name, other.table_index, other.table.line));
     }
+    taken.emplace(spec.name, out.size());
     out.push_back(std::move(spec));
   }
 }
@@ -409,12 +648,25 @@ void parse_warp(const scene_reader& r, const entry& e, method_spec& m) {
   }
   m.warp_parameter = info->default_value;
   if (parameter) {
+    // The warps' own bounds (sampling/inversion_warps.hpp explains them), checked here so that a
+    // run never reaches a warp that refuses its parameter.
     if (m.warp == "power") {
-      m.warp_parameter = r.number(*parameter, "an exponent k > -1");
-      if (!(m.warp_parameter > -1.0)) r.expected(*parameter, "an exponent k > -1");
+      const std::string what =
+          fmt::format("an exponent -1 < k <= {:g} (larger k round every sample to 1)",
+                      power_warp::max_exponent);
+      m.warp_parameter = r.number(*parameter, what);
+      if (!(m.warp_parameter > -1.0 && m.warp_parameter <= power_warp::max_exponent)) {
+        r.expected(*parameter, what);
+      }
     } else {
-      m.warp_parameter = r.number(*parameter, "a rate l != 0");
-      if (m.warp_parameter == 0.0) r.expected(*parameter, "a rate l != 0");
+      const std::string what =
+          fmt::format("a rate 0 < |l| <= {:g} (e^l must stay a finite, normal double)",
+                      truncated_exponential_warp::max_abs_rate);
+      m.warp_parameter = r.number(*parameter, what);
+      if (!(m.warp_parameter != 0.0 &&
+            std::abs(m.warp_parameter) <= truncated_exponential_warp::max_abs_rate)) {
+        r.expected(*parameter, what);
+      }
     }
   }
 }
@@ -435,6 +687,7 @@ void parse_panels(const scene_reader& r, const entry& e, method_spec& m) {
   };
   if (const auto* a = e.value->as_array()) {
     if (a->empty()) r.expected(e, "a panel count or a non-empty array of panel counts");
+    if (a->size() > max_ladder) r.fail(e, fmt::format("more than {} values", max_ladder));
     for (std::size_t i = 0; i < a->size(); ++i) {
       one(entry{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)});
     }
@@ -443,14 +696,22 @@ void parse_panels(const scene_reader& r, const entry& e, method_spec& m) {
   }
 }
 
-bool names_integrand(const std::vector<integrand_spec>& integrands, std::string_view name) {
-  return std::any_of(integrands.begin(), integrands.end(), [&](const integrand_spec& f) {
-    return f.name == name || f.base_name == name;
-  });
+// The names a method's `integrands` list may use: display names and the `name` of a
+// `dimensions` table. A set, so that long lists cost n·log n, not n × integrands.
+using integrand_names = std::set<std::string, std::less<>>;
+
+integrand_names names_of(const std::vector<integrand_spec>& integrands) {
+  integrand_names names;
+  for (const auto& f : integrands) {
+    names.insert(f.name);
+    names.insert(f.base_name);
+  }
+  return names;
 }
 
 method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_t index,
-                         const std::vector<integrand_spec>& integrands) {
+                         const std::vector<integrand_spec>& integrands,
+                         const integrand_names& names) {
   const std::string prefix = fmt::format("method[{}]", index);
   method_spec m;
   m.table_index = index;
@@ -512,12 +773,19 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   if (const auto e = r.find(t, "integrands", prefix)) {
     const auto* a = e->value->as_array();
     if (a == nullptr || a->empty()) r.expected(*e, "a non-empty array of integrand names");
+    if (a->size() > scene_limits::max_integrands) {
+      r.fail(*e, fmt::format("more than {} names", scene_limits::max_integrands));
+    }
     for (std::size_t i = 0; i < a->size(); ++i) {
       const entry element{e->key, a->get(i), fmt::format("{}[{}]", e->path, i + 1)};
       std::string n = r.string(element, "an integrand name");
-      if (!names_integrand(integrands, n)) {
+      if (!names.contains(n)) {
         std::string known;
-        for (const auto& f : integrands) known += (known.empty() ? "" : ", ") + f.name;
+        constexpr std::size_t shown = 16;  // the message stays one readable line
+        for (std::size_t k = 0; k < integrands.size() && k < shown; ++k) {
+          known += (known.empty() ? "" : ", ") + integrands[k].name;
+        }
+        if (integrands.size() > shown) known += fmt::format(", … ({} in all)", integrands.size());
         r.fail(element, fmt::format("no integrand is named '{}' (integrands: {})", n, known));
       }
       m.integrands.push_back(std::move(n));
@@ -579,7 +847,23 @@ std::vector<std::uint64_t> parse_ladder(const scene_reader& r, const entry& e) {
       if (n > hi / q) break;
     }
   } else {
-    for (int k = 0;; ++k) {
+    // The loop below would run k = 0 … ⌈ln(to/from)/ln(factor)⌉ before leaving the range, and
+    // rounding can repeat values for many steps (factor = 1.0000000001 from 1 to 10^6: 1.4·10^11
+    // steps for 256 distinct values, minutes of work), so the count of steps is bounded first.
+    // log1p(f − 1): f − 1 is exact for f ≤ 2 (Sterbenz), and log1p keeps its relative accuracy.
+    const double ratio = static_cast<double>(hi) / static_cast<double>(lo);
+    const double steps = std::ceil(std::log(ratio) / std::log1p(f - 1.0));
+    if (!(steps <= static_cast<double>(scene_limits::max_ladder_steps))) {
+      r.fail(
+          *factor,
+          fmt::format("factor = {} needs {:.3g} steps from {} to {}; at most {} "
+                      "(a factor ≥ {:.6g} covers this range)",
+                      f, steps, lo, hi, scene_limits::max_ladder_steps,
+                      std::pow(ratio, 1.0 / static_cast<double>(scene_limits::max_ladder_steps))));
+    }
+    // One step more than the estimate, in case ⌈·⌉ rounded down a value that still fits.
+    const auto last = static_cast<int>(steps) + 1;
+    for (int k = 0; k <= last; ++k) {
       const double x = std::round(static_cast<double>(lo) * std::pow(f, k));
       if (x > static_cast<double>(hi)) break;
       const auto n = static_cast<std::uint64_t>(x);
@@ -622,6 +906,15 @@ output_spec parse_output(const scene_reader& r, const entry& e) {
   if (const auto v = r.find(t, "csv", "output")) o.csv = r.boolean(*v);
   if (const auto v = r.find(t, "markdown", "output")) o.markdown = r.boolean(*v);
   if (const auto v = r.find(t, "plots", "output")) o.plots = r.boolean(*v);
+  // The plots are drawn from convergence.csv (bench/plot.py reads it from the results folder).
+  if (o.plots && !o.csv) {
+    const auto plots = r.find(t, "plots", "output");
+    const auto csv = r.find(t, "csv", "output");
+    r.fail(plots ? r.at(*plots) : r.at(t.source()), "output.plots",
+           fmt::format("plots need the CSV they are drawn from, but output.csv = false (line {}); "
+                       "set plots = false or csv = true",
+                       r.at(*csv).line));
+  }
   return o;
 }
 
@@ -640,7 +933,7 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
   scene sc;
   sc.file = r.file();
   if (const auto e = r.find(root, "name", "")) {
-    sc.name = r.display_name(*e);
+    sc.name = r.display_name(*e, false);
   } else {
     sc.name = std::filesystem::path(r.file()).stem().string();
     if (!scene_reader::is_portable_name(sc.name)) sc.name = "scene";
@@ -659,16 +952,24 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
     r.fail(file_start, "integrand", "missing: a scene needs at least one [[integrand]] table");
   }
   const toml::array& integrand_tables = r.tables(*integrands, "integrand");
+  std::map<std::string, std::size_t> taken;
   for (std::size_t i = 0; i < integrand_tables.size(); ++i) {
-    parse_integrand(r, *integrand_tables.get(i)->as_table(), i + 1, sc.integrands);
+    parse_integrand(r, *integrand_tables.get(i)->as_table(), i + 1, sc.integrands, taken);
   }
 
   const auto methods = r.find(root, "method", "");
   if (!methods)
     r.fail(file_start, "method", "missing: a scene needs at least one [[method]] table");
   const toml::array& method_tables = r.tables(*methods, "method");
+  const integrand_names names = names_of(sc.integrands);
+  if (method_tables.size() > scene_limits::max_methods) {
+    const auto& extra = *method_tables.get(scene_limits::max_methods)->as_table();
+    r.fail(r.at(extra.source()), fmt::format("method[{}]", scene_limits::max_methods + 1),
+           fmt::format("{} [[method]] tables; at most {}", method_tables.size(),
+                       scene_limits::max_methods));
+  }
   for (std::size_t i = 0; i < method_tables.size(); ++i) {
-    method_spec m = parse_method(r, *method_tables.get(i)->as_table(), i + 1, sc.integrands);
+    method_spec m = parse_method(r, *method_tables.get(i)->as_table(), i + 1, sc.integrands, names);
     for (const auto& other : sc.methods) {
       if (other.label == m.label) {
         r.fail(m.table, fmt::format("method[{}].label", i + 1),
@@ -691,6 +992,12 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
 
 scene parse_scene(std::string_view toml_text, std::string_view file_name) {
   const scene_reader reader{std::string(file_name)};
+  if (toml_text.size() > scene_limits::max_file_bytes) {
+    throw scene_error({std::string(file_name), 0, 0}, "",
+                      fmt::format("the scene is {} bytes; a scene file has at most {} (1 MiB)",
+                                  toml_text.size(), scene_limits::max_file_bytes));
+  }
+  nesting_scan(toml_text, file_name).run();
   const std::string safe_text = with_stand_ins(toml_text, file_name);
   toml::table root;
   try {
@@ -703,12 +1010,41 @@ scene parse_scene(std::string_view toml_text, std::string_view file_name) {
 }
 
 scene parse_scene_file(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string name = path.string();
+  auto fail = [&](std::string_view message) -> scene_error {
+    return scene_error({name, 0, 0}, "", message);
+  };
+  // Only regular files and pipes (`quadmc run <(generate-scene)`) are read, and never more than
+  // the limit plus one byte: /dev/zero, /dev/urandom or a terminal would otherwise be read until
+  // memory runs out or forever.
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw fail("cannot open the scene file");
+  if (fs::is_directory(status)) throw fail("is a directory, not a scene file");
+  if (!fs::is_regular_file(status) && !fs::is_fifo(status)) {
+    throw fail(fmt::format("not a regular file (a {}); a scene is a TOML file of at most {} bytes",
+                           fs::is_character_file(status) ? "character device"
+                           : fs::is_block_file(status)   ? "block device"
+                           : fs::is_socket(status)       ? "socket"
+                                                         : "special file",
+                           scene_limits::max_file_bytes));
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw scene_error({path.string(), 0, 0}, "", "cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw scene_error({path.string(), 0, 0}, "", "cannot read the scene file");
-  return parse_scene(text.str(), path.string());
+  if (!in) throw fail("cannot open the scene file");
+  std::string text;
+  std::array<char, 65536> buffer{};
+  while (text.size() <= scene_limits::max_file_bytes) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    if (!in) break;
+  }
+  if (in.bad()) throw fail("cannot read the scene file");
+  if (text.size() > scene_limits::max_file_bytes) {
+    throw fail(fmt::format("the scene file is larger than {} bytes (1 MiB), the limit",
+                           scene_limits::max_file_bytes));
+  }
+  return parse_scene(text, name);
 }
 
 }  // namespace quadmc

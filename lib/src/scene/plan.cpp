@@ -11,8 +11,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
+#include <set>
 
 namespace quadmc {
 
@@ -57,10 +60,20 @@ std::optional<std::string> incompatibility(const method_spec& method, const meth
   return std::nullopt;
 }
 
-bool restricted_to(const method_spec& method, const integrand_spec& f) {
-  if (method.integrands.empty()) return true;
-  return std::any_of(method.integrands.begin(), method.integrands.end(),
-                     [&](const std::string& n) { return n == f.name || n == f.base_name; });
+// Each method's `integrands` list as a set (empty = every integrand): make_plan asks whether a
+// method takes an integrand for every pair, up to 4096 × 1024 of them.
+using name_set = std::set<std::string_view, std::less<>>;
+
+std::vector<name_set> restrictions_of(const scene& sc) {
+  std::vector<name_set> out;
+  for (const auto& method : sc.methods) {
+    out.emplace_back(method.integrands.begin(), method.integrands.end());
+  }
+  return out;
+}
+
+bool restricted_to(const name_set& names, const integrand_spec& f) {
+  return names.empty() || names.contains(f.name) || names.contains(f.base_name);
 }
 
 source_location key_location(const key_locations& keys, std::string_view key,
@@ -72,14 +85,25 @@ source_location key_location(const key_locations& keys, std::string_view key,
 // A name in a method's `integrands` list that matches only integrands the method cannot
 // integrate is an impossible pairing the scene asked for explicitly: an error, not a skip.
 void check_explicit_pairings(const scene& sc) {
+  // Integrands by every name a list may use, so each check visits only the integrands it names.
+  std::map<std::string_view, std::vector<std::size_t>, std::less<>> by_name;
+  for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
+    const integrand_spec& f = sc.integrands[fi];
+    by_name[f.name].push_back(fi);
+    if (f.base_name != f.name) by_name[f.base_name].push_back(fi);
+  }
   for (const auto& method : sc.methods) {
     const method_info& info = *find_method(method.name);
+    name_set seen;
     for (std::size_t i = 0; i < method.integrands.size(); ++i) {
       const std::string& n = method.integrands[i];
+      if (!seen.insert(n).second) continue;  // a repeated name says nothing new
       std::optional<std::string> reason;
       bool any_compatible = false;
-      for (const auto& f : sc.integrands) {
-        if (f.name != n && f.base_name != n) continue;
+      const auto named = by_name.find(n);
+      if (named == by_name.end()) continue;  // the parser checked that every name exists
+      for (const std::size_t fi : named->second) {
+        const integrand_spec& f = sc.integrands[fi];
         const auto why = incompatibility(method, info, f);
         if (why) {
           reason = why;
@@ -119,6 +143,104 @@ std::string list_of(std::span<const std::string_view> keys) {
   std::string out;
   for (std::string_view k : keys) out += fmt::format("{}{}", out.empty() ? "" : ", ", k);
   return out.empty() ? "none" : out;
+}
+
+// Whether the instances of an ensemble differ: only the Genz families draw parameters (a and u
+// when the scene omits them, genz_random_parameters); every other family ignores the seed.
+bool draws_parameters(const integrand_spec& f) {
+  return genz_family_named(f.family) && (!f.vectors.contains("a") || !f.vectors.contains("u"));
+}
+
+// s as the catalogue will resolve it: 0 is the family default (1, or 2 for irradiance); 2 is
+// the larger, so the size estimates below never undercount.
+std::uint64_t dimension_bound(const integrand_spec& f) {
+  return f.dimension == 0 ? 2 : f.dimension;
+}
+
+std::string instance_name(const integrand_spec& f, const plan_instance& inst) {
+  return f.ensemble > 1
+             ? fmt::format("{} (instance {} of {})", f.name, inst.instance + 1, f.ensemble)
+             : f.name;
+}
+
+// What the run and its analysis need finite, checked once per built instance: the exact
+// integral (every error is measured from it) and, where the family knows it, max|f| (the values
+// a rule or a sample can reach).
+void check_reference(const integrand_spec& f, const std::string& prefix,
+                     const plan_instance& inst) {
+  const integrand_info& info = inst.function.info();
+  if (!std::isfinite(info.exact)) {
+    throw scene_error(f.table, prefix,
+                      fmt::format("exact integral is {} for {} ({}): the parameters give an "
+                                  "integral beyond double's range; choose smaller ones",
+                                  info.exact, instance_name(f, inst), info.reference));
+  }
+  if (const auto& peak = info.derivative_bound[0]; peak && !std::isfinite(*peak)) {
+    throw scene_error(f.table, prefix,
+                      fmt::format("max|f| is {} for {}: its values overflow double; choose "
+                                  "smaller parameters",
+                                  *peak, instance_name(f, inst)));
+  }
+}
+
+// The plan's size, estimated from the scene alone and checked before anything is built: every
+// bound of plan_limits, each reported at the integrand that crosses it.
+void check_plan_size(const scene& sc, const std::vector<name_set>& restriction) {
+  std::uint64_t instances = 0, coordinates = 0, terms = 0, cells = 0;
+  for (const integrand_spec& f : sc.integrands) {
+    const std::string prefix = fmt::format("integrand[{}]", f.table_index);
+    const std::string key = f.ensemble_given
+                                ? "ensemble"
+                                : (f.keys.contains("dimensions") ? "dimensions" : "dimension");
+    auto fail = [&](std::string_view message) {
+      const bool located = f.keys.contains(key);
+      throw scene_error(located ? f.keys.at(key) : f.table, located ? prefix + "." + key : prefix,
+                        message);
+    };
+    const std::uint64_t s = dimension_bound(f);
+    const std::uint64_t K = f.ensemble;
+    instances += K;
+    if (instances > plan_limits::max_instances) {
+      fail(fmt::format("{} (ensemble = {}) brings the scene to {} integrand instances; at most {}",
+                       f.name, K, instances, plan_limits::max_instances));
+    }
+    coordinates += K * s;
+    if (coordinates > plan_limits::max_coordinates) {
+      fail(
+          fmt::format("{} (ensemble = {}, s = {}) brings the scene to {} instance coordinates "
+                      "(Σ ensemble × s); at most {}",
+                      f.name, K, s, coordinates, plan_limits::max_coordinates));
+    }
+    // The families' own limit (s ≤ 20) rejects larger s before any term is summed.
+    const bool vertex_sum = f.family == "genz_corner_peak" || f.family == "half_space";
+    if (vertex_sum && s <= 20) {
+      const std::uint64_t built = draws_parameters(f) ? K : 1;
+      terms += built << s;
+      if (terms > plan_limits::max_reference_terms) {
+        fail(
+            fmt::format("{}: {} instance(s) of {} at s = {} need {} terms of its 2^s-vertex "
+                        "closed form in all, about {:.0f} s of planning; at most {}",
+                        f.name, built, f.family, s, terms, 1.4e-6 * static_cast<double>(terms),
+                        plan_limits::max_reference_terms));
+      }
+    }
+    std::uint64_t per_instance = 0;
+    for (std::size_t mi = 0; mi < sc.methods.size(); ++mi) {
+      if (!restricted_to(restriction[mi], f)) continue;
+      const method_spec& m = sc.methods[mi];
+      per_instance += m.panels.empty() ? sc.budget.N.size() : m.panels.size();
+    }
+    cells += per_instance * K;
+    if (cells > plan_limits::max_cells) {
+      const bool ensemble = K > 1;
+      const source_location& where =
+          ensemble ? key_location(f.keys, "ensemble", f.table) : sc.budget.N_location;
+      throw scene_error(where, ensemble ? prefix + ".ensemble" : "budget.N",
+                        fmt::format("{}: {} (method, N) pairs × {} instances bring the scene to "
+                                    "{} cells; at most {} (fewer N values, methods or instances)",
+                                    f.name, per_instance, K, cells, plan_limits::max_cells));
+    }
+  }
 }
 
 // Builds every instance of integrand `index`, resolving a default dimension, and re-raises the
@@ -167,8 +289,20 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
   for (const auto& [k, v] : f.scalars) params.scalars.emplace(k, v);
   for (const auto& [k, v] : f.vectors) params.vectors.emplace(k, v);
   const auto genz = genz_family_named(f.family);
+  const bool draws = draws_parameters(f);
+  const std::size_t first = out.size();
   for (std::size_t k = 0; k < f.ensemble; ++k) {
     params.seed = stream_id({sc.seed, index, k});
+    if (k > 0 && !draws) {
+      // Nothing is drawn from the seed: instance k is instance 0 (any_integrand shares it), and
+      // a family whose reference costs 2^s terms is not summed K times.
+      plan_instance copy = out[first];
+      copy.instance = k;
+      copy.seed = params.seed;
+      copy.params.seed = params.seed;
+      out.push_back(std::move(copy));
+      continue;
+    }
     try {
       plan_instance inst{index, k, params.seed, params, make_integrand(f.family, params), {}};
       inst.params.dimension = inst.function.dimension();
@@ -178,6 +312,7 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
         if (!f.vectors.contains("a")) inst.drawn.emplace("a", std::move(drawn.a));
         if (!f.vectors.contains("u")) inst.drawn.emplace("u", std::move(drawn.u));
       }
+      check_reference(f, prefix, inst);
       out.push_back(std::move(inst));
     } catch (const scene_error&) {
       throw;
@@ -199,9 +334,44 @@ std::string describe_grid(const plan_cell& c) {
   return fmt::format("k = {} per axis, {} points", c.per_axis, c.evaluations);
 }
 
+// The checks a cell that will run must pass (plan.hpp): N·s within one random stream's counters,
+// and values the run's sums can hold. `scale` is M = max over instances of max(|I|, max|f|·V).
+void check_cell(const scene& sc, const integrand_spec& f, const method_spec& method, bool rule,
+                double scale, std::uint64_t N, const plan_cell& c) {
+  const std::uint64_t s = f.dimension;
+  if (!rule && c.evaluations > (std::uint64_t{1} << 62) / s) {
+    throw scene_error(
+        sc.budget.N_location, "budget.N",
+        fmt::format("N = {}: {} × {} would draw {} points in s = {}, but a random point set "
+                    "needs N·s ≤ 2^62 (the counters of one Philox stream), so N ≤ {} for this "
+                    "integrand",
+                    N, method.label, f.name, c.evaluations, s, (std::uint64_t{1} << 62) / s));
+  }
+  // A Monte Carlo estimate sums N values Y = f·V and N squared deviations, each up to (2M)²; the
+  // batch-merge formula (Chan, Golub & LeVeque) at most doubles that, so 8·M²·N < DBL_MAX keeps
+  // every partial sum finite. A rule's value is at most M and its error est − I at most 2M.
+  constexpr double largest = std::numeric_limits<double>::max();
+  const double limit =
+      rule ? largest / 4.0 : std::sqrt(largest / (8.0 * static_cast<double>(c.evaluations)));
+  if (!(scale <= limit)) {
+    const std::string prefix = fmt::format("integrand[{}]", f.table_index);
+    const std::string values =
+        std::isfinite(scale) ? fmt::format("up to {:.3g}", scale) : std::string("beyond 1.8e308");
+    throw scene_error(
+        f.table, prefix,
+        rule ? fmt::format("values {} (max(|I|, max|f|·volume)) overflow {}'s error est − I "
+                           "above {:.3g}; choose parameters with smaller values",
+                           values, method.label, limit)
+             : fmt::format("values {} (max(|I|, max|f|·volume)) are too large for {} at N = {}: "
+                           "its sums of {} values and squared deviations overflow double above "
+                           "{:.3g}; choose parameters with smaller values",
+                           values, method.label, N, c.evaluations, limit));
+  }
+}
+
 // The cells of one (integrand, method) pair for instance 0, and its skips.
-void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, std::vector<plan_cell>& cells,
-               std::vector<plan_skip>& skips) {
+void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
+               std::vector<plan_cell>& cells, std::vector<plan_skip>& skips) {
   const integrand_spec& f = sc.integrands[fi];
   const method_spec& method = sc.methods[mi];
   const method_info& info = *find_method(method.name);
@@ -234,6 +404,7 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, std::vector<plan
                               c.evaluations, c.repetitions, cost, *sc.budget.max_evaluations)});
       return;
     }
+    check_cell(sc, f, method, rule, scale, N, c);
     kept.emplace_back(N, c);
     cells.push_back(c);
   };
@@ -305,11 +476,37 @@ const plan_instance& plan::instance_of(const plan_cell& c) const {
 plan make_plan(const scene& input) {
   plan p;
   p.source = input;
+  const std::vector<name_set> restriction = restrictions_of(p.source);
+  check_plan_size(p.source, restriction);
   for (std::size_t fi = 0; fi < input.integrands.size(); ++fi) {
     build_instances(p.source, fi, p.instances);
   }
   const scene& sc = p.source;
   check_explicit_pairings(sc);
+
+  // Ī per integrand (the runner's reference), and M = max(|I_k|, max|f|·V) for check_cell.
+  p.mean_reference.assign(sc.integrands.size(), 0.0);
+  std::vector<double> scale(sc.integrands.size(), 0.0);
+  for (const auto& inst : p.instances) {
+    const integrand_info& info = inst.function.info();
+    p.mean_reference[inst.integrand] += info.exact;
+    double m = std::abs(info.exact);
+    if (const auto& peak = info.derivative_bound[0]) {
+      m = std::max(m, *peak * info.domain.volume());
+    }
+    scale[inst.integrand] = std::max(scale[inst.integrand], m);
+  }
+  for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
+    const integrand_spec& f = sc.integrands[fi];
+    p.mean_reference[fi] /= static_cast<double>(f.ensemble);
+    if (!std::isfinite(p.mean_reference[fi])) {
+      throw scene_error(key_location(f.keys, "ensemble", f.table),
+                        fmt::format("integrand[{}].ensemble", f.table_index),
+                        fmt::format("the mean of the {} instances' exact integrals of {} "
+                                    "overflows double; choose parameters with smaller integrals",
+                                    f.ensemble, f.name));
+    }
+  }
   for (const auto& inst : p.instances) {
     const integrand_spec& f = sc.integrands[inst.integrand];
     if (inst.instance == 1 && inst.drawn.empty()) {
@@ -338,17 +535,18 @@ plan make_plan(const scene& input) {
     }
   }
 
+  std::uint64_t repetitions = 0;
   for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
     const integrand_spec& f = sc.integrands[fi];
     std::vector<plan_cell> pair_cells;
     for (std::size_t mi = 0; mi < sc.methods.size(); ++mi) {
       const method_spec& method = sc.methods[mi];
-      if (!restricted_to(method, f)) continue;  // not asked for: neither a cell nor a skip
+      if (!restricted_to(restriction[mi], f)) continue;  // not asked for: neither a cell nor a skip
       if (const auto why = incompatibility(method, *find_method(method.name), f)) {
         p.skips.push_back({fmt::format("{} × {}", method.label, f.name), *why});
         continue;
       }
-      plan_pair(sc, fi, mi, pair_cells, p.skips);
+      plan_pair(sc, fi, mi, scale[fi], pair_cells, p.skips);
     }
     // Every instance of an ensemble runs the same cells; only the integrand (and its streams)
     // differ.
@@ -358,6 +556,17 @@ plan make_plan(const scene& input) {
         c.stream_parts = {c.integrand, k, c.method, c.nominal_N};
         p.total_evaluations =
             saturating_sum(p.total_evaluations, saturating_product(c.evaluations, c.repetitions));
+        repetitions = saturating_sum(repetitions, c.repetitions);
+        if (repetitions > plan_limits::max_repetitions) {
+          const method_spec& m = sc.methods[c.method];
+          throw scene_error(
+              key_location(m.keys, "repetitions", m.table),
+              fmt::format("method[{}].repetitions", m.table_index),
+              fmt::format("the cells up to {} × {} already hold {} repetitions; "
+                          "the runner keeps a result per repetition, at most {} "
+                          "(fewer repetitions, N values or instances)",
+                          m.label, f.name, repetitions, plan_limits::max_repetitions));
+        }
         p.cells.push_back(c);
       }
     }

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <cmath>
 #include <iterator>
 #include <map>
 #include <utility>
@@ -115,15 +116,11 @@ run_output run_plan(const plan& p, const run_options& options) {
 
   // One series per (integrand, method), in order of first appearance (the plan's order).
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> series_index;
-  // For ensembles: Ī per integrand, the mean of its instances' references.
-  std::map<std::size_t, double> mean_reference;
-  std::map<std::size_t, std::size_t> instance_count;
-  for (const plan_instance& inst : p.instances) {
-    mean_reference[inst.integrand] += inst.function.info().exact;
-    ++instance_count[inst.integrand];
-  }
-  for (auto& [integrand, sum] : mean_reference)
-    sum /= static_cast<double>(instance_count[integrand]);
+  // For ensembles: Ī per integrand, the mean of its instances' references (make_plan computed
+  // and checked it).
+  const std::vector<double>& mean_reference = p.mean_reference;
+  require(mean_reference.size() == p.source.integrands.size(), "plan.mean_reference",
+          mean_reference.size(), "one reference per integrand (a plan from make_plan)");
 
   run_progress progress;
   progress.cells_total = p.cells.size();
@@ -175,11 +172,39 @@ run_output run_plan(const plan& p, const run_options& options) {
     for (std::uint64_t r = 0; r < cell.repetitions; ++r) {
       const auto& sp = cell.stream_parts;
       const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
+      // Which cell failed, for every error a repetition can raise: the integrand (and its
+      // instance), the method, N and the repetition; the cause after it names the point.
+      auto where = [&] {
+        std::string name = ispec.name;
+        if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
+        return fmt::format("{} × {}, N = {} ({} evaluations), repetition {} of {}", mspec.label,
+                           name, cell.nominal_N, cell.evaluations, r + 1, cell.repetitions);
+      };
       const auto t0 = clock::now();
-      repetition_result result = method->kind == method_kind::deterministic_rule
-                                     ? run_rule(mspec, inst.function, cell, out.threads_allowed)
-                                     : run_random(mspec, p, cell, stream, out.threads_allowed);
+      repetition_result result;
+      try {
+        result = method->kind == method_kind::deterministic_rule
+                     ? run_rule(mspec, inst.function, cell, out.threads_allowed)
+                     : run_random(mspec, p, cell, stream, out.threads_allowed);
+      } catch (const std::exception& e) {
+        throw run_error(fmt::format("{}: {}", where(), e.what()));
+      }
       result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+      // Values that are each finite can still sum to inf (and Neumaier's correction to
+      // inf − inf = NaN); the analysis refuses such an estimate, so it is reported here, where
+      // the cell is known.
+      if (!std::isfinite(result.value)) {
+        throw run_error(
+            fmt::format("{}: the estimate is {}: the sum of its values (f·volume, or "
+                        "f/p for importance sampling) overflowed double",
+                        where(), result.value));
+      }
+      if (!std::isnan(result.std_error) && !std::isfinite(result.std_error)) {
+        throw run_error(
+            fmt::format("{}: the estimate's standard error is {} (the squared "
+                        "deviations of its values overflow double)",
+                        where(), result.std_error));
+      }
       result.value += shift;
       target.repetitions.push_back(result);
       // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.

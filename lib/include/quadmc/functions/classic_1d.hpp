@@ -33,10 +33,14 @@ namespace quadmc {
 
 namespace detail {
 
+// Finite bounds with a finite width: rules and samplers place points at lower + (upper − lower)·t,
+// which is NaN when the width overflows (lower = −1e308, upper = 1e308).
 inline void validate_interval(double lo, double hi) {
   require_finite(lo, "lower");
   require_finite(hi, "upper");
   require(lo < hi, "upper", hi, fmt::format("upper > lower = {}", lo));
+  require(std::isfinite(hi - lo), "upper", hi,
+          fmt::format("a finite width upper − lower (lower = {}: too far apart for double)", lo));
 }
 
 inline integrand_info info_1d(std::string name, std::string formula, double lo, double hi,
@@ -61,8 +65,15 @@ inline double max_abs_sin(double lo, double hi) {
 
 class poly_1d {
  public:
+  // Largest |lower|, |upper|: the closed form needs x⁶ finite, |x| ≤ DBL_MAX^(1/6) ≈ 5.6e51.
+  static constexpr double max_abs_bound = 1e51;
+
   explicit poly_1d(double lower = 0.0, double upper = 1.0) : lo_(lower), hi_(upper) {
     detail::validate_interval(lo_, hi_);
+    require(std::abs(lo_) <= max_abs_bound, "lower", lo_,
+            "|lower| ≤ 1e51 (the integral (upper⁶ − lower⁶)/6 must stay finite)");
+    require(std::abs(hi_) <= max_abs_bound, "upper", hi_,
+            "|upper| ≤ 1e51 (the integral (upper⁶ − lower⁶)/6 must stay finite)");
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -87,8 +98,14 @@ class poly_1d {
 
 class exp_1d {
  public:
+  // Largest upper bound: e^upper, f's largest value and the integral's leading term, stays finite
+  // up to ln(DBL_MAX) ≈ 709.78.
+  static constexpr double max_upper = 709.78;
+
   explicit exp_1d(double lower = 0.0, double upper = 1.0) : lo_(lower), hi_(upper) {
     detail::validate_interval(lo_, hi_);
+    require(hi_ <= max_upper, "upper", hi_,
+            "upper ≤ 709.78 (e^upper must stay finite: ln of the largest double)");
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {

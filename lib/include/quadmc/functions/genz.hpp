@@ -47,7 +47,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -113,15 +115,60 @@ inline genz_parameters genz_random_parameters(genz_family f, std::size_t s, std:
 namespace detail {
 
 // Checks a and u of one Genz family; a_positive for families whose formula divides by aᵢ.
+// Subnormal aᵢ (|aᵢ| < DBL_MIN ≈ 2.2e-308) are refused: the closed forms divide by aᵢ or by
+// aᵢ·t, which then carry only a few significant bits.
 inline void validate_genz(std::span<const double> a, std::span<const double> u, bool a_positive) {
   require(!a.empty(), "a", a.size(), "a non-empty vector (its length is the dimension s ≥ 1)");
   require(u.size() == a.size(), "u", fmt::format("a vector of length {}", u.size()),
           fmt::format("length s = {} (the length of a)", a.size()));
   for (double ai : a) {
-    require(std::isfinite(ai) && (!a_positive || ai > 0.0), "a", ai,
-            a_positive ? "finite aᵢ > 0" : "finite aᵢ");
+    const bool normal_or_zero = ai == 0.0 || std::abs(ai) >= std::numeric_limits<double>::min();
+    require(std::isfinite(ai) && (!a_positive || ai > 0.0) && normal_or_zero, "a", ai,
+            a_positive ? "finite aᵢ > 0, not subnormal (≥ 2.2250738585072014e-308)"
+                       : "finite aᵢ, 0 or not subnormal (|aᵢ| ≥ 2.2250738585072014e-308)");
   }
   for (double ui : u) require(ui >= 0.0 && ui <= 1.0, "u", ui, "uᵢ in [0, 1]");
+}
+
+// Π factors, the product a closed form needs. In double as the factors come (the usual case, bit
+// for bit what a loop gives); when that over- or underflows on the way, or ends outside the normal
+// range, again in 50-digit arithmetic (exponent range ±2^31), which rounds only the final value:
+// a product of 1e200, 1e200 and 1e-300 is 1e100, not inf.
+inline double scaled_product(std::span<const double> factors) {
+  double product = 1.0;
+  for (double f : factors) product *= f;
+  if (std::isnormal(product)) return product;
+  wide_float wide = 1;
+  for (double f : factors) wide *= f;
+  return static_cast<double>(wide);
+}
+
+// Refuses parameters whose reference a double cannot carry: `exact` must be finite, and for the
+// positive families (every Genz family but the oscillatory one) at least DBL_MIN, since a
+// subnormal or zero reference leaves no relative error to measure. `factors`, when the exact
+// value is their product, give the message its order of magnitude (Σ log₁₀ of them).
+inline void require_representable(double exact, bool positive, std::span<const double> a,
+                                  std::string_view family, std::span<const double> factors = {}) {
+  const bool ok =
+      std::isfinite(exact) && (!positive || exact >= std::numeric_limits<double>::min());
+  if (ok) return;
+  std::string value = fmt::format("{:.3g}", exact);
+  if (!factors.empty()) {
+    double log10 = 0.0;
+    for (double f : factors) log10 += std::log10(std::abs(f));
+    value = fmt::format("about 1e{:.0f}", std::floor(log10));
+  }
+  throw invalid_argument(
+      "a", fmt::format("[{}]", fmt::join(a, ", ")),
+      fmt::format("parameters whose integral of {} is a normal double (it is "
+                  "{}, {})",
+                  family, value, std::isfinite(exact) ? "below 2.2e-308" : "beyond 1.8e308"));
+}
+
+// M_k where finite; empty where the bound overflows (it is a bound, not a value f reaches).
+inline std::optional<double> finite_bound(double bound) {
+  if (std::isfinite(bound)) return bound;
+  return std::nullopt;
 }
 
 inline double max_abs(std::span<const double> a) {
@@ -148,6 +195,12 @@ class genz_oscillatory {
       : a_(std::move(a)), u_(std::move(u)) {
     detail::validate_genz(a_, u_, false);
     phase_ = 2.0 * std::numbers::pi * u_[0];
+    // evaluate() sums 2πu₁ + Σaᵢxᵢ; each partial sum is at most 2π + Σ|aᵢ| in magnitude
+    // (rounding is monotone), so that bound finite means no inf, and no cos(inf) = NaN.
+    double bound = 2.0 * std::numbers::pi;
+    for (double ai : a_) bound += std::abs(ai);
+    require(std::isfinite(bound), "a", fmt::format("[{}]", fmt::join(a_, ", ")),
+            "parameters with a finite 2π + Σ|aᵢ| (the phase of cos must stay finite)");
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -171,7 +224,7 @@ class genz_oscillatory {
                           "closed form cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)", smoothness::analytic);
     // |∂ᵏf/∂xⱼᵏ| = |aⱼ|ᵏ·|cos or sin| ≤ |aⱼ|ᵏ (an upper bound, attained when the phase allows).
     const double m = detail::max_abs(a_);
-    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = std::pow(m, k);
+    for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = detail::finite_bound(std::pow(m, k));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -184,10 +237,27 @@ class genz_oscillatory {
 
 class genz_product_peak {
  public:
+  // f = C·Π 1/(1 + aᵢ²(xᵢ − uᵢ)²) with C = Π aᵢ², the peak at x = u: every factor is in (0, 1],
+  // so no partial product overflows on the way (Π 1/(aᵢ⁻² + d²) would for a = (1e200, 1e-200)
+  // although f ≤ 1). C and the integral must be finite and normal, or the parameters are refused.
   genz_product_peak(std::vector<double> a, std::vector<double> u)
       : a_(std::move(a)), u_(std::move(u)) {
     detail::validate_genz(a_, u_, true);
-    for (double ai : a_) inv_a2_.push_back(1.0 / (ai * ai));
+    std::vector<double> squares, factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double a2 = a_[j] * a_[j];
+      require(std::isfinite(a2), "a", a_[j], "aᵢ ≤ 1.3e154 (aᵢ² must stay finite)");
+      a2_.push_back(a2);
+      squares.push_back(a2);
+      factors.push_back(a_[j] * (std::atan(a_[j] * (1.0 - u_[j])) + std::atan(a_[j] * u_[j])));
+    }
+    peak_ = detail::scaled_product(squares);
+    require(std::isfinite(peak_) && peak_ >= std::numeric_limits<double>::min(), "a",
+            fmt::format("[{}]", fmt::join(a_, ", ")),
+            fmt::format("parameters whose peak Π aᵢ² at x = u is a normal double (it is {:.3g})",
+                        peak_));
+    exact_ = detail::scaled_product(factors);
+    detail::require_representable(exact_, true, a_, "genz_product_peak", factors);
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -196,28 +266,24 @@ class genz_product_peak {
       double p = 1.0;
       for (std::size_t j = 0; j < s; ++j) {
         const double d = x[i * s + j] - u_[j];
-        p *= 1.0 / (inv_a2_[j] + d * d);
+        p *= 1.0 / (1.0 + a2_[j] * (d * d));
       }
-      y[i] = p;
+      y[i] = peak_ * p;
     }
   }
   integrand_info info() const {
-    double exact = 1.0, peak = 1.0;
-    for (std::size_t j = 0; j < a_.size(); ++j) {
-      exact *= a_[j] * (std::atan(a_[j] * (1.0 - u_[j])) + std::atan(a_[j] * u_[j]));
-      peak *= a_[j] * a_[j];
-    }
     auto info =
-        detail::genz_info(genz_family::product_peak, "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)", a_.size(), exact,
+        detail::genz_info(genz_family::product_peak, "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)", a_.size(), exact_,
                           "closed form Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]", smoothness::analytic);
-    info.derivative_bound[0] = peak;  // at x = u, inside the cube
+    info.derivative_bound[0] = peak_;  // at x = u, inside the cube
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
   const std::vector<double>& u() const noexcept { return u_; }
 
  private:
-  std::vector<double> a_, u_, inv_a2_;
+  std::vector<double> a_, u_, a2_;
+  double peak_, exact_;
 };
 
 class genz_corner_peak {
@@ -241,6 +307,7 @@ class genz_corner_peak {
         fmt::format("[{}] (s = {}, relative rounding bound {:.3g})", fmt::join(a_, ", "), s, bound),
         "parameters whose inclusion–exclusion closed form is accurate to 1e-10 relative "
         "(larger aᵢ or a smaller s)");
+    detail::require_representable(exact_, true, a_, "genz_corner_peak");
   }
   // The closed form and a bound on its relative rounding error (of the 50-digit sum, before the
   // final rounding to double), for any a > 0.
@@ -282,7 +349,7 @@ class genz_corner_peak {
     const double m = detail::max_abs(a_);
     double rising = 1.0;
     for (int k = 0; k <= 4; ++k) {
-      info.derivative_bound[k] = rising * std::pow(m, k);
+      info.derivative_bound[k] = detail::finite_bound(rising * std::pow(m, k));
       rising *= static_cast<double>(a_.size() + 1 + static_cast<std::size_t>(k));
     }
     return info;
@@ -300,7 +367,19 @@ class genz_gaussian {
  public:
   genz_gaussian(std::vector<double> a, std::vector<double> u) : a_(std::move(a)), u_(std::move(u)) {
     detail::validate_genz(a_, u_, true);
-    for (double ai : a_) a2_.push_back(ai * ai);
+    // aᵢ² = inf would make aᵢ²·0 = NaN at xᵢ = uᵢ.
+    for (double ai : a_) {
+      a2_.push_back(ai * ai);
+      require(std::isfinite(a2_.back()), "a", ai, "aᵢ ≤ 1.3e154 (aᵢ² must stay finite)");
+    }
+    // Every factor √π/(2aᵢ)·[erf(aᵢ(1 − uᵢ)) + erf(aᵢuᵢ)] is in (0, 1].
+    std::vector<double> factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      factors.push_back(std::sqrt(std::numbers::pi) / (2.0 * a_[j]) *
+                        (std::erf(a_[j] * (1.0 - u_[j])) + std::erf(a_[j] * u_[j])));
+    }
+    exact_ = detail::scaled_product(factors);
+    detail::require_representable(exact_, true, a_, "genz_gaussian", factors);
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -316,12 +395,7 @@ class genz_gaussian {
     vector_exp(y, y);
   }
   integrand_info info() const {
-    double exact = 1.0;
-    for (std::size_t j = 0; j < a_.size(); ++j) {
-      exact *= std::sqrt(std::numbers::pi) / (2.0 * a_[j]) *
-               (std::erf(a_[j] * (1.0 - u_[j])) + std::erf(a_[j] * u_[j]));
-    }
-    auto info = detail::genz_info(genz_family::gaussian, "exp(−Σ aᵢ²(xᵢ − uᵢ)²)", a_.size(), exact,
+    auto info = detail::genz_info(genz_family::gaussian, "exp(−Σ aᵢ²(xᵢ − uᵢ)²)", a_.size(), exact_,
                                   "closed form Π √π/(2aᵢ)[erf(aᵢ(1 − uᵢ)) + erf(aᵢuᵢ)]",
                                   smoothness::analytic);
     // d^k/dt^k e^{−a²t²} = (−a)^k H_k(at) e^{−a²t²}: |·| peaks at t = 0 for k = 0, 2, 4 (values
@@ -330,7 +404,7 @@ class genz_gaussian {
     info.derivative_bound[0] = 1.0;
     info.derivative_bound[1] = std::sqrt(2.0) * std::exp(-0.5) * m;
     info.derivative_bound[2] = 2.0 * m * m;
-    info.derivative_bound[4] = 12.0 * m * m * m * m;
+    info.derivative_bound[4] = detail::finite_bound(12.0 * m * m * m * m);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -338,6 +412,7 @@ class genz_gaussian {
 
  private:
   std::vector<double> a_, u_, a2_;
+  double exact_;
 };
 
 class genz_continuous {
@@ -345,6 +420,15 @@ class genz_continuous {
   genz_continuous(std::vector<double> a, std::vector<double> u)
       : a_(std::move(a)), u_(std::move(u)) {
     detail::validate_genz(a_, u_, true);
+    // Every factor is in (0, 1] (it integrates a function ≤ 1 over [0, 1]), and a normal aᵢ
+    // keeps 2/aᵢ finite.
+    std::vector<double> factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      // 2 − e^{−au} − e^{−a(1−u)} = −expm1(−au) − expm1(−a(1−u)): no cancellation for small a.
+      factors.push_back((-std::expm1(-a_[j] * u_[j]) - std::expm1(-a_[j] * (1.0 - u_[j]))) / a_[j]);
+    }
+    exact_ = detail::scaled_product(factors);
+    detail::require_representable(exact_, true, a_, "genz_continuous", factors);
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -357,13 +441,8 @@ class genz_continuous {
     vector_exp(y, y);
   }
   integrand_info info() const {
-    double exact = 1.0;
-    for (std::size_t j = 0; j < a_.size(); ++j) {
-      // 2 − e^{−au} − e^{−a(1−u)} = −expm1(−au) − expm1(−a(1−u)): no cancellation for small a.
-      exact *= (-std::expm1(-a_[j] * u_[j]) - std::expm1(-a_[j] * (1.0 - u_[j]))) / a_[j];
-    }
     auto info =
-        detail::genz_info(genz_family::continuous, "exp(−Σ aᵢ|xᵢ − uᵢ|)", a_.size(), exact,
+        detail::genz_info(genz_family::continuous, "exp(−Σ aᵢ|xᵢ − uᵢ|)", a_.size(), exact_,
                           "closed form Π [2 − e^{−aᵢuᵢ} − e^{−aᵢ(1−uᵢ)}]/aᵢ", smoothness::c0);
     info.derivative_bound[0] = 1.0;                  // at x = u
     info.derivative_bound[1] = detail::max_abs(a_);  // one-sided, next to x = u
@@ -374,6 +453,7 @@ class genz_continuous {
 
  private:
   std::vector<double> a_, u_;
+  double exact_;
 };
 
 class genz_discontinuous {
@@ -393,6 +473,23 @@ class genz_discontinuous {
       require(std::isinf(threshold_[c - 1]), "cut", c, "distinct indices");
       threshold_[c - 1] = u_[c - 1];
     }
+    // f's largest value is e^peak, peak = Σ max(0, aᵢ·upperᵢ): it must be finite, or exp(Σaᵢxᵢ)
+    // overflows at the corner. Then no factor of the closed form exceeds e^{aᵢ·upperᵢ}, so only
+    // an underflow on the way can spoil the product, which scaled_product handles.
+    std::vector<double> factors;
+    for (std::size_t j = 0; j < s; ++j) {
+      const double upper = std::min(threshold_[j], 1.0);
+      // ∫₀^upper e^{a x} dx = expm1(a·upper)/a, = upper at a = 0.
+      factors.push_back(a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j]);
+      peak_ += std::max(0.0, a_[j] * upper);
+    }
+    require(std::exp(peak_) <= std::numeric_limits<double>::max(), "a",
+            fmt::format("[{}]", fmt::join(a_, ", ")),
+            fmt::format("parameters with a finite largest value e^(Σ max(0, aᵢ·upperᵢ)) "
+                        "(the exponent is {:.6g}, above ln(DBL_MAX) ≈ 709.78)",
+                        peak_));
+    exact_ = detail::scaled_product(factors);
+    detail::require_representable(exact_, true, a_, "genz_discontinuous", factors);
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -412,19 +509,12 @@ class genz_discontinuous {
     }
   }
   integrand_info info() const {
-    double exact = 1.0, peak = 0.0;
-    for (std::size_t j = 0; j < a_.size(); ++j) {
-      const double upper = std::min(threshold_[j], 1.0);
-      // ∫₀^upper e^{a x} dx = expm1(a·upper)/a, = upper at a = 0.
-      exact *= a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j];
-      peak += std::max(0.0, a_[j] * upper);
-    }
     auto info = detail::genz_info(
         genz_family::discontinuous,
         fmt::format("0 if x_c > u_c for c in {{{}}}, else exp(Σ aᵢxᵢ)", fmt::join(cut_, ", ")),
-        a_.size(), exact, "closed form Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ · Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ",
+        a_.size(), exact_, "closed form Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ · Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ",
         smoothness::discontinuous);
-    info.derivative_bound[0] = std::exp(peak);
+    info.derivative_bound[0] = std::exp(peak_);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -435,6 +525,7 @@ class genz_discontinuous {
   std::vector<double> a_, u_;
   std::vector<std::size_t> cut_;
   std::vector<double> threshold_;
+  double peak_ = 0.0, exact_ = 1.0;
 };
 
 }  // namespace quadmc

@@ -42,6 +42,12 @@ class ball_indicator {
               fmt::format("a ball inside [0,1]^s: r ≤ cⱼ ≤ 1 − r with r = {}", radius_));
     }
     r2_ = radius_ * radius_;
+    // The volume falls fast with s (r ≤ 1/2: below 1e-308 from s ≈ 340 on, where Γ(s/2 + 1)
+    // also overflows): a reference that is 0 or subnormal has no relative error left to measure.
+    const double volume = ball_volume(center_.size(), radius_);
+    require(volume >= std::numeric_limits<double>::min(), "r", radius_,
+            fmt::format("a radius whose ball in s = {} has a normal double volume (it is {:.3g})",
+                        center_.size(), volume));
   }
   std::size_t dimension() const noexcept { return center_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -85,17 +91,38 @@ class half_space_indicator {
   static constexpr double max_relative_error = 1e-10;
 
   // The plane must cut the cube: 0 < t < Σw.
+  //
+  // The region {Σ wᵢxᵢ ≤ t} does not change when w and t are multiplied by the same c > 0, so
+  // both are divided by c = 2^⌊log₂ max wᵢ⌋ first, which is exact (a power of two): the largest
+  // weight becomes [1, 2), Σw and the closed form's s!·Π wᵢ stay finite whatever the scale of
+  // the input (w = (1e308, 1e308) has Σw = inf in double), and evaluate() compares the scaled sum,
+  // whose rounding is the unscaled one's. A weight that the division would make subnormal (more
+  // than 2^1021 below the largest) is refused.
   half_space_indicator(std::vector<double> w, double t) : w_(std::move(w)), t_(t) {
     require(!w_.empty(), "w", w_.size(), "a non-empty vector (its length is the dimension s ≥ 1)");
     require(w_.size() <= max_dimension, "dimension", w_.size(),
             "s ≤ 20 (the half-space volume sums 2^s terms)");
-    double total = 0.0;
+    double largest = 0.0;
     for (double wi : w_) {
       require(std::isfinite(wi) && wi > 0.0, "w", wi, "finite weights wᵢ > 0");
+      largest = std::max(largest, wi);
+    }
+    require(std::isfinite(t_) && t_ > 0.0, "t", t_, "a finite threshold t > 0");
+    const std::vector<double> given_w = w_;
+    const int exponent = std::ilogb(largest);
+    wide_float total = 0;
+    for (double& wi : w_) {
+      const double given = wi;
+      wi = std::ldexp(wi, -exponent);
+      require(std::isnormal(wi), "w", given,
+              fmt::format("weights within a factor 2^1021 of the largest, {}", largest));
       total += wi;
     }
-    require(std::isfinite(t_) && t_ > 0.0 && t_ < total, "t", t_,
-            fmt::format("a plane cutting the cube, 0 < t < Σw = {}", total));
+    const double given_t = t_;
+    t_ = std::ldexp(t_, -exponent);
+    require(std::isnormal(t_) && t_ < total, "t", given_t,
+            fmt::format("a plane cutting the cube, 0 < t < Σw = {:.17g}",
+                        std::ldexp(static_cast<double>(total), exponent)));
     const std::size_t s = w_.size();
     const wide_float eps = std::numeric_limits<wide_float>::epsilon();
     const wide_float tw = t_;
@@ -118,11 +145,14 @@ class half_space_indicator {
     wide_float denominator = 1;
     for (std::size_t j = 0; j < s; ++j) denominator *= static_cast<double>(j + 1) * w_[j];
     exact_ = static_cast<double>(sum.value / denominator);
+    require(exact_ >= std::numeric_limits<double>::min(), "t", given_t,
+            fmt::format("a threshold whose half-space has a normal double volume (it is {:.3g})",
+                        exact_));
     error_bound_ =
         static_cast<double>(sum.error_bound / boost::multiprecision::abs(sum.value) + 2 * n * eps);
     require(error_bound_ <= max_relative_error, "w",
-            fmt::format("[{}] with t = {} (relative rounding bound {:.3g})", fmt::join(w_, ", "),
-                        t_, error_bound_),
+            fmt::format("[{}] with t = {} (relative rounding bound {:.3g})",
+                        fmt::join(given_w, ", "), given_t, error_bound_),
             "parameters whose closed form is accurate to 1e-10 relative (a smaller s)");
   }
   std::size_t dimension() const noexcept { return w_.size(); }

@@ -27,6 +27,15 @@ class sobol_g {
     require(!a_.empty(), "a", a_.size(), "a non-empty vector (its length is the dimension s ≥ 1)");
     for (double ai : a_) require(std::isfinite(ai) && ai >= 0.0, "a", ai, "finite aᵢ ≥ 0");
     for (double ai : a_) inv_1pa_.push_back(1.0 / (1.0 + ai));
+    // f's largest value, at the corners, is Π (2 + aᵢ)/(1 + aᵢ) ≤ 2^s; every factor is ≥ 1, so
+    // a finite total means finite partial products. It overflows only when s nears 1024 with
+    // small aᵢ (2^1024 > DBL_MAX).
+    peak_ = 1.0;
+    for (double ai : a_) peak_ *= (2.0 + ai) / (1.0 + ai);
+    require(std::isfinite(peak_), "a", fmt::format("[{}]", fmt::join(a_, ", ")),
+            fmt::format("parameters whose largest value Π (2 + aᵢ)/(1 + aᵢ) is finite (s = {}: "
+                        "raise some aᵢ above 0)",
+                        a_.size()));
   }
   // aᵢ = (i − 1)/2, i = 1..s.
   static std::vector<double> default_a(std::size_t s) {
@@ -54,8 +63,7 @@ class sobol_g {
                         .reference = "closed form: each factor integrates to 1",
                         .regularity = smoothness::c0};
     // Each factor peaks at xᵢ ∈ {0, 1} with (2 + aᵢ)/(1 + aᵢ); its slope is ±4/(1 + aᵢ).
-    double peak = 1.0;
-    for (double ai : a_) peak *= (2.0 + ai) / (1.0 + ai);
+    const double peak = peak_;
     double slope = 0.0;
     for (double ai : a_)
       slope = std::max(slope, peak * (4.0 / (1.0 + ai)) / ((2.0 + ai) / (1.0 + ai)));
@@ -67,6 +75,7 @@ class sobol_g {
 
  private:
   std::vector<double> a_, inv_1pa_;
+  double peak_;
 };
 
 }  // namespace quadmc

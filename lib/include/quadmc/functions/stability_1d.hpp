@@ -46,6 +46,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <string>
@@ -89,6 +90,11 @@ class shifted_exp_1d {
     require(lo_ < hi_, "upper", hi_, fmt::format("upper > lower = {}", quote(lo_)));
     require(std::isfinite(width_), "upper − lower", width_,
             "a finite width (the bounds are too far apart for double)");
+    // f's largest value e/w, at x = upper, must be finite: w ≥ DBL_MIN (a subnormal width also
+    // loses the precision of t = (x − lower)/w).
+    require(width_ >= std::numeric_limits<double>::min(), "upper − lower", width_,
+            "a width of at least 2.2250738585072014e-308 (a normal double: f's largest value is "
+            "e/width)");
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -181,6 +187,11 @@ class exp_float_1d {
     require_finite(lo_, "lower");
     require_finite(hi_, "upper");
     require(lo_ < hi_, "upper", hi_, fmt::format("upper > lower = {}", quote(lo_)));
+    // expf overflows above ln(FLT_MAX) ≈ 88.72; it is monotone, so f's largest value is its
+    // value at the upper bound, computed exactly as evaluate() does.
+    peak_ = std::exp(static_cast<float>(hi_));
+    require(std::isfinite(peak_), "upper", hi_,
+            "upper ≤ 88.72 (f is evaluated in float, and e^upper must stay below FLT_MAX)");
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -190,11 +201,13 @@ class exp_float_1d {
     auto info = detail::stability_info("exp_float", "eˣ evaluated in float", lo_, hi_,
                                        std::exp(hi_) - std::exp(lo_),
                                        "closed form of the double function", smoothness::analytic);
+    info.derivative_bound[0] = peak_;
     return info;
   }
 
  private:
   double lo_, hi_;
+  float peak_;
 };
 
 class inverse_quadratic_float_1d {

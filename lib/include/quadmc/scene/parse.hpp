@@ -23,12 +23,14 @@
 //   dimensions = [1, 2, 4, 8] shorthand: one integrand per s (same parameters, own name).
 //                             At most one of the two; neither = the family's default s (1 for
 //                             the 1D classics, 2 for the irradiance integrands).
-//   name = "g"                display name (unique). Default: "<family>_s<s>" ("<family>" when
-//                             s is the family default); with `dimensions`, "<name>_s<s>".
+//   name = "g"                display name (unique, ≤ 128 characters). Default:
+//                             "<family>_s<s>" ("<family>" when s is the family default); with
+//                             `dimensions`, "<name>_s<s>".
 //   ensemble = 16             K ≥ 1 (default 1): K random instances of the family, drawn from the
 //                             scene seed (instance k gets seed stream_id({seed, integrand, k}));
 //                             errors are averaged over the ensemble. Parameters given explicitly
 //                             are shared by every instance; the others are drawn per instance.
+//                             make_plan bounds Σ K (65536) and Σ K·s (2^20) over the scene.
 //   a = [1.0, 2.0, 0.5]       any other key is a family parameter, passed to the catalogue:
 //   u = [0.3, 0.6, 0.45]      a number → scalar, an array of numbers → vector (length s where
 //   cut = [1, 2]              the family says so). Omitted ones are drawn from the seed and the
@@ -41,14 +43,17 @@
 //                         padded_jittered, latin_hypercube, importance,
 //                         irradiance_hemisphere_uniform, irradiance_hemisphere_cosine,
 //                         irradiance_light_area.
-//   label = "simpson_a"   display name (unique); needed when one method appears twice.
+//   label = "simpson_a"   display name (unique, ≤ 128 characters); needed when one method
+//                         appears twice.
 //                         Default: the name, plus "_<warp>" / "_<point_set>" when set.
 //   integrands = ["g"]    restrict the method to these integrands (display names, or the
 //                         `name` of a `dimensions` table for all its expansions). Default: all.
-//   repetitions = 64      random methods: independent runs per N, 1…10^9 (default 32). A
+//   repetitions = 64      random methods: independent runs per N, 1…10^9 (default 32), at
+//                         most 2^25 over all cells (the runner keeps each result). A
 //                         deterministic rule runs once per N; the plan notes the key is ignored.
 //   panels = [2, 4, 8]    tensor rules except romberg: explicit n per axis (an integer or an
-//                         increasing list), replacing budget.N for this method. Simpson: even.
+//                         increasing list of ≤ 256), replacing budget.N for this method.
+//                         Simpson: even.
 //   m = 3                 gauss_legendre: nodes per panel, one of 2 3 4 5 7 10 15 20 25 30
 //                         (default 3).
 //   point_set = "jittered"  importance and irradiance_*: the pattern of the uniform points fed
@@ -56,20 +61,45 @@
 //                         padded_jittered, latin_hypercube). Counts are mapped as for the
 //                         method of the same name (jittered: N → k^s).
 //   warp = "power"        importance (required): a 1D density on [0,1], so s = 1 only;
-//   warp = { name = "power", exponent = 2.0 }      p(x) = (k+1) x^k, k > −1 (default 1)
-//   warp = { name = "exponential", rate = 1.0 }    p(x) = λ e^{λx}/(e^λ − 1), λ ≠ 0 (default 1)
+//   warp = { name = "power", exponent = 2.0 }      p(x) = (k+1) x^k, −1 < k ≤ 1e5 (default 1)
+//   warp = { name = "exponential", rate = 1.0 }    p(x) = λ e^{λx}/(e^λ − 1), 0 < |λ| ≤ 700
+//                         (default 1). Beyond these the warp is not accurate: every sample of
+//                         x^k rounds to 1 for k ≳ 1e16, and e^λ overflows above 709.78
+//                         (sampling/inversion_warps.hpp derives both bounds).
 //
 // [budget]                required
 //   N = [64, 256, 1024]   nominal evaluation counts, strictly increasing, 1…2^53; or
 //   N = { from = 64, to = 1048576, factor = 4 }   geometric: from·factor^k ≤ to (factor > 1, may
-//                         be fractional: values are rounded and repeats dropped). ≤ 256 values.
+//                         be fractional: values are rounded and repeats dropped). ≤ 256 values,
+//                         reached in ≤ 4096 steps k (factor ≥ (to/from)^(1/4096)).
 //                         Each method maps N to a count it can use (plan.hpp).
 //   max_evaluations = 1e8 per cell, evaluations × repetitions; cells above it are skipped with
 //                         the reason. An integer or an integral float (1e8). Default: no limit.
 //   max_seconds = 600     whole run, positive; the runner stops starting new cells after it.
 //
 // [output]                optional; which files to write (each default true)
-//   csv = true, markdown = true, plots = true
+//   csv = true, markdown = true, plots = true     plots are drawn from the CSV: plots = true
+//                         with csv = false is an error (at output.plots).
+//
+// Limits (scene_limits below; plan.hpp's plan_limits bound what make_plan builds). Each is an
+// error naming the key, never a silent cut, and keeps the work and memory of parsing bounded
+// whatever the file's numbers say:
+//   the file              at most 1 MiB, a regular file or a pipe (not /dev/zero, a terminal, a
+//                         folder); read with a bounded loop, never past the limit.
+//   nesting               at most 64 levels, counted before toml++ parses (it recurses per
+//                         level): each part of a dotted key or table header and each array or
+//                         inline table is one; a scene needs 4.
+//   names                 integrand `name`s and method `label`s at most 128 characters (they
+//                         become file names); `family` at most 128.
+//   [[integrand]]         at most 32 keys per table; a parameter array at most 1024 numbers;
+//                         4096 integrands in all after `dimensions` expand.
+//   [[method]]            at most 1024 tables; `panels` and `integrands` lists at most 256 and
+//                         4096 entries.
+//   budget.N              at most 256 values (list or range), a range at most 4096 steps.
+// make_plan (plan.hpp) then refuses, at the key concerned and before any work, what a run would
+// refuse after it: an exact integral or a largest value max|f| beyond double's range, values too
+// large for the run's sums of squares, a random cell with N·s > 2^62 (at budget.N), and plans of
+// more than 2^20 cells or 2^25 repetitions in all.
 //
 // Pairings: a method that cannot integrate an integrand (romberg or importance with s ≠ 1, an
 // irradiance estimator on a non-rendering integrand) is skipped for it, with the reason in the
@@ -80,10 +110,26 @@
 
 #include "quadmc/scene/scene.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 
 namespace quadmc {
+
+// The parser's bounds (see "Limits" above): whatever a file says, parsing it costs work and
+// memory in proportion to these, never to what the file's numbers ask for.
+struct scene_limits {
+  static constexpr std::size_t max_file_bytes = std::size_t{1} << 20;  // 1 MiB
+  static constexpr std::size_t max_nesting = 64;
+  static constexpr std::size_t max_name_length = 128;
+  static constexpr std::size_t max_integrands = 4096;  // after `dimensions` expansion
+  static constexpr std::size_t max_integrand_keys = 32;
+  static constexpr std::size_t max_methods = 1024;
+  static constexpr std::size_t max_ladder = 256;           // N values, panel counts
+  static constexpr std::uint64_t max_ladder_steps = 4096;  // k of from·factor^k
+  static constexpr std::size_t max_dimension = 1024;
+};
 
 // `file_name` is used in messages only (and as the default scene name).
 scene parse_scene(std::string_view toml_text, std::string_view file_name);

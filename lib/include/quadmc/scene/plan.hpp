@@ -15,6 +15,15 @@
 //  - outputs the scene turned off are listed as skipped.
 // make_plan also builds every integrand instance through the catalogue, so a family or a
 // parameter the catalogue rejects is a scene_error naming the file, line and key.
+//
+// Everything a run would refuse is refused here, before any work, as a scene_error at the key
+// concerned: an exact integral (or an ensemble's mean of them) that is not finite, or a largest
+// value max|f| that overflows; a random cell whose point set cannot hold N·s ≥ 2^62 counters
+// (sampling/point_set.hpp), at budget.N; and values too large for the run's statistics: a Monte
+// Carlo estimate sums N values and N squared deviations of Y = f·volume, so 8·M²·N must stay below
+// DBL_MAX, M = max(|I|, max|f|·volume) (≈ 1.5e146 at N = 2^53, 4.7e153 at N = 1); a rule's error
+// est − I needs 4·M ≤ DBL_MAX. The plan's own size is bounded (plan_limits), also checked before
+// anything is built, so no scene makes planning itself take unbounded time or memory.
 #pragma once
 
 #include "quadmc/functions/any_integrand.hpp"
@@ -30,6 +39,21 @@
 #include <vector>
 
 namespace quadmc {
+
+// Bounds on what one scene may make the planner build (parse.hpp bounds the file itself).
+struct plan_limits {
+  // Ensemble instances over all integrands, and instances × s: each instance holds its box and
+  // parameters (about 64 bytes per coordinate), so 2^20 coordinates are ≈ 64 MiB.
+  static constexpr std::size_t max_instances = 65536;
+  static constexpr std::uint64_t max_coordinates = std::uint64_t{1} << 20;
+  // Terms of the 2^s-vertex closed forms (genz_corner_peak, half_space) summed while building
+  // the instances, ≈ 1.4 µs each in 50-digit arithmetic: 2^24 is about 25 s of planning.
+  static constexpr std::uint64_t max_reference_terms = std::uint64_t{1} << 24;
+  // Cells (integrands × methods × N values × ensemble instances), and as many skips at most.
+  static constexpr std::uint64_t max_cells = std::uint64_t{1} << 20;
+  // Σ repetitions over the cells: the runner keeps one 32-byte result per repetition (1 GiB).
+  static constexpr std::uint64_t max_repetitions = std::uint64_t{1} << 25;
+};
 
 // One instance of one integrand of the scene (an ensemble of K has K of them).
 struct plan_instance {
@@ -67,7 +91,10 @@ struct plan_skip {
 struct plan {
   scene source;  // the scene it was made from, with every integrand's dimension resolved
   std::vector<plan_instance> instances;  // ordered by (integrand, instance)
-  std::vector<plan_cell> cells;          // ordered by (integrand, instance, method, N)
+  // Per integrand of the scene: Ī, the mean of its instances' exact integrals (the series'
+  // reference; run.hpp shifts each instance's estimates by Ī − I_k).
+  std::vector<double> mean_reference;
+  std::vector<plan_cell> cells;  // ordered by (integrand, instance, method, N)
   std::vector<plan_skip> skips;
   std::vector<std::string> notes;       // ignored keys and other remarks
   std::uint64_t total_evaluations = 0;  // Σ evaluations × repetitions (saturates at 2^64 − 1)

@@ -16,10 +16,21 @@
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace quadmc {
+
+// A cell failed while it ran: an integrand value that is not finite (the cause names the point,
+// functions/integrand.hpp), an estimate or standard error that overflowed, or an estimator that
+// refused its sample (importance sampling where the pdf is 0). The message starts with the cell,
+// "plain_mc × exp, N = 64 (64 evaluations), repetition 3 of 32: ", then the cause. make_plan
+// refuses what it can foresee; this is for what only the run can see.
+class run_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct run_progress {
   std::size_t cells_done = 0;
