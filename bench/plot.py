@@ -14,7 +14,10 @@ keep the two in step):
                                        points as crosses off the line; dashed theory guides with the
                                        slope of slopes.csv's `theory` column, anchored at the
                                        method's first point and drawn over its fitted range (a
-                                       guide shows the rate, not a bound).
+                                       guide shows the rate, not a bound); for a series with an
+                                       error envelope (convergence.csv's `envelope`: a rule on a
+                                       jump, judged within_envelope / above_envelope) the
+                                       envelope itself, dotted, instead of the guide.
   work_precision_<name>.svg            RMSE against seconds per estimate (seconds/repetitions).
 Output is deterministic (fixed svg.hashsalt, no date in the metadata), so regenerating the plots
 of unchanged data does not churn git.
@@ -81,6 +84,7 @@ def load(folder):
             "error": number(row["rmse"]),
             "seconds": number(row["seconds"]) / repetitions,
             "floor": row.get("floor", "0") == "1",
+            "envelope": number(row.get("envelope")),  # absent in older folders: NaN
         })
     for methods in groups.values():
         for points in methods.values():
@@ -114,7 +118,7 @@ def draw(ax, x_of, points, color, name):
     return clean
 
 
-def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen):
+def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=False):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(xlabel)
@@ -128,6 +132,9 @@ def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen):
     if theory_seen:
         handles.append(plt.Line2D([], [], color="gray", linestyle="--"))
         labels.append("theory slope")
+    if envelope_seen:
+        handles.append(plt.Line2D([], [], color="gray", linestyle=":"))
+        labels.append("error envelope (a-priori bound)")
     ax.legend(handles, labels, fontsize=7, loc="best")
     fig.tight_layout()
     fig.savefig(path, format="svg", metadata={"Date": None})
@@ -141,7 +148,7 @@ def plot_folder(folder):
     for (integrand, s), methods in groups.items():
         fig, ax = plt.subplots()
         wfig, wax = plt.subplots()
-        floor_seen = theory_seen = False
+        floor_seen = theory_seen = envelope_seen = False
         for k, (method, points) in enumerate(methods.items()):
             color = colors[k % len(colors)]
             fit = slopes.get((integrand, s, method), (math.nan, math.nan))
@@ -150,7 +157,13 @@ def plot_folder(folder):
             draw(wax, lambda p: p["seconds"], points, color, method)
             floor_seen |= any(p["floor"] for p in points)
             theory = fit[1]
-            if not math.isnan(theory) and clean:
+            bounded = [p for p in points if p["envelope"] > 0]  # NaN compares false
+            if bounded:
+                # The bound the verdict is judged against, at every N (floor points included).
+                ax.plot([p["n"] for p in bounded], [p["envelope"] for p in bounded], ":",
+                        color=color, linewidth=1.0, alpha=0.8)
+                envelope_seen = True
+            elif not math.isnan(theory) and clean:
                 # Over the fitted (clean) range only: past the floor a guide would stretch the
                 # axis to errors no double can hold.
                 n0, e0 = clean[0]["n"], clean[0]["error"]
@@ -160,7 +173,7 @@ def plot_folder(folder):
                 theory_seen = True
         error_file, work_precision_file = plot_files(integrand, s)
         finish(fig, ax, f"{folder}/{error_file}", "N (integrand evaluations per estimate)",
-               f"{integrand}, s = {s}: error against N", floor_seen, theory_seen)
+               f"{integrand}, s = {s}: error against N", floor_seen, theory_seen, envelope_seen)
         finish(wfig, wax, f"{folder}/{work_precision_file}", "seconds per estimate",
                f"{integrand}, s = {s}: work-precision", floor_seen, False)
         written += [error_file, work_precision_file]

@@ -98,6 +98,83 @@ TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
   EXPECT_EQ(table.verdict, slope_verdict::no_fit);
 }
 
+// A step at c = 1/2 + 1/4 + 1/8 + 1/16 + 2⁻²⁰ under the midpoint rule on n = 2⁴ … 2¹⁶ panels
+// (N = n): |error| = h·dist(n·c, nearest node count) (the nodes right of c number n − ⌈nc − 1/2⌉),
+// and n·c = integer + n·2⁻²⁰ with n·2⁻²⁰ ≤ 1/16 for these n, so |error| = h·n·2⁻²⁰ = 2⁻²⁰ at
+// every n: flat over twelve doublings. The envelope is |J|·h/2 = 1/(2n) ≥ 2⁻¹⁷ > 2⁻²⁰.
+convergence_series run_of_ones_series() {
+  const double c = 0.5 + 0.25 + 0.125 + 0.0625 + std::ldexp(1.0, -20);
+  convergence_series series{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  for (int k = 4; k <= 16; ++k) {
+    const auto n = static_cast<std::uint64_t>(1) << k;
+    convergence_cell cell;
+    cell.n = n;
+    cell.per_axis = n;
+    cell.error_envelope = 0.5 / static_cast<double>(n);
+    cell.repetitions.push_back({1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9});
+    series.cells.push_back(cell);
+  }
+  return series;
+}
+
+TEST(ConvergenceTable, FlatJumpLadderIsWithinItsEnvelopeNotShallower) {
+  const convergence_table table = analyse_convergence(run_of_ones_series());
+  EXPECT_FALSE(table.floor.reached());
+  // What the slope verdict alone says of this ladder: slope 0 against the theory −1.
+  ASSERT_TRUE(table.fit.ok());
+  EXPECT_NEAR(table.fit.slope, 0.0, 1e-12);
+  ASSERT_TRUE(table.theory.slope.has_value());
+  EXPECT_EQ(*table.theory.slope, -1.0);
+  EXPECT_EQ(judge_slope(table.fit, table.theory.slope), slope_verdict::shallower);
+  // The verdict judges the envelope; fit, interval and theory stay beside it.
+  EXPECT_TRUE(table.has_envelope());
+  EXPECT_EQ(table.verdict, slope_verdict::within_envelope);
+  // Largest error/envelope at the last point: 2⁻²⁰/(1/2¹⁷) = 1/8.
+  EXPECT_DOUBLE_EQ(table.envelope_ratio, 0.125);
+  EXPECT_EQ(table.rows.front().per_axis, 16u);
+  EXPECT_EQ(table.rows.back().envelope, 0.5 / 65536.0);
+}
+
+TEST(ConvergenceTable, OnePointOverItsEnvelopeIsAboveEnvelope) {
+  convergence_series series = run_of_ones_series();
+  series.cells[5].error_envelope = std::ldexp(1.0, -21);  // half the error there
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_EQ(table.verdict, slope_verdict::above_envelope);
+  EXPECT_DOUBLE_EQ(table.envelope_ratio, 2.0);
+}
+
+TEST(ConvergenceTable, RoundingLevelIsAllowedAboveAnAttainedEnvelope) {
+  // An error that attains its envelope, plus rounding of a few ε·|I| (a sum of n weights 1/n
+  // with n not a power of two): still within, since the envelope is exact arithmetic and the
+  // allowance is rounding_floor.hpp's level ℓ(N) = 2ε·|I|·log₂N.
+  convergence_series series = run_of_ones_series();
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (convergence_cell& cell : series.cells) {
+    cell.error_envelope = 0.25 / static_cast<double>(cell.n);
+    cell.repetitions[0].value = series.reference + cell.error_envelope + 2 * eps * series.reference;
+  }
+  EXPECT_EQ(analyse_convergence(series).verdict, slope_verdict::within_envelope);
+  // Far beyond the rounding level it is a real excess.
+  for (convergence_cell& cell : series.cells) {
+    cell.repetitions[0].value = series.reference + 1.001 * cell.error_envelope;
+  }
+  EXPECT_EQ(analyse_convergence(series).verdict, slope_verdict::above_envelope);
+}
+
+TEST(ConvergenceTable, EnvelopeOnSomeCellsOnlyIsRejected) {
+  convergence_series series = run_of_ones_series();
+  series.cells[3].error_envelope = nan;
+  EXPECT_THROW(analyse_convergence(series), invalid_argument);
+  series.cells[3].error_envelope = -1.0;
+  EXPECT_THROW(analyse_convergence(series), invalid_argument);
+  // Without envelopes at all the slope verdict is back (the old behaviour).
+  for (convergence_cell& cell : series.cells) cell.error_envelope = nan;
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_FALSE(table.has_envelope());
+  EXPECT_EQ(table.verdict, slope_verdict::shallower);
+  EXPECT_TRUE(std::isnan(table.envelope_ratio));
+}
+
 TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
   convergence_series empty{"f", 1, "midpoint", "smooth", 1.0, {}, "", 0};
   EXPECT_THROW(analyse_convergence(empty), invalid_argument);

@@ -2,6 +2,7 @@
 // derivative maxima against Boost autodiff on a dense grid.
 #include "quadmc/functions/classic_1d.hpp"
 
+#include "jump_metadata.hpp"
 #include "reference_quadrature.hpp"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,32 @@ TEST(Classic1d, DerivativeBoundsAreExactMaxima) {
   EXPECT_EQ(sqrt_1d().info().regularity, smoothness::singular);
   EXPECT_EQ(abs_kink_1d().info().regularity, smoothness::c0);
   EXPECT_EQ(step_1d().info().regularity, smoothness::discontinuous);
+}
+
+TEST(Classic1d, StepCarriesItsJumpAndFlatPieces) {
+  // An interior jump of size 1 at c, f(c) = 1 = f(c+); the pieces are constant (M₁…M₄ = 0).
+  for (double c : {0.3, 1.0 / std::sqrt(2.0), 0.93750095367431640625}) {
+    const step_1d f(c);
+    const integrand_info info = f.info();
+    ASSERT_EQ(info.separable_factors.size(), 1u);
+    const piecewise_smooth_factor& g = info.separable_factors[0];
+    ASSERT_EQ(g.jumps.size(), 1u);
+    EXPECT_EQ(g.jumps[0].location, c);
+    EXPECT_EQ(g.jumps[0].size, 1.0);
+    for (std::size_t k = 1; k < g.derivative_bound.size(); ++k) {
+      EXPECT_EQ(g.derivative_bound[k], 0.0) << "k = " << k;
+    }
+    test::expect_factors_describe(f, {0.0}, {1.0});
+  }
+  // c = 1: only the point value f(1) = 1 differs from the limit 0: an end-point jump.
+  test::expect_factors_describe(step_1d(1.0), {0.0}, {1.0});
+  EXPECT_EQ(step_1d(1.0).info().separable_factors[0].jumps.size(), 1u);
+  // c = 0: f ≡ 1 on [0, 1], no jump at all.
+  EXPECT_TRUE(step_1d(0.0).info().separable_factors[0].jumps.empty());
+  test::expect_factors_describe(step_1d(0.0), {0.0}, {1.0});
+  // Smooth families carry no factors: their series keep the slope verdict.
+  EXPECT_TRUE(exp_1d().info().separable_factors.empty());
+  EXPECT_TRUE(abs_kink_1d().info().separable_factors.empty());
 }
 
 TEST(Classic1d, BadParametersAreNamed) {

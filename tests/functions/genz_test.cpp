@@ -2,6 +2,7 @@
 // integration (s = 5); corner-peak accuracy against 50-digit arithmetic; parameter validation.
 #include "quadmc/functions/genz.hpp"
 
+#include "jump_metadata.hpp"
 #include "reference_quadrature.hpp"
 
 #include <gtest/gtest.h>
@@ -165,6 +166,43 @@ TEST(Genz, DefaultCutIsFirstTwoCoordinatesAndOnlyTheFirstInOneDimension) {
             (std::vector<std::size_t>{1, 2}));
   // 1D: ∫₀^{u} e^{ax} dx.
   EXPECT_NEAR(genz_discontinuous({2.0}, {0.5}).info().exact, std::expm1(1.0) / 2.0, 1e-15);
+}
+
+TEST(Genz, DiscontinuousCarriesOneFactorPerAxisWithTheCutsAsJumps) {
+  // 1D: a jump of size e^{a·u} at u (f(u) the left limit), M_k = |a|ᵏ·e^{max(0, a·u)}.
+  {
+    const genz_discontinuous f({2.5}, {0.6});
+    test::expect_factors_describe(f, {0.0}, {1.0});
+    const integrand_info info = f.info();
+    const piecewise_smooth_factor& g = info.separable_factors.at(0);
+    ASSERT_EQ(g.jumps.size(), 1u);
+    EXPECT_EQ(g.jumps[0].location, 0.6);
+    EXPECT_DOUBLE_EQ(g.jumps[0].size, std::exp(1.5));
+    for (std::size_t k = 0; k < g.derivative_bound.size(); ++k) {
+      // max over [0, 0.6] of |(e^{2.5x})⁽ᵏ⁾| = 2.5ᵏ e^{1.5}, at the cut.
+      EXPECT_DOUBLE_EQ(*g.derivative_bound[k], std::pow(2.5, k) * std::exp(1.5)) << "k = " << k;
+    }
+  }
+  // A negative a: the largest derivative is at x = 0.
+  {
+    const genz_discontinuous f({-3.0}, {0.7});
+    test::expect_factors_describe(f, {0.0}, {1.0});
+    EXPECT_DOUBLE_EQ(*f.info().separable_factors.at(0).derivative_bound[2], 9.0);
+  }
+  // u = 1: no jump. (u = 0 would make f zero almost everywhere, ∫f = 0: the family refuses it,
+  // since a zero reference leaves no relative error to measure.)
+  EXPECT_TRUE(genz_discontinuous({1.0}, {1.0}).info().separable_factors.at(0).jumps.empty());
+  // s = 3 with Genz's default cut {1, 2}: axes 1 and 2 jump, axis 3 is e^{a₃x} on [0, 1]. With
+  // the other coordinates at 0 each other factor is e⁰ = 1.
+  const genz_discontinuous f3({0.7, 1.3, 2.1}, {0.4, 0.55, 0.3});
+  test::expect_factors_describe(f3, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0});
+  const integrand_info info = f3.info();
+  ASSERT_EQ(info.separable_factors.size(), 3u);
+  EXPECT_EQ(info.separable_factors[0].jumps.size(), 1u);
+  EXPECT_EQ(info.separable_factors[1].jumps.size(), 1u);
+  EXPECT_TRUE(info.separable_factors[2].jumps.empty());
+  // Other families carry no factors.
+  EXPECT_TRUE(genz_gaussian({1.0}, {0.5}).info().separable_factors.empty());
 }
 
 TEST(Genz, NormalisationMakesTheSumOfAEqualTheDifficulty) {

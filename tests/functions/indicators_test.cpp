@@ -4,6 +4,7 @@
 
 #include "quadmc/functions/catalogue.hpp"
 
+#include "jump_metadata.hpp"
 #include "reference_quadrature.hpp"
 
 #include <gtest/gtest.h>
@@ -109,6 +110,24 @@ TEST(HalfSpace, VolumeMatchesNestedIntegration) {
     EXPECT_NEAR(half_space_indicator(std::vector<double>(s, 1.0), 0.5 * s).info().exact, 0.5, 1e-15)
         << "s = " << s;
   }
+}
+
+TEST(Indicators, OneDimensionalCasesCarryTheirJumpsHigherOnesNone) {
+  // 1D ball: the interval [c − r, c + r], jumps of size 1 at both ends inside (0, 1).
+  const ball_indicator interval({0.5}, 0.3);
+  test::expect_factors_describe(interval, {0.0}, {1.0});
+  ASSERT_EQ(interval.info().separable_factors.at(0).jumps.size(), 2u);
+  // An end of the interval at an end of [0, 1]: f is 1 up to it, no jump there.
+  const ball_indicator touching({0.25}, 0.25);
+  test::expect_factors_describe(touching, {0.0}, {1.0});
+  EXPECT_EQ(touching.info().separable_factors.at(0).jumps.size(), 1u);
+  // 1D half-space 1{w·x ≤ t}: one jump at t/w.
+  const half_space_indicator half({2.0}, 0.7);
+  test::expect_factors_describe(half, {0.0}, {1.0});
+  EXPECT_EQ(half.info().separable_factors.at(0).jumps.at(0).location, 0.35);
+  // Curved and oblique boundaries in s ≥ 2 are not products of 1D factors: none claimed.
+  EXPECT_TRUE(ball_indicator({0.5, 0.5}, 0.45).info().separable_factors.empty());
+  EXPECT_TRUE(half_space_indicator({1.0, 1.0}, 1.2).info().separable_factors.empty());
 }
 
 TEST(HalfSpace, BadParametersAreNamed) {

@@ -114,6 +114,41 @@ TEST(Compare, ShallowerSlopeIsARegression) {
   EXPECT_EQ(back.slopes[0].status, "steeper in B");
 }
 
+// A midpoint series on a step with envelope 0.5/N and |error| = scale·N^rate: an envelope series.
+void write_jump_folder(const fs::path& folder, double rate, double scale) {
+  convergence_series rule{"step", 1, "midpoint", "discontinuous", 0.25, {}, "", 2};
+  for (int k = 2; k <= 12; ++k) {
+    const double n = std::ldexp(1.0, k);
+    const auto nk = static_cast<std::uint64_t>(n);
+    rule.cells.push_back(
+        {nk, {{0.25 + scale * std::pow(n, rate), nan, nk, 1e-8 * n}}, nk, 0.5 / n});
+  }
+  run_info info;
+  info.scene = "compare_test";
+  const std::vector<convergence_table> tables = {analyse_convergence(rule)};
+  write_results_folder(folder, info, tables);
+}
+
+TEST(Compare, EnvelopeSeriesAreJudgedByTheirVerdict) {
+  const temporary_directory dir;
+  write_jump_folder(dir.path / "a", -1.0, 0.3);      // under 0.5/N: within
+  write_jump_folder(dir.path / "flat", 0.0, 1e-4);   // slope 0, still under 0.5/N up to 2^12
+  write_jump_folder(dir.path / "above", -1.0, 0.6);  // 0.6/N > 0.5/N: above the envelope
+  // A flat ladder under its envelope: the slope moved by 1, which is not a rate lost.
+  const compare_result flat = compare_results(dir.path / "a", dir.path / "flat", 0.1);
+  EXPECT_FALSE(flat.regression);
+  ASSERT_EQ(flat.slopes.size(), 1u);
+  EXPECT_EQ(flat.slopes[0].status, "slope moved, within envelope in B");
+  // An error above the a-priori bound is a regression, though the slope is unchanged.
+  const compare_result above = compare_results(dir.path / "a", dir.path / "above", 0.1);
+  EXPECT_TRUE(above.regression);
+  EXPECT_EQ(above.regressions, 1u);
+  EXPECT_EQ(above.slopes[0].status, "above envelope in B");
+  EXPECT_NE(render_compare_markdown(above).find("above their error envelope"), std::string::npos);
+  // And back: B within again is no regression.
+  EXPECT_FALSE(compare_results(dir.path / "above", dir.path / "a", 0.1).regression);
+}
+
 TEST(Compare, SmallSlopeChangeWithinToleranceAndMissingSeries) {
   const temporary_directory dir;
   write_folder(dir.path / "a", -2.0, 1.0);
@@ -205,7 +240,7 @@ TEST(Compare, ARegressionOutranksIncomparabilityAndTheReasonNamesBoth) {
   const compare_result r = compare_results(dir.path / "a", dir.path / "b");
   EXPECT_EQ(r.outcome, compare_outcome::regression);
   EXPECT_EQ(r.reason,
-            "1 slope regression (first: f (s = 1) midpoint); 1 series of A missing in B (first: f "
+            "1 regression (first: f (s = 1) midpoint); 1 series of A missing in B (first: f "
             "(s = 1) simpson)");
 }
 

@@ -32,6 +32,63 @@ std::vector<convergence_table> sample_tables() {
   return {analyse_convergence(rule), analyse_convergence(mc)};
 }
 
+// A midpoint ladder on a step that stays flat at 2⁻²⁰ under its envelope 1/(2N) (the run of ones
+// of convergence_table_test.cpp): an envelope series.
+convergence_table envelope_table() {
+  const double c = 0.93750095367431640625;
+  convergence_series series{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  for (int k = 4; k <= 10; ++k) {
+    const auto n = static_cast<std::uint64_t>(1) << k;
+    series.cells.push_back(
+        {n, {{1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9}}, n, 0.5 / static_cast<double>(n)});
+  }
+  return analyse_convergence(series);
+}
+
+// Every table row has its header's number of cells: '|' outside escapes per line.
+void expect_rectangular_tables(const std::string& page) {
+  std::size_t start = 0;
+  std::size_t expected = 0;
+  while (start < page.size()) {
+    const std::size_t end = page.find('\n', start);
+    const std::string line = page.substr(start, end - start);
+    start = end + 1;
+    if (line.empty() || line[0] != '|') {
+      expected = 0;
+      continue;
+    }
+    std::size_t bars = 0;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
+    }
+    if (expected == 0) expected = bars;
+    EXPECT_EQ(bars, expected) << line;
+  }
+}
+
+TEST(MarkdownReport, EnvelopeSeriesShowsItsVerdictRatioAndEnvelopeColumn) {
+  run_info info;
+  info.scene = "jumps";
+  const std::vector<convergence_table> tables = {envelope_table()};
+  ASSERT_EQ(tables[0].verdict, slope_verdict::within_envelope);
+  const std::string page = render_results_markdown(info, tables);
+  // The summary keeps slope and theory beside the envelope verdict.
+  EXPECT_NE(page.find("| step | 1 | midpoint | 0.000 ± 0.000 | -1.000 | within_envelope |"),
+            std::string::npos)
+      << page;
+  // The page says what the two envelope verdicts mean.
+  EXPECT_NE(page.find("*within_envelope*"), std::string::npos);
+  EXPECT_NE(page.find("*above_envelope*"), std::string::npos);
+  // The method section: the verdict with the largest error/envelope 2⁻²⁰·2¹⁰·2 = 1/512, and an
+  // envelope column with 1/(2N) (N = 16: 3.125e-02).
+  EXPECT_NE(page.find("verdict within_envelope (largest error/envelope 0.00195)"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("| \\|error\\| | envelope | std error |"), std::string::npos) << page;
+  EXPECT_NE(page.find("| 16 | 16 | 9.537e-07 | 3.125e-02 |"), std::string::npos) << page;
+  expect_rectangular_tables(page);
+}
+
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
   // A name that already ends in "_s<s>" (a default name, a `dimensions` expansion) is used as it
   // is; any other gets "_s=<s>".
@@ -140,24 +197,7 @@ TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   EXPECT_NE(page.find("rounding floor from N = "), std::string::npos);
   EXPECT_NE(page.find("| method | 1e-02 | 1e-03 |"), std::string::npos) << page;
   EXPECT_NE(page.find("not reached"), std::string::npos) << "MC never reaches 1e-8 at N = 4096";
-  // Every table row has the header's number of cells: count '|' outside escapes per line.
-  std::size_t start = 0;
-  std::size_t expected = 0;
-  while (start < page.size()) {
-    const std::size_t end = page.find('\n', start);
-    const std::string line = page.substr(start, end - start);
-    start = end + 1;
-    if (line.empty() || line[0] != '|') {
-      expected = 0;
-      continue;
-    }
-    std::size_t bars = 0;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
-    }
-    if (expected == 0) expected = bars;
-    EXPECT_EQ(bars, expected) << line;
-  }
+  expect_rectangular_tables(page);
 }
 
 }  // namespace

@@ -39,8 +39,9 @@ void write(const fs::path& file, const std::string& text) {
   std::ofstream(file, std::ios::binary) << text;
 }
 
-// Two series: a deterministic rule (no std_error, coverage empty) with an awkward integrand name,
-// and a Monte Carlo method with coverage.
+// Two series: a deterministic rule on a jump (no std_error, coverage empty, an error envelope
+// 0.5/N that its error 0.3/N stays under) with an awkward integrand name, and a Monte Carlo
+// method with coverage and no envelope.
 std::vector<convergence_table> sample_tables() {
   convergence_series rule{"step, \"shifted\"", 1,  "midpoint", "discontinuous",
                           1.0 / 3.0,           {}, "",         0};
@@ -48,7 +49,7 @@ std::vector<convergence_table> sample_tables() {
   for (int k = 2; k <= 6; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
-    rule.cells.push_back({nk, {{1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n}}});
+    rule.cells.push_back({nk, {{1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n}}, nk, 0.5 / n});
     mc.cells.push_back({nk,
                         {{0.7 + 0.2 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 1e-6},
                          {0.7 - 0.3 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 2e-6}}});
@@ -62,11 +63,11 @@ TEST(ResultsCsv, ExactHeaderLines) {
   EXPECT_EQ(conv.substr(0, conv.find('\n')),
             "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
-            "smoothness");
+            "smoothness,envelope");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
-            "floor_points,smoothness,fit_status,attainable_accuracy,theory_note");
+            "floor_points,smoothness,fit_status,attainable_accuracy,theory_note,envelope_ratio");
 }
 
 TEST(ResultsCsv, DeterministicRowHasEmptyCoverageAndFullReference) {
@@ -113,6 +114,10 @@ TEST(ResultsCsv, RoundTripThroughFiles) {
         EXPECT_EQ(r.coverage_95, row.stats.coverage_95);
       }
       EXPECT_EQ(r.floor, row.floor);
+      EXPECT_EQ(std::isnan(r.envelope), std::isnan(row.envelope));
+      if (!std::isnan(r.envelope)) {
+        EXPECT_EQ(r.envelope, row.envelope);
+      }
     }
   }
 
@@ -128,6 +133,14 @@ TEST(ResultsCsv, RoundTripThroughFiles) {
     EXPECT_EQ(slopes[k].points_used, tables[k].points_used());
     EXPECT_EQ(slopes[k].floor_points, tables[k].floor_points());
   }
+  // The rule's envelope verdict and ratio reach the file; the Monte Carlo row keeps its slope
+  // verdict and leaves the ratio empty.
+  EXPECT_EQ(slopes[0].verdict, "within_envelope");
+  // error/envelope = 0.3/0.5; the error is read off 1/3 + 0.3/N, whose rounding (ε/3 against
+  // 0.3/64 at the largest N) moves the ratio by ≤ 70ε ≈ 1.6e-14.
+  EXPECT_NEAR(slopes[0].envelope_ratio, 0.6, 1e-13);
+  EXPECT_EQ(slopes[1].verdict, "agrees");
+  EXPECT_TRUE(std::isnan(slopes[1].envelope_ratio));
 }
 
 TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
@@ -142,7 +155,8 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   EXPECT_TRUE(std::isnan(slopes[0].theory));
   EXPECT_EQ(slopes[0].points_used, 7u);
 
-  // A convergence.csv without the added `floor` column (an older folder) reads with floor = false.
+  // A convergence.csv without the added `floor` and `envelope` columns (an older folder) reads
+  // with floor = false and no envelope.
   const auto tables = sample_tables();
   std::string text = convergence_csv_text("default", tables);
   std::string old;
@@ -150,16 +164,18 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   while (start < text.size()) {
     const std::size_t end = text.find('\n', start);
     std::string line = text.substr(start, end - start);
-    // Drop the last two columns (floor, smoothness): smoothness has no comma in these tables.
-    line = line.substr(0, line.rfind(','));
-    line = line.substr(0, line.rfind(','));
+    // Drop the last three columns (floor, smoothness, envelope): none has a comma here.
+    for (int column = 0; column < 3; ++column) line = line.substr(0, line.rfind(','));
     old += line + '\n';
     start = end + 1;
   }
   write(dir.path / "convergence.csv", old);
   const auto rows = read_convergence_csv(dir.path / "convergence.csv");
   ASSERT_EQ(rows.size(), 10u);
-  for (const auto& r : rows) EXPECT_FALSE(r.floor);
+  for (const auto& r : rows) {
+    EXPECT_FALSE(r.floor);
+    EXPECT_TRUE(std::isnan(r.envelope));
+  }
 }
 
 TEST(ResultsCsv, MissingColumnOrBadNumberNamesFileAndColumn) {

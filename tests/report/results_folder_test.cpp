@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 
@@ -52,6 +54,40 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   // to ~1e-11, not to ε.
   EXPECT_NEAR(slopes[0].slope, -2.0, 1e-10);
   EXPECT_EQ(slopes[0].verdict, "agrees");
+}
+
+// End to end from a series to the files: a rule on a jump whose flat ladder (slope 0 against the
+// theory −1, which the slope verdict calls shallower) stays under its envelope: slopes.csv and the
+// README both say within_envelope, and the cells' envelopes reach convergence.csv.
+TEST(ResultsFolder, EnvelopeVerdictReachesSlopesCsvAndTheReadme) {
+  const temporary_directory dir;
+  const double c = 0.93750095367431640625;  // 1/2 + 1/4 + 1/8 + 1/16 + 2⁻²⁰
+  convergence_series s{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  for (std::uint64_t n = 16; n <= 4096; n *= 2) {
+    s.cells.push_back(
+        {n,
+         {{1.0 - c + std::ldexp(1.0, -20), std::numeric_limits<double>::quiet_NaN(), n, 1e-6}},
+         n,
+         0.5 / static_cast<double>(n)});
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(s)};
+  run_info info;
+  info.scene = "jumps";
+  write_results_folder(dir.path, info, tables);
+  const auto slopes = read_slopes_csv(dir.path / "slopes.csv");
+  ASSERT_EQ(slopes.size(), 1u);
+  EXPECT_EQ(slopes[0].verdict, "within_envelope");
+  EXPECT_EQ(slopes[0].slope, 0.0) << "the slope stays in the file beside the verdict";
+  EXPECT_EQ(slopes[0].theory, -1.0);
+  const auto cells = read_convergence_csv(dir.path / "convergence.csv");
+  ASSERT_EQ(cells.size(), 9u);
+  EXPECT_EQ(cells.front().envelope, 0.5 / 16.0);
+  std::ifstream readme(dir.path / "README.md");
+  const std::string page((std::istreambuf_iterator<char>(readme)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("| step | 1 | midpoint | 0.000 ± 0.000 | -1.000 | within_envelope |"),
+            std::string::npos)
+      << page;
 }
 
 TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {

@@ -1,4 +1,5 @@
-// analyse_convergence: cell statistics → floor → fit → theory → verdict → work-precision.
+// analyse_convergence: cell statistics → floor → fit → theory → verdict (slope or envelope) →
+// work-precision.
 #include "quadmc/analysis/convergence_table.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -35,8 +36,15 @@ convergence_table analyse_convergence(const convergence_series& series,
                                           series.integrand, series.s, series.method);
     require(table.rows.empty() || cell->n != table.rows.back().n, "N", cell->n,
             "distinct N in a series (" + where + ")");
+    require(std::isnan(cell->error_envelope) || cell->error_envelope >= 0.0, "error_envelope",
+            cell->error_envelope, "a bound >= 0 on |error|, or NaN for none (" + where + ")");
+    require(std::isnan(cell->error_envelope) == std::isnan(series.cells.front().error_envelope),
+            "error_envelope", cell->error_envelope,
+            "an envelope on every cell of the series or on none (" + where + ")");
     convergence_row row;
     row.n = cell->n;
+    row.per_axis = cell->per_axis;
+    row.envelope = cell->error_envelope;
     try {
       row.stats = compute_cell_statistics(cell->repetitions, series.reference);
     } catch (const invalid_argument& e) {
@@ -79,7 +87,22 @@ convergence_table analyse_convergence(const convergence_series& series,
     }
   }
   table.fit = in_series([&] { return fit_power_law(fit_n, fit_error, options.confidence); });
-  table.verdict = judge_slope(table.fit, table.theory.slope, options.verdict_tolerance);
+  if (table.has_envelope()) {
+    std::vector<double> judged_error, allowed;
+    for (std::size_t k = 0; k < table.rows.size(); ++k) {
+      const convergence_row& row = table.rows[k];
+      if (row.floor) continue;
+      judged_error.push_back(errors[k]);
+      allowed.push_back(row.envelope + rounding_level(evaluations[k], scale, options.floor));
+      const double ratio =
+          row.envelope > 0.0 ? errors[k] / row.envelope : std::numeric_limits<double>::infinity();
+      table.envelope_ratio =
+          std::isnan(table.envelope_ratio) ? ratio : std::max(table.envelope_ratio, ratio);
+    }
+    table.verdict = judge_envelope(judged_error, allowed);
+  } else {
+    table.verdict = judge_slope(table.fit, table.theory.slope, options.verdict_tolerance);
+  }
   table.work_precision =
       in_series([&] { return work_precision(seconds, errors, options.error_targets); });
   return table;

@@ -1,4 +1,4 @@
-// Slope verdict; the rule and why is in slope_verdict.hpp.
+// Slope and envelope verdicts; the rules and why are in slope_verdict.hpp.
 #include "quadmc/analysis/slope_verdict.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -22,17 +22,23 @@ const char* to_string(slope_verdict verdict) noexcept {
       return "no_theory";
     case slope_verdict::no_fit:
       return "no_fit";
+    case slope_verdict::within_envelope:
+      return "within_envelope";
+    case slope_verdict::above_envelope:
+      return "above_envelope";
   }
   return "?";
 }
 
 slope_verdict parse_slope_verdict(std::string_view text) {
   for (slope_verdict v : {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
-                          slope_verdict::no_theory, slope_verdict::no_fit}) {
+                          slope_verdict::no_theory, slope_verdict::no_fit,
+                          slope_verdict::within_envelope, slope_verdict::above_envelope}) {
     if (text == to_string(v)) return v;
   }
-  throw invalid_argument("verdict", std::string(text),
-                         "one of agrees, steeper, shallower, no_theory, no_fit");
+  throw invalid_argument(
+      "verdict", std::string(text),
+      "one of agrees, steeper, shallower, no_theory, no_fit, within_envelope, above_envelope");
 }
 
 double verdict_band(const power_law_fit& fit, std::optional<double> theory,
@@ -50,6 +56,21 @@ slope_verdict judge_slope(const power_law_fit& fit, std::optional<double> theory
   const double band = verdict_band(fit, theory, relative_tolerance);
   if (std::abs(fit.slope - *theory) <= band) return slope_verdict::agrees;
   return fit.slope < *theory ? slope_verdict::steeper : slope_verdict::shallower;
+}
+
+slope_verdict judge_envelope(std::span<const double> errors, std::span<const double> envelopes) {
+  require(errors.size() == envelopes.size(), "envelopes.size()", envelopes.size(),
+          fmt::format("the size of errors ({})", errors.size()));
+  if (errors.empty()) return slope_verdict::no_fit;
+  bool within = true;
+  for (std::size_t k = 0; k < errors.size(); ++k) {
+    require(std::isfinite(errors[k]) && errors[k] >= 0.0, fmt::format("errors[{}]", k), errors[k],
+            "finite and >= 0");
+    // +inf is a valid (vacuous) bound; NaN is not a bound at all.
+    require(envelopes[k] >= 0.0, fmt::format("envelopes[{}]", k), envelopes[k], ">= 0, not NaN");
+    within = within && errors[k] <= envelopes[k];
+  }
+  return within ? slope_verdict::within_envelope : slope_verdict::above_envelope;
 }
 
 }  // namespace quadmc

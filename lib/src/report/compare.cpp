@@ -1,6 +1,7 @@
 // Comparison of two results folders; the regression rule is in compare.hpp.
 #include "quadmc/report/compare.hpp"
 
+#include "quadmc/analysis/slope_verdict.hpp"
 #include "quadmc/analysis/work_precision.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/summation.hpp"
@@ -61,7 +62,7 @@ std::string outcome_reason(const compare_result& r) {
   };
   std::vector<std::string> parts;
   if (r.regressions > 0) {
-    parts.push_back(fmt::format("{} slope regression{} (first: {})", r.regressions,
+    parts.push_back(fmt::format("{} regression{} (first: {})", r.regressions,
                                 r.regressions == 1 ? "" : "s",
                                 first([](const slope_comparison& c) { return c.regression; })));
   }
@@ -124,7 +125,16 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
       if (!c.theory && !std::isnan(ib->second.theory)) c.theory = ib->second.theory;
     }
     c.allowed = std::max(tolerance, std::hypot(c.half_width_a, c.half_width_b));
-    if (ia == slopes_a.end()) {
+    // An envelope verdict in B (slope_verdict.hpp) decides for itself: above its a-priori bound
+    // is a regression whatever the slope did; within it, the slope of a jump ladder is not a
+    // rate (it depends on where the jump falls in each grid), so a moved slope is reported only.
+    const std::string verdict_b = ib != slopes_b.end() ? ib->second.verdict : std::string();
+    const bool envelope_b = verdict_b == to_string(slope_verdict::within_envelope) ||
+                            verdict_b == to_string(slope_verdict::above_envelope);
+    if (verdict_b == to_string(slope_verdict::above_envelope)) {
+      c.regression = true;
+      c.status = "above envelope in B";
+    } else if (ia == slopes_a.end()) {
       c.status = "missing in A";
     } else if (ib == slopes_b.end()) {
       c.status = "missing in B";
@@ -137,8 +147,12 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
     } else {
       ++result.compared;
       const double loss = *c.slope_b - *c.slope_a;  // > 0: B converges more slowly
-      c.regression = loss > c.allowed;
-      c.status = c.regression ? "regression" : (loss < -c.allowed ? "steeper in B" : "ok");
+      if (envelope_b) {
+        c.status = std::abs(loss) > c.allowed ? "slope moved, within envelope in B" : "ok";
+      } else {
+        c.regression = loss > c.allowed;
+        c.status = c.regression ? "regression" : (loss < -c.allowed ? "steeper in B" : "ok");
+      }
     }
     if (c.regression) ++result.regressions;
     result.slopes.push_back(std::move(c));
@@ -187,8 +201,8 @@ std::string render_compare_markdown(const compare_result& r) {
   switch (r.outcome) {
     case compare_outcome::regression:
       out += fmt::format(
-          "**REGRESSION**: {} slope(s) of B are shallower than A's by more than "
-          "max({}, √(h_A² + h_B²)). {}.\n\n",
+          "**REGRESSION**: {} series of B are shallower than A's by more than "
+          "max({}, √(h_A² + h_B²)) or above their error envelope. {}.\n\n",
           r.regressions, r.tolerance, r.reason);
       break;
     case compare_outcome::incomparable:

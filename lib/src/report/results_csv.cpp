@@ -88,7 +88,8 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(c.seconds),
                                                number(c.evals_per_second),
                                                row.floor ? "1" : "0",
-                                               t.smoothness};
+                                               t.smoothness,
+                                               number(row.envelope)};
       out += csv_line(fields);
     }
   }
@@ -113,7 +114,8 @@ std::string slopes_csv_text(std::string_view scene, std::span<const convergence_
                                              t.smoothness,
                                              to_string(t.fit.status),
                                              number(t.floor.attainable_accuracy),
-                                             t.theory.note};
+                                             t.theory.note,
+                                             number(t.envelope_ratio)};
     out += csv_line(fields);
   }
   return out;
@@ -123,6 +125,7 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
   const csv_table table = read_csv_file(file);
   require_columns(table, convergence_csv_columns);
   const bool has_floor = table.has_column("floor");
+  const bool has_envelope = table.has_column("envelope");
   std::vector<convergence_record> out;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const record_reader f(table, r);
@@ -143,6 +146,7 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     rec.seconds = f.real("seconds");
     rec.evals_per_second = f.real("evals_per_second");
     rec.floor = has_floor && f.text("floor") == "1";
+    if (has_envelope) rec.envelope = f.real("envelope");
     out.push_back(std::move(rec));
   }
   return out;
@@ -166,6 +170,7 @@ std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file) {
     rec.verdict = f.text("verdict");
     rec.points_used = f.count("points_used");
     rec.floor_points = f.count("floor_points");
+    if (table.has_column("envelope_ratio")) rec.envelope_ratio = f.real("envelope_ratio");
     out.push_back(std::move(rec));
   }
   return out;

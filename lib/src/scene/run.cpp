@@ -8,6 +8,7 @@
 #include "quadmc/estimators/sampling_method.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/rules/gauss_legendre_rule.hpp"
+#include "quadmc/rules/jump_error_envelope.hpp"
 #include "quadmc/rules/midpoint_rule.hpp"
 #include "quadmc/rules/rectangle_rule.hpp"
 #include "quadmc/rules/romberg.hpp"
@@ -68,6 +69,31 @@ repetition_result run_rule(const method_spec& m, const any_integrand& f, const p
     return from_rule(romberg(f, options));
   }
   throw invalid_argument("method", std::string(name), "a deterministic rule of methods.hpp");
+}
+
+// The a-priori bound on this rule cell's |error| when the integrand has jumps it can describe
+// (rules/jump_error_envelope.hpp); NaN otherwise, and the series keeps its slope verdict.
+double rule_error_envelope(const method_spec& m, const integrand_info& info,
+                           const plan_cell& cell) {
+  const std::uint64_t n = cell.per_axis;
+  const std::string_view name = m.name;
+  std::optional<double> envelope;
+  if (name == "left_rectangle") {
+    envelope = jump_error_envelope(rectangle_rule<rectangle_side::left>{}, info, n);
+  } else if (name == "right_rectangle") {
+    envelope = jump_error_envelope(rectangle_rule<rectangle_side::right>{}, info, n);
+  } else if (name == "midpoint") {
+    envelope = jump_error_envelope(midpoint_rule{}, info, n);
+  } else if (name == "trapezoid") {
+    envelope = jump_error_envelope(trapezoid_rule{}, info, n);
+  } else if (name == "simpson") {
+    envelope = jump_error_envelope(simpson_rule{}, info, n);
+  } else if (name == "gauss_legendre") {
+    envelope = jump_error_envelope(gauss_legendre_rule(static_cast<unsigned>(m.m)), info, n);
+  } else if (name == "romberg" && std::has_single_bit(n)) {
+    envelope = romberg_jump_error_envelope(info, static_cast<unsigned>(std::countr_zero(n)));
+  }
+  return envelope.value_or(std::numeric_limits<double>::quiet_NaN());
 }
 
 point_set_kind point_set_of(const method_spec& m) {
@@ -161,14 +187,27 @@ run_output run_plan(const plan& p, const run_options& options) {
     convergence_series& series = out.series[it->second];
     auto same_n = std::find_if(series.cells.begin(), series.cells.end(),
                                [&](const convergence_cell& c) { return c.n == cell.nominal_N; });
+    const method_info* method = find_method(mspec.name);
+    require(method != nullptr, "method", mspec.name, "a name listed by `quadmc list`");
+    const bool rule = method->kind == method_kind::deterministic_rule;
+    const double envelope =
+        rule ? rule_error_envelope(mspec, info, cell) : std::numeric_limits<double>::quiet_NaN();
     if (same_n == series.cells.end()) {
-      series.cells.push_back(convergence_cell{cell.nominal_N, {}});
+      convergence_cell fresh;
+      fresh.n = cell.nominal_N;
+      fresh.per_axis = cell.per_axis;
+      fresh.error_envelope = envelope;
+      series.cells.push_back(std::move(fresh));
       same_n = std::prev(series.cells.end());
+    } else {
+      // Another instance of an ensemble: the cell's errors are the instances', so its bound is
+      // the largest of theirs; NaN (no bound) as soon as one instance has none (std::max keeps a
+      // NaN first argument).
+      same_n->error_envelope =
+          std::isnan(envelope) ? envelope : std::max(same_n->error_envelope, envelope);
     }
     convergence_cell& target = *same_n;
 
-    const method_info* method = find_method(mspec.name);
-    require(method != nullptr, "method", mspec.name, "a name listed by `quadmc list`");
     for (std::uint64_t r = 0; r < cell.repetitions; ++r) {
       const auto& sp = cell.stream_parts;
       const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
@@ -183,9 +222,8 @@ run_output run_plan(const plan& p, const run_options& options) {
       const auto t0 = clock::now();
       repetition_result result;
       try {
-        result = method->kind == method_kind::deterministic_rule
-                     ? run_rule(mspec, inst.function, cell, out.threads_allowed)
-                     : run_random(mspec, p, cell, stream, out.threads_allowed);
+        result = rule ? run_rule(mspec, inst.function, cell, out.threads_allowed)
+                      : run_random(mspec, p, cell, stream, out.threads_allowed);
       } catch (const std::exception& e) {
         throw run_error(fmt::format("{}: {}", where(), e.what()));
       }

@@ -20,8 +20,10 @@
 #include "quadmc/analysis/theoretical_rate.hpp"
 #include "quadmc/analysis/work_precision.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,11 @@ namespace quadmc {
 struct convergence_cell {
   std::uint64_t n = 0;  // the N the scene asked for (the plan's ladder value)
   std::vector<repetition_result> repetitions;
+  std::uint64_t per_axis = 0;  // rules: panels n per axis (the plan cell's); 0 otherwise
+  // An a-priori bound on |error| of every repetition (for an ensemble, the largest of its
+  // instances'): a rule's envelope on a jump (rules/jump_error_envelope.hpp). NaN = none. A series
+  // gives it for every cell or for none; with it the verdict is the envelope verdict.
+  double error_envelope = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Input: one series, as the runner assembles it.
@@ -59,7 +66,9 @@ struct analysis_options {
 struct convergence_row {
   std::uint64_t n = 0;
   cell_statistics stats;
-  bool floor = false;  // at the rounding floor: excluded from the fit
+  bool floor = false;  // at the rounding floor: excluded from the fit and the envelope verdict
+  std::uint64_t per_axis = 0;                                  // convergence_cell::per_axis
+  double envelope = std::numeric_limits<double>::quiet_NaN();  // convergence_cell::error_envelope
 };
 
 struct convergence_table {
@@ -73,15 +82,25 @@ struct convergence_table {
   power_law_fit fit;
   theoretical_rate theory;
   slope_verdict verdict = slope_verdict::no_fit;
+  // Envelope series: the largest error/envelope over the non-floor rows (≤ 1 within it, up to
+  // the rounding allowance); NaN for a slope-verdict series.
+  double envelope_ratio = std::numeric_limits<double>::quiet_NaN();
   std::vector<time_to_error> work_precision;
 
+  // The verdict is judged against the error envelope, not the slope.
+  bool has_envelope() const noexcept { return !rows.empty() && !std::isnan(rows.front().envelope); }
   std::size_t points_used() const noexcept { return fit.points; }
   std::size_t floor_points() const noexcept { return floor.count(); }
 };
 
-// Sorts the cells by N and analyses them. Throws invalid_argument for no cells, a cell without
-// repetitions, repeated N, evaluations that do not increase with N, an unknown smoothness class
-// or s = 0 (and whatever compute_cell_statistics rejects, naming the cell).
+// Sorts the cells by N and analyses them. The verdict: with error envelopes, the envelope verdict
+// (slope_verdict.hpp) over the non-floor rows, each judged as error ≤ envelope + ℓ(N), ℓ the
+// rounding level of rounding_floor.hpp at the same scale as the floor rule (the envelope is exact
+// arithmetic; ℓ covers the sums' rounding when the error attains the envelope); without, the
+// slope verdict. Throws invalid_argument for no cells, a cell without repetitions, repeated N,
+// evaluations that do not increase with N, envelopes on some cells but not all, a negative
+// envelope, an unknown smoothness class or s = 0 (and whatever compute_cell_statistics rejects,
+// naming the cell).
 convergence_table analyse_convergence(const convergence_series& series,
                                       const analysis_options& options = {});
 

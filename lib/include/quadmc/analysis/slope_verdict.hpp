@@ -1,24 +1,44 @@
-// Verdict of a fitted slope against the theoretical one: agrees, steeper or shallower.
+// Verdict of a convergence series: its fitted slope against the theoretical one (agrees, steeper,
+// shallower), or, for a deterministic rule on a jump, its errors against their a-priori envelope
+// (within_envelope, above_envelope).
 //
 // Use it for the verdict column of slopes.csv and README.md. Not for comparing two runs with each
 // other (report/compare.hpp does that with both intervals).
 //
-// Rule: agrees when |slope − theory| ≤ band, band = max(CI half-width, r·|theory|), r = 0.1.
+// Slope rule: agrees when |slope − theory| ≤ band, band = max(CI half-width, r·|theory|), r = 0.1.
 // The first term is "theory ∈ 95% CI" (the interval is symmetric). The second is a floor on the
 // band for ladders so clean that the CI is far narrower than the known pre-asymptotic bias of a
-// finite ladder (constants, log factors such as the (log N)^s of QMC, a jump's non-monotone error):
-// a fit within 10% of the theoretical exponent is read as agreement. Otherwise "steeper" when the
-// slope is more negative (faster than theory), "shallower" when less negative (slower).
+// finite ladder (constants, log factors such as the (log N)^s of QMC, the non-monotone error of a
+// jump across a curved or oblique surface): a fit within 10% of the theoretical exponent is read
+// as agreement. Otherwise "steeper" when the slope is more negative
+// (faster than theory), "shallower" when less negative (slower).
+//
+// Envelope rule: a rule's error on a jump depends on where the jump falls in its cell, not
+// monotonically on n, so theory bounds it (rules/jump_error_envelope.hpp) instead of predicting a
+// slope: the ladder of a jump whose position has a run of ones in binary can stay flat over
+// several doublings and fit "shallower" with every point under the bound. within_envelope when
+// every judged point's error is ≤ its envelope; above_envelope when one is not, which no
+// discretisation can explain: a wrong weight, node or reference (a bug). The fitted slope, its
+// interval and the theory slope are still reported beside it.
 #pragma once
 
 #include "quadmc/analysis/power_law_fit.hpp"
 
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace quadmc {
 
-enum class slope_verdict { agrees, steeper, shallower, no_theory, no_fit };
+enum class slope_verdict {
+  agrees,
+  steeper,
+  shallower,
+  no_theory,
+  no_fit,
+  within_envelope,
+  above_envelope
+};
 
 const char* to_string(slope_verdict verdict) noexcept;
 // Inverse of to_string; throws invalid_argument for another string.
@@ -30,5 +50,11 @@ double verdict_band(const power_law_fit& fit, std::optional<double> theory,
 
 slope_verdict judge_slope(const power_law_fit& fit, std::optional<double> theory,
                           double relative_tolerance = 0.1);
+
+// within_envelope when errors[k] ≤ envelopes[k] for every k, above_envelope otherwise; no_fit
+// when there is no point to judge. The caller chooses the points (the non-floor ones) and puts
+// any rounding allowance into the envelopes. Throws invalid_argument when the sizes differ, an
+// error is negative or not finite, or an envelope is NaN or negative.
+slope_verdict judge_envelope(std::span<const double> errors, std::span<const double> envelopes);
 
 }  // namespace quadmc

@@ -214,6 +214,14 @@ class step_1d {
     auto info =
         detail::info_1d("step", "1 if x ≥ c else 0", 0.0, 1.0, 1.0 - c_, smoothness::discontinuous);
     info.derivative_bound[0] = 1.0;
+    // Constant on both sides of the jump: M₀ = 1 and M₁…M₄ = 0 on the pieces. f(c) = 1 = f(c+).
+    // At c = 0 f ≡ 1 on [0, 1] (no jump at all); at c = 1 only the point value f(1) = 1 differs
+    // from the limit 0 from the left, a jump of size 1 at the end point.
+    piecewise_smooth_factor factor;
+    if (c_ > 0.0) factor.jumps.push_back({c_, 1.0});
+    factor.derivative_bound = {1.0, 0.0, 0.0, 0.0, 0.0};
+    factor.integral = 1.0 - c_;
+    info.separable_factors.push_back(std::move(factor));
     return info;
   }
   double c() const noexcept { return c_; }

@@ -515,6 +515,24 @@ class genz_discontinuous {
         a_.size(), exact_, "closed form Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ · Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ",
         smoothness::discontinuous);
     info.derivative_bound[0] = std::exp(peak_);
+    // f = Π_j g_j(x_j) with g_j(x) = e^{a_j x}, times 1{x ≤ u_j} on a cut axis. On a piece,
+    // |g_j⁽ᵏ⁾| = |a_j|ᵏ e^{a_j x} ≤ |a_j|ᵏ e^{max(0, a_j·upper)} (the exponential is monotone, the
+    // piece right of the cut is 0). The cut at u_j ∈ (0, 1) is a jump of size e^{a_j u_j}, with
+    // g_j(u_j) the left limit (x ≤ u_j is inside); at u_j = 1 there is none; at u_j = 0 only the
+    // point value g_j(0) = 1 differs from the limit 0 from the right (an end-point jump).
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double upper = std::min(threshold_[j], 1.0);
+      piecewise_smooth_factor factor;
+      if (upper < 1.0) factor.jumps.push_back({upper, std::exp(a_[j] * upper)});
+      const double top = std::exp(std::max(0.0, a_[j] * upper));
+      double power = 1.0;
+      for (std::size_t k = 0; k < factor.derivative_bound.size(); ++k) {
+        factor.derivative_bound[k] = power * top;
+        power *= std::abs(a_[j]);
+      }
+      factor.integral = a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j];
+      info.separable_factors.push_back(std::move(factor));
+    }
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }

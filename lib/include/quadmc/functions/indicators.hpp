@@ -75,6 +75,16 @@ class ball_indicator {
                         .reference = "closed form π^{s/2} r^s / Γ(s/2 + 1)",
                         .regularity = smoothness::discontinuous};
     info.derivative_bound[0] = 1.0;
+    // In 1D the ball is the interval [c − r, c + r]: jumps of size 1 at its ends, unless an end
+    // is an end of [0, 1] (f is 1 up to it there: no jump). f(c ± r) = 1, the inner limit.
+    if (center_.size() == 1) {
+      piecewise_smooth_factor factor;
+      if (center_[0] - radius_ > 0.0) factor.jumps.push_back({center_[0] - radius_, 1.0});
+      if (center_[0] + radius_ < 1.0) factor.jumps.push_back({center_[0] + radius_, 1.0});
+      factor.derivative_bound = {1.0, 0.0, 0.0, 0.0, 0.0};
+      factor.integral = info.exact;
+      info.separable_factors.push_back(std::move(factor));
+    }
     return info;
   }
   const std::vector<double>& center() const noexcept { return center_; }
@@ -175,6 +185,16 @@ class half_space_indicator {
                                  error_bound_),
         .regularity = smoothness::discontinuous};
     info.derivative_bound[0] = 1.0;
+    // In 1D, 1{w·x ≤ t} with 0 < t < w is a jump of size 1 at t/w (f(t/w) = 1, the left limit;
+    // where fl(w·x) switches differs from t/w by rounding only, and the envelopes do not depend
+    // on where the jump is).
+    if (w_.size() == 1) {
+      piecewise_smooth_factor factor;
+      factor.jumps.push_back({t_ / w_[0], 1.0});
+      factor.derivative_bound = {1.0, 0.0, 0.0, 0.0, 0.0};
+      factor.integral = exact_;
+      info.separable_factors.push_back(std::move(factor));
+    }
     return info;
   }
   double relative_error_bound() const noexcept { return error_bound_; }

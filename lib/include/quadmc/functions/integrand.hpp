@@ -9,8 +9,9 @@
 //
 // Metadata (integrand_info) travels with each function so that a convergence study never needs
 // to look a reference value up elsewhere: the exact integral, the smoothness class that decides
-// the theoretical rate, and derivative bounds M_k = max|f^(k)| that the a-priori error bounds of
-// the rules need.
+// the theoretical rate, derivative bounds M_k = max|f^(k)| that the a-priori error bounds of
+// the rules need, and for a discontinuous f that is a product of one-variable pieces its jumps
+// (separable_factors), from which a rule's error envelope is bounded.
 #pragma once
 
 #include "quadmc/core/errors.hpp"
@@ -67,6 +68,26 @@ struct box {
   }
 };
 
+// A jump of a function g of one variable at c = `location`: size = |g(c+) − g(c−)|. At an end
+// point of the interval, size = |g(c) − the limit from inside| (a single point value that differs:
+// rules with a node there see it). The value g(c) at an interior jump lies between the two
+// one-sided limits (it equals one of them for every family here): the jump envelopes of
+// rules/jump_error_envelope.hpp rely on that.
+struct jump_discontinuity {
+  double location = NAN;
+  double size = NAN;
+};
+
+// One factor g_j of a separable integrand f(x) = Π_j g_j(x_j): a function of coordinate j on
+// [domain.lower[j], domain.upper[j]], smooth between finitely many jumps (in 1D, f itself).
+struct piecewise_smooth_factor {
+  std::vector<jump_discontinuity> jumps{};  // ascending locations; empty: smooth on the interval
+  // M_k = sup |g⁽ᵏ⁾| over the open pieces between the jumps (one-sided limits at them), k = 0…4;
+  // empty where unknown. 0 for k ≥ 1 on a piecewise-constant factor.
+  std::array<std::optional<double>, 5> derivative_bound{};
+  double integral = NAN;  // ∫ g_j over its interval
+};
+
 struct integrand_info {
   std::string name;       // catalogue name as used in scenes, e.g. "genz_gaussian"
   std::string formula;    // one line, for `quadmc list` and the README catalogue
@@ -82,6 +103,12 @@ struct integrand_info {
   // stands for log x). It fixes the rate of every composite rule, O(n^−min(r, 1+α)), and whether
   // f has a finite variance (α > −1/2); NaN where unknown or not of that form.
   double singularity_exponent = NAN;
+  // For a discontinuous f that is a product of piecewise-smooth functions of one coordinate each
+  // (in 1D: f itself): one factor per axis, the jumps with their sizes and the derivative bounds
+  // of the smooth pieces, from which rules/jump_error_envelope.hpp bounds a rule's error on every
+  // grid. Empty where f is not of that form: jumps across curved or oblique surfaces (the disk and
+  // the half-space for s ≥ 2, the occluded irradiance) keep the slope verdict only.
+  std::vector<piecewise_smooth_factor> separable_factors{};
 
   std::size_t dimension() const noexcept { return domain.dimension(); }
 };

@@ -13,7 +13,10 @@
 // h = half-width of the 95% CI. The root-sum-square is the half-width of the difference of two
 // independent estimates (normal approximation), so two runs of the same method differing only in
 // noise pass; `tolerance` (default 0.1) is the smallest slope loss worth failing a build over on
-// clean deterministic ladders whose CIs are ~0.
+// clean deterministic ladders whose CIs are ~0. A series whose verdict in B is an envelope
+// verdict (slope_verdict.hpp: a rule on a jump) is judged by it instead: above_envelope in B is a
+// regression (an error no discretisation explains), and with within_envelope a moved slope is
+// reported, not failed (a jump ladder's slope is not a rate).
 //
 // Incomparable: a gate that passes because there was nothing to compare is a silent pass, so the
 // pair is incomparable (not "no regression") when a series of A is missing from B, when a series
@@ -42,7 +45,8 @@ struct slope_comparison {
   double allowed = 0.0;  // max(tolerance, √(h_A² + h_B²))
   bool regression = false;
   std::string status;  // "ok", "steeper in B", "regression", "missing in A", "missing in B",
-                       // "no fit in A", "no fit in B"
+                       // "no fit in A", "no fit in B", "above envelope in B",
+                       // "slope moved, within envelope in B"
 };
 
 struct error_comparison {

@@ -3,17 +3,22 @@
 //   convergence.csv  one row per cell (integrand, s, method, N):
 //     scene, integrand, s, method, N, evaluations, repetitions, reference, estimate_mean, rmse,
 //     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
-//     then added columns: floor, smoothness
+//     then added columns: floor, smoothness, envelope
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
-//     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note
+//     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
+//     envelope_ratio
 //
 // Contract: columns may be added at the end, never renamed or removed (compare reads old folders
 // with new code). Missing values (NaN: no std_error, no coverage for a deterministic rule, no
 // theory, no fit) are empty fields. `reference` has 17 significant digits (every double round
 // trips); other numbers use the shortest text that reads back to the same double. `evaluations`
 // is per repetition, `seconds` the total over repetitions (cell_statistics.hpp); `floor` is 1 for
-// a rounding-floor point (rounding_floor.hpp).
+// a rounding-floor point (rounding_floor.hpp). `envelope` is the cell's a-priori bound on |error|
+// (a rule on a jump, rules/jump_error_envelope.hpp), empty where there is none; `envelope_ratio`
+// the largest error/envelope over the series' non-floor cells, empty for a slope-verdict series.
+// `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
+// (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
 //
 // Use the readers for compare and tests; they accept added columns and throw naming the file and
 // the column when one of the contract's columns is missing.
@@ -25,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -36,13 +42,13 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 2> convergence_csv_added_columns = {"floor",
-                                                                                  "smoothness"};
+inline constexpr std::array<std::string_view, 3> convergence_csv_added_columns = {
+    "floor", "smoothness", "envelope"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
-inline constexpr std::array<std::string_view, 4> slopes_csv_added_columns = {
-    "smoothness", "fit_status", "attainable_accuracy", "theory_note"};
+inline constexpr std::array<std::string_view, 5> slopes_csv_added_columns = {
+    "smoothness", "fit_status", "attainable_accuracy", "theory_note", "envelope_ratio"};
 
 // Text of the two files (header line first).
 std::string convergence_csv_text(std::string_view scene, std::span<const convergence_table> tables);
@@ -66,6 +72,7 @@ struct convergence_record {
   double seconds = 0.0;
   double evals_per_second = 0.0;
   bool floor = false;  // false when the column is absent (a file from before it was added)
+  double envelope = std::numeric_limits<double>::quiet_NaN();  // NaN: empty or column absent
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.
@@ -81,6 +88,7 @@ struct slope_record {
   std::string verdict;
   std::size_t points_used = 0;
   std::size_t floor_points = 0;
+  double envelope_ratio = std::numeric_limits<double>::quiet_NaN();  // NaN: empty or absent
 };
 
 // Throw invalid_argument naming file, line and column for a missing column or unparsable value.
