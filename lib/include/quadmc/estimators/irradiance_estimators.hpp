@@ -13,9 +13,9 @@
 #include "quadmc/estimators/estimate.hpp"
 #include "quadmc/estimators/sample_mean.hpp"
 #include "quadmc/functions/irradiance.hpp"
+#include "quadmc/functions/orthonormal_basis.hpp"
 #include "quadmc/functions/vec3.hpp"
 #include "quadmc/sampling/hemisphere_warps.hpp"
-#include "quadmc/sampling/orthonormal_basis.hpp"
 #include "quadmc/sampling/point_set.hpp"
 #include "quadmc/sampling/rectangle_light_warp.hpp"
 

@@ -8,7 +8,7 @@
 //    hemisphere, z = √(1 − r²) = √(1 − U₁)). Use it for irradiance E = ∫L cos θ dω: the estimator
 //    becomes π·L, removing the cosine from the variance. Not for light that arrives near the
 //    horizon only.
-// To go from the local frame to world space around a normal n use orthonormal_basis.hpp.
+// To go from the local frame to world space around a normal n use functions/orthonormal_basis.hpp.
 #pragma once
 
 #include <algorithm>
