@@ -15,7 +15,8 @@
 //                     R = 1: one repetition has no spread to measure. A deterministic rule runs
 //                     once per N (DESIGN.md), so its |error| is exact and this field stays empty
 //                     rather than claiming a measured 0. 0 when every e_r = 0.
-//   coverage_95       fraction of r with |e_r| ≤ z·std_error_r, z = Φ⁻¹(0.975) ≈ 1.96: how often
+//   coverage_95       fraction of r with |e_r| ≤ z·std_error_r, z = Φ⁻¹(0.975) ≈ 1.96
+//                     (normal_quantile_975(), core/normal_quantile.hpp): how often
 //                     the CLT interval F ± 1.96 σ̂/√N (THEORY.md, lecture eq. 14) holds I. ≈ 0.95
 //                     for a method whose std_error is honest. NaN when any repetition has no
 //                     std_error (NaN): deterministic rules, methods without a variance estimate.
@@ -64,8 +65,5 @@ struct cell_statistics {
 // non-finite time, or a negative std_error (NaN std_error is allowed and means "none").
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference);
-
-// z_{0.975} = Φ⁻¹(0.975) = 1.959963984540054 (Boost.Math normal quantile).
-double normal_quantile_975();
 
 }  // namespace quadmc
