@@ -124,8 +124,8 @@ slope_fit jittered_slope(const F& f, const std::vector<std::uint64_t>& ks, int r
   return slope_fit(fit_slope(ns, rmse));
 }
 
-// Theory (Mitchell 1996; THEORY.md): RMSE ∝ N^(−1/2 − 1/s) = N^−1 for a smooth f in s = 2.
-// 9 values of N from 16 to 4096, 64 repetitions each: the RMSE of each N is known to ≈ 9%
+// Theory (docs/theory.md#jittered; [Mitchell 1996]): RMSE ∝ N^(−1/2 − 1/s) = N^−1 for a smooth f in
+// s = 2. 9 values of N from 16 to 4096, 64 repetitions each: the RMSE of each N is known to ≈ 9%
 // (relative SD of a root mean square of 64 squares ≈ 1/√(2·64)), which puts the slope's
 // standard error near 0.02. Tolerance ±0.12 around −1 (≈ 6 of those standard errors, and room
 // for the pre-asymptotic curvature at N = 16); the fitted 95% interval must exclude −1/2.

@@ -96,8 +96,8 @@ irradiance_setup side_setup(bool with_occluder) {
   return s;
 }
 
-// 1e-10 is the brief's bar: with every jump on a breakpoint, nested Gauss–Kronrod reaches ~1e-15
-// (measured errors are printed).
+// 1e-10 is the bar of docs/design.md#accuracy-targets: with every jump on a breakpoint, nested
+// Gauss–Kronrod reaches ~1e-15 (measured errors are printed).
 constexpr double tolerance = 1e-10;
 
 TEST(Irradiance, LambertAgreesWithBothFormsIntegratedNumerically) {

@@ -73,9 +73,10 @@ TEST(ExponentialWarp, SamplesFollowThePdf) {
   EXPECT_TRUE(r.passes()) << "χ² = " << r.statistic << " > " << r.critical;
 }
 
-// The lecture's last line, X = −U′/a, drops the logarithm: it returns values in (−1/a, 0],
+// The last line of [Ramamoorthi 2009, §3.1.2], X = −U′/a, drops the logarithm
+// (docs/theory.md#inversion): it returns values in (−1/a, 0],
 // outside the support. The correct inverse −ln(1 − U)/a maps U = 1 − e^(−a x) back to x.
-TEST(ExponentialWarp, KeepsTheLogarithmTheLectureDrops) {
+TEST(ExponentialWarp, KeepsTheLogarithm) {
   const exponential_warp w(2.0);
   for (double x : {0.0, 0.1, 1.0, 5.0}) {
     const double u = 1.0 - std::exp(-2.0 * x);
@@ -83,8 +84,8 @@ TEST(ExponentialWarp, KeepsTheLogarithmTheLectureDrops) {
     const double tol = 4 * 2.3e-16 * (1.0 / (2.0 * (1.0 - u)) + x);
     EXPECT_NEAR(w.sample(u), x, tol) << "x = " << x;
   }
-  const double lecture_form = -(1.0 - 0.5) / 2.0;  // −U′/a at U = 0.5
-  EXPECT_LT(lecture_form, 0.0);
+  const double dropped_logarithm = -(1.0 - 0.5) / 2.0;  // −U′/a at U = 0.5
+  EXPECT_LT(dropped_logarithm, 0.0);
   EXPECT_NEAR(w.sample(0.5), std::log(2.0) / 2.0, 1e-16);
   EXPECT_EQ(w.sample(0.0), 0.0);
   EXPECT_TRUE(std::isfinite(w.sample(0x1.fffffffffffffp-1)));

@@ -1,10 +1,12 @@
-// Confidence intervals for a Monte Carlo estimate (lecture §2.2.2).
+// Confidence intervals for a Monte Carlo estimate (docs/theory.md#confidence-intervals;
+// [Ramamoorthi 2009, §2.2.2]).
 //
 //  - clt_interval: F ± z·σ̂/√N with z = Φ⁻¹((1 + c)/2) (core/normal_quantile.hpp: z =
 //    normal_quantile_975() ≈ 1.96 for c = 0.95, the same bits). Asymptotic: its coverage is
 //    c only as N → ∞ and only if σ̂ estimates the estimator's standard deviation (not for
 //    unjittered points, whose std_error is NaN, giving a NaN interval).
-//  - chebyshev_interval: Chebyshev's inequality P(|F − I| ≥ √(V[Y]/(Nδ))) ≤ δ (lecture eq. 14).
+//  - chebyshev_interval: Chebyshev's inequality P(|F − I| ≥ √(V[Y]/(Nδ))) ≤ δ
+//    (docs/theory.md#confidence-intervals).
 //    Valid for any N when V[Y] is the true variance, and wide: 4.47σ/√N for δ = 0.05 against the
 //    CLT's 1.96σ/√N. With the estimated V̂[Y] it is no longer a strict bound.
 // Both use the estimate's own std_error (std_error = √(variance/N) for every estimator here).

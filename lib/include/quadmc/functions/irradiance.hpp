@@ -1,5 +1,5 @@
 // Irradiance from a rectangular Lambertian area light, optionally behind a rectangular occluder:
-// the rendering integrand of the lecture (§2.2.3, "Solid angle sampling and area sampling"),
+// the rendering integrand of [Ramamoorthi 2009, §2.2.3] (solid-angle and area sampling),
 // written two ways on [0,1]²:
 //   (i)  over the hemisphere of directions at x:  E = ∫_Ω L_i(x, ω) cosθ dω, with the uniform
 //        hemisphere map z = cosθ = u₁, φ = 2πu₂ in the local frame of n (Jacobian dω = 2π du);
@@ -19,8 +19,8 @@
 // plane (rejected: the shadow projection is only a convex polygon in that case).
 //
 // No-occluder setups cast no visibility ray at all: evaluate() picks a kernel templated on
-// whether there is an occluder once per batch, never per point (DESIGN.md "skip what a scene
-// doesn't need").
+// whether there is an occluder once per batch, never per point
+// (docs/design.md#skip-what-a-scene-does-not-need).
 #pragma once
 
 #include "quadmc/functions/integrand.hpp"
