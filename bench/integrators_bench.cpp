@@ -1,5 +1,6 @@
 // Throughput of every integrator on the six Genz integrands, s ∈ {1, 2, 4, 8}, beside the
-// hand-written scalar loop, and the peak memory of each method at N = 10^6 and 10^8 (issue 7).
+// hand-written scalar loop, and the peak memory of each method at N = 10^6 and 10^8
+// (docs/design.md#performance-targets).
 //
 // Use it for cost: evaluations per second (`evals_per_second`, a kIsIterationInvariantRate
 // counter over wall time) and the ratio to the scalar reference loop (`ratio_to_scalar_loop`),
@@ -37,8 +38,9 @@
 // on demand before the timed loop — best of 3 runs of 2^20 points timed with steady_clock — and
 // kept for the rest of the run, so a --benchmark_filter that leaves the scalar loop out still gets
 // the column. The scalar loop is single-threaded, so a threads:2 row's ratio includes its
-// parallel speed-up. The issue's targets read off this column: plain_mc ≥ 1.0 (one thread),
-// jittered and latin_hypercube ≥ 0.7 × plain_mc, tensor Simpson/trapezoid ≥ 2 × plain_mc.
+// parallel speed-up. The targets of docs/design.md#performance-targets read off this column:
+// plain_mc ≥ 1.0 (one thread), jittered and latin_hypercube ≥ 0.7 × plain_mc, tensor
+// Simpson/trapezoid ≥ 2 × plain_mc.
 //
 // peak_rss/<method>/iterations:1 (Genz Gaussian, s = 2, 2 threads): peak resident memory of a
 // fresh child process (this binary re-executed as `integrators_bench --peak-rss-child METHOD N`,
@@ -94,7 +96,8 @@ using namespace quadmc;
 constexpr std::uint64_t seed = 42;
 constexpr std::uint64_t timed_n = std::uint64_t{1} << 20;  // evaluations per iteration
 constexpr double min_time_seconds = 0.2;
-// The memory case (issue 7: "peak RSS at N = 10⁶ and 10⁸"): Genz Gaussian, s = 2, 2 threads.
+// The memory case (peak RSS at N = 10⁶ and 10⁸, docs/design.md#performance-targets): Genz
+// Gaussian, s = 2, 2 threads.
 constexpr std::size_t rss_dimension = 2;
 constexpr unsigned rss_threads = 2;
 constexpr std::uint64_t rss_small_n = 1'000'000;

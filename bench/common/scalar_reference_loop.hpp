@@ -1,6 +1,7 @@
 // The reference every throughput ratio is taken against: the single-thread loop a user writes by
 // hand when no library is at hand. xoshiro256+, s uniforms per point, the integrand inlined,
-// scalar, a plain running sum (issue 7's "hand-written single-thread loop").
+// scalar, a plain running sum (the hand-written single-thread loop of
+// docs/design.md#performance-targets).
 //
 // Use it as the 1.0 of the ratio_to_scalar_loop column, in both the peers program
 // (bench/peers/quadmc_peers) and the Google Benchmark binary (bench/integrators_bench). Not an

@@ -1,12 +1,12 @@
-// xoshiro256+ (Blackman & Vigna, "Scrambled linear pseudorandom number generators", ACM TOMS 47,
-// 2021; reference code prng.di.unimi.it/xoshiro256plus.c), the generator of the hand-written
-// reference loop that quadmc's plain Monte Carlo is measured against.
+// xoshiro256+ ([Blackman & Vigna 2021]; reference code prng.di.unimi.it/xoshiro256plus.c), the
+// generator of the hand-written reference loop that quadmc's plain Monte Carlo is measured against.
 //
 // Use it only in that loop: it is the fastest generator a user would plausibly write by hand for
 // doubles (one add, a few shifts and xors per 64 bits; the low bits are weak, which the top-53-bit
 // conversion below discards, as its authors advise). Not for the library: its state must be
 // advanced in order, so a sample cannot be regenerated alone and a parallel run would depend on
-// the schedule (DESIGN.md asks for counter-based streams, quadmc::philox_stream).
+// the schedule (docs/design.md#hot-path-contract asks for counter-based streams,
+// quadmc::philox_stream).
 #pragma once
 
 #include <cstdint>

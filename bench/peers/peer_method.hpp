@@ -4,7 +4,8 @@
 // Use it to put quadmc's estimators and rules beside GSL, Boost.Math, cubature and the
 // hand-written loop under one measuring loop (quadmc_peers.cpp). The std::function is called
 // once per run, never per sample, so it costs nothing measurable. Not a library interface:
-// quadmc's own kernels are templates (DESIGN.md "dispatch once, then inline").
+// quadmc's own kernels are templates (dispatch once, then inline:
+// docs/design.md#hot-path-contract).
 #pragma once
 
 #include <cstdint>

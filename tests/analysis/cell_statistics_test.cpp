@@ -39,11 +39,6 @@ TEST(CellStatistics, HandComputedFourRepetitions) {
   EXPECT_NEAR(c.seconds_per_repetition(), 0.5, 4 * eps);
 }
 
-TEST(CellStatistics, NormalQuantileIsTheTabulatedValue) {
-  // Φ⁻¹(0.975) = 1.959963984540054 (Abramowitz & Stegun table 26.5, to 16 digits).
-  EXPECT_NEAR(normal_quantile_975(), 1.959963984540054, 4 * eps);
-}
-
 TEST(CellStatistics, DeterministicRuleHasNoSpreadAndNoCoverage) {
   const std::vector<repetition_result> reps = {{0.75, nan, 17, 0.0}};
   const cell_statistics c = compute_cell_statistics(reps, 1.0);

@@ -136,7 +136,7 @@ TEST(RoundingFloor, LeavesCleanLaddersUnflagged) {
   for (std::size_t k = 0; k < n.size(); ++k) {
     power.push_back(1.0 / (n[k] * n[k]));
     // Monte Carlo-like RMSE with ±30% wobble, and a Newton–Cotes rule across a jump whose error
-    // is O(1/n) but not monotone in n (THEORY.md).
+    // is O(1/n) but not monotone in n (docs/theory.md#jumps).
     monte_carlo.push_back(0.3 / std::sqrt(n[k]) * (1.0 + 0.3 * std::sin(3.0 * k)));
     jump.push_back((1.0 + 0.9 * std::sin(static_cast<double>(k))) / n[k]);
   }

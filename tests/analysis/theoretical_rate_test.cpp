@@ -1,4 +1,4 @@
-// Tests for theoretical_rate.hpp against the rows of THEORY.md.
+// Tests for theoretical_rate.hpp against the rows of docs/theory.md#rate-table.
 #include "quadmc/analysis/theoretical_rate.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -11,7 +11,7 @@ namespace {
 constexpr double tight = 1e-15;
 
 TEST(TheoreticalRate, TensorNewtonCotesOnSmoothF) {
-  // THEORY.md: tensor product, n per axis, N = nˢ: O(N^(−r/s)), r = 1, 2, 4.
+  // docs/theory.md#tensor-products: n per axis, N = nˢ: O(N^(−r/s)), r = 1, 2, 4.
   EXPECT_NEAR(*theoretical_slope("midpoint", "smooth", 1).slope, -2.0, tight);
   EXPECT_NEAR(*theoretical_slope("trapezoid", "analytic", 3).slope, -2.0 / 3.0, tight);
   EXPECT_NEAR(*theoretical_slope("simpson", "smooth", 2).slope, -2.0, tight);
@@ -23,7 +23,8 @@ TEST(TheoreticalRate, TensorNewtonCotesOnSmoothF) {
 
 TEST(TheoreticalRate, RoughIntegrandsCapTheOrder) {
   // C⁰ kink: midpoint/trapezoid stay O(n⁻²), Simpson drops to O(n⁻²); jump: O(n⁻¹);
-  // √x: O(n^−1.5) for midpoint, trapezoid, Simpson (THEORY.md).
+  // √x: O(n^−1.5) for midpoint, trapezoid, Simpson (docs/theory.md#kinks, docs/theory.md#jumps,
+  // docs/theory.md#endpoint-singularities).
   EXPECT_NEAR(*theoretical_slope("simpson", "C0", 1).slope, -2.0, tight);
   EXPECT_NEAR(*theoretical_slope("simpson", "C0", 2).slope, -1.0, tight);
   EXPECT_NEAR(*theoretical_slope("midpoint", "C0", 1).slope, -2.0, tight);
@@ -37,7 +38,7 @@ TEST(TheoreticalRate, MonteCarloFamily) {
   EXPECT_NEAR(*theoretical_slope("plain_mc", "discontinuous", 7).slope, -0.5, tight);
   EXPECT_NEAR(*theoretical_slope("latin_hypercube", "smooth", 5).slope, -0.5, tight);
   EXPECT_NEAR(*theoretical_slope("importance", "analytic", 1).slope, -0.5, tight);
-  // Jittered: smooth −1/2 − 1/s, indicator −1/2 − 1/(2s) (Mitchell 1996; Pilleboue et al. 2015).
+  // Jittered: smooth −1/2 − 1/s, indicator −1/2 − 1/(2s) (docs/theory.md#jittered).
   EXPECT_NEAR(*theoretical_slope("jittered", "smooth", 2).slope, -1.0, tight);
   EXPECT_NEAR(*theoretical_slope("jittered", "smooth", 1).slope, -1.5, tight);
   EXPECT_NEAR(*theoretical_slope("jittered", "discontinuous", 2).slope, -0.75, tight);
@@ -80,7 +81,7 @@ TEST(TheoreticalRate, UnknownMethodHasNoEntryUnknownClassThrows) {
 }  // namespace quadmc
 
 TEST(TheoreticalRate, CompositeGaussLegendreWithKnownOrder) {
-  // m = 3 nodes per panel: order 2m = 6 on smooth f, N = (3n)^s (Davis & Rabinowitz §2.7).
+  // m = 3 nodes per panel: order 2m = 6 on smooth f, N = (3n)^s (docs/theory.md#gauss-legendre).
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "analytic", 1, 6).slope.value(),
                    -6.0);
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("gauss_legendre", "smooth", 2, 6).slope.value(), -3.0);
@@ -98,7 +99,7 @@ TEST(TheoreticalRate, IrradianceEstimatorsAreMonteCarlo) {
 }
 
 TEST(TheoreticalRate, EndpointSingularityExponentSetsTheRuleRate) {
-  // f ~ x^α: composite rules converge as n^−min(r, 1+α) (Davis & Rabinowitz §2.12).
+  // f ~ x^α: composite rules converge as n^−min(r, 1+α) (docs/theory.md#endpoint-singularities).
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("simpson", "singular", 1, 0, 0.5).slope.value(),
                    -1.5);  // √x
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("midpoint", "singular", 1, 0, -0.5).slope.value(),
@@ -114,7 +115,8 @@ TEST(TheoreticalRate, EndpointSingularityExponentSetsTheRuleRate) {
 }
 
 TEST(TheoreticalRate, LatinHypercubeInOneDimensionIsJittered) {
-  // One point per stratum in 1D: Stein's residual e = f − additive part is 0 (McKay et al. 1979).
+  // One point per stratum in 1D: Stein's residual e = f − additive part is 0
+  // (docs/theory.md#latin-hypercube).
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("latin_hypercube", "analytic", 1).slope.value(), -1.5);
   EXPECT_DOUBLE_EQ(quadmc::theoretical_slope("latin_hypercube", "analytic", 2).slope.value(), -0.5);
 }

@@ -3,9 +3,9 @@
 //
 // Use these to catch what unit tests cannot: the command's wiring of parse → plan → run →
 // analysis → files, its exit status and output folder handling. Not for rates or statistics of
-// single methods (tests/analysis, tests/estimators check those more tightly). Rates: THEORY.md
-// (composite midpoint/trapezoid O(n⁻²), Simpson O(n⁻⁴); plain MC RMSE σ/√N; jittered points on a
-// smooth f in s dimensions O(N^(−1/2−1/s)), Owen, "Monte Carlo theory, methods and examples" §10).
+// single methods (tests/analysis, tests/estimators check those more tightly). Rates:
+// docs/theory.md#rate-table (composite midpoint/trapezoid O(n⁻²), Simpson O(n⁻⁴); plain MC RMSE
+// σ/√N; jittered points on a smooth f in s dimensions O(N^(−1/2−1/s)), [Owen 2013, ch. 10]).
 #include "quadmc/analysis/slope_verdict.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_csv.hpp"

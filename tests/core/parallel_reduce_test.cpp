@@ -1,6 +1,7 @@
 // Tests for core/parallel_reduce.hpp: the result (and the error) must not depend on the number
-// of threads, because chunk results are folded strictly in chunk order (DESIGN.md, hot-path
-// contract). Equality here is bitwise, not within a tolerance: that is the promise.
+// of threads, because chunk results are folded strictly in chunk order
+// (docs/design.md#hot-path-contract). Equality here is bitwise, not within a tolerance: that is the
+// promise.
 #include "quadmc/core/parallel_reduce.hpp"
 
 #include <gtest/gtest.h>

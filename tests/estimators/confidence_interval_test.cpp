@@ -25,8 +25,8 @@ TEST(ConfidenceInterval, CltUsesTheNormalQuantile) {
   EXPECT_FALSE(ci.contains(11.0));
 }
 
-// Chebyshev (lecture eq. 14): half-width √(V[Y]/(Nδ)) = √(25/(100·0.05)) = √5.
-TEST(ConfidenceInterval, ChebyshevHalfWidthIsTheLecturesBound) {
+// Chebyshev (docs/theory.md#confidence-intervals): half-width √(V[Y]/(Nδ)) = √(25/(100·0.05)) = √5.
+TEST(ConfidenceInterval, ChebyshevHalfWidthIsTheBound) {
   const estimate e{10.0, 0.5, 25.0, 100};
   EXPECT_NEAR(chebyshev_interval(e, 0.05).half_width(), std::sqrt(5.0), 1e-15);
 }

@@ -36,8 +36,9 @@ struct decreasing_linear_warp {
   double pdf(std::span<const double> x) const { return 1.5 - x[0]; }
 };
 
-// Lecture §4.1: p ∝ f gives Y = f/p = e − 1 for every sample. To rounding: e^x and the pdf
-// e^x/(e−1) each carry a few ulps, so |Y − (e − 1)| ≤ 8ε(e − 1) and the variance ≤ that squared.
+// docs/theory.md#zero-variance: p ∝ f gives Y = f/p = e − 1 for every sample. To rounding: e^x and
+// the pdf e^x/(e−1) each carry a few ulps, so |Y − (e − 1)| ≤ 8ε(e − 1) and the variance ≤ that
+// squared.
 TEST(ImportanceSampling, DensityProportionalToFHasZeroVariance) {
   const truncated_exponential_warp w(1.0);
   const estimate e = importance_sampling(exp_on_unit, w, independent_points(1, 100000, 1, 1));

@@ -133,13 +133,12 @@ slope_fit jittered_slope(const F& f, const std::vector<std::uint64_t>& ks, int r
 // e^{−λc}·E e^{λS} and the same for −S, gives the false-alarm probabilities below. Both ladders
 // have Sxx ≈ 28.9, so sd S = √(ψ′(32)/(4·Sxx)) = 0.0166 and P(|S| ≥ 0.0746) ≤ 1e-4.
 
-// Theory (Mitchell 1996, "Consequences of stratified sampling in graphics"): RMSE ∝ N^(−1/2 − 1/s)
-// = N^−1 for a smooth f in s = 2. 9 values of N from 16 to 4096, 64 repetitions each. Exact σ_N
-// (cell variances of e^x·e^y in closed form, E_cell[g²] and E_cell[g]² per axis) has slope
-// −0.99938 over this ladder, a bias of 6e-4, so |slope + 1| ≤ 0.08 fails by chance with
-// probability ≤ 2.8e-5 (the stratum sums have negative excess kurtosis, ≈ −1.2/N, which only
-// narrows S). The band excludes plain MC's −1/2: jittering that gained nothing, or a pre-
-// asymptotic slope off by 0.1, fails.
+// Theory (docs/theory.md#jittered; [Mitchell 1996]): RMSE ∝ N^(−1/2 − 1/s) = N^−1 for a smooth f in
+// s = 2. 9 values of N from 16 to 4096, 64 repetitions each. Exact σ_N (cell variances of e^x·e^y
+// in closed form, E_cell[g²] and E_cell[g]² per axis) has slope −0.99938 over this ladder, a bias
+// of 6e-4, so |slope + 1| ≤ 0.08 fails by chance with probability ≤ 2.8e-5 (the stratum sums have
+// negative excess kurtosis, ≈ −1.2/N, which only narrows S). The band excludes plain MC's −1/2:
+// jittering that gained nothing, or a pre-asymptotic slope off by 0.1, fails.
 TEST(MonteCarlo, JitteredRmseSlopeOnASmoothIntegrandIsMinusOne) {
   const slope_fit fit = jittered_slope(exponential, {4, 6, 8, 12, 16, 24, 32, 48, 64}, 64, 11);
   std::cout << "[ measured ] jittered, e^(x+y): slope " << fit.slope << " ± " << fit.half_width

@@ -19,8 +19,9 @@ namespace {
 // one multiply per point instead of a Philox block, so 2³⁰ points fit in the test budget. Its
 // discrepancy is O(log N/N) (Kuipers & Niederreiter, "Uniform Distribution of Sequences", ch. 1,
 // Thm 3.3 for badly approximable α), so the empirical variance of y = c + σ√12·(u − ½) is
-// σ²·(1 ± O(log N/N)): σ² to ~1e-7 at N = 2³⁰, far inside the 1% of the issue.
-// The accumulator does not know the values are not random; what is tested is its arithmetic.
+// σ²·(1 ± O(log N/N)): σ² to ~1e-7 at N = 2³⁰, far inside the 1% of
+// docs/design.md#accuracy-targets. The accumulator does not know the values are not random; what is
+// tested is its arithmetic.
 class golden_weyl_points {
  public:
   explicit golden_weyl_points(std::uint64_t n) : n_(n) {}

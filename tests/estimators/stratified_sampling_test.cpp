@@ -40,8 +40,8 @@ bool variance_matches(double sample_variance, int runs, double v, double alpha) 
   return lo <= statistic && statistic <= hi;
 }
 
-// The blog seed's theorem, measured. f = x² on [0,1), k equal strata (vᵢ = 1/k), m points per
-// stratum, n = km:
+// The theorem of docs/theory.md#stratified-vs-random ([Stratified vs random 2023]), measured.
+// f = x² on [0,1), k equal strata (vᵢ = 1/k), m points per stratum, n = km:
 //   V_strat  = (1/n) Σ vᵢσᵢ²,
 //   V_random = (1/n) [Σ vᵢσᵢ² + Σ vᵢ(μᵢ − I)²]   (= Var(U²)/n = (1/5 − 1/9)/n, a check).
 // Observed variances over R = 2000 runs each must lie in their chi-square intervals, two-sided

@@ -20,8 +20,9 @@ using test::at;
 using test::gauss_kronrod;
 using test::relative_error;
 
-// Closed forms must agree with the independent integration to 1e-10 relative (the brief's bar;
-// GK at tolerance 1e-14 per level reaches ~1e-13 on these smooth pieces).
+// Closed forms must agree with the independent integration to 1e-10 relative
+// (docs/design.md#accuracy-targets; GK at tolerance 1e-14 per level reaches ~1e-13 on these smooth
+// pieces).
 constexpr double tolerance = 1e-10;
 
 // Each measured disagreement is printed for the report (grep "relative error vs").
@@ -209,7 +210,7 @@ TEST(Genz, NormalisationMakesTheSumOfAEqualTheDifficulty) {
   const genz_family families[] = {genz_family::oscillatory, genz_family::product_peak,
                                   genz_family::corner_peak, genz_family::gaussian,
                                   genz_family::continuous,  genz_family::discontinuous};
-  const double b[] = {9.0, 7.25, 1.85, 7.03, 20.4, 4.3};  // Genz 1987 / THEORY.md
+  const double b[] = {9.0, 7.25, 1.85, 7.03, 20.4, 4.3};  // docs/theory.md#genz-difficulty
   for (int k = 0; k < 6; ++k) {
     const auto p = genz_random_parameters(families[k], 7, 42);
     double sum = 0.0;
@@ -253,7 +254,7 @@ double corner_peak_100_digits(const std::vector<double>& a) {
   return static_cast<double>(sum / denominator);
 }
 
-// The same closed form summed in double or long double: what THEORY.md warns about.
+// The same closed form summed in double or long double: docs/theory.md#corner-peak-cancellation.
 template <class Real>
 double corner_peak_in(const std::vector<double>& a) {
   const std::size_t s = a.size();

@@ -28,7 +28,7 @@ std::array<vec3, 4> corners(const rectangle& r) {
 // outer u₂ integral is split at the azimuths of all corners and of the shadow's vertices (kinks).
 double hemisphere_reference(const irradiance_setup& setup) {
   const irradiance_hemisphere f(setup);
-  const detail::tangent_frame frame(setup.n);
+  const orthonormal_basis frame(setup.n);
   std::vector<std::array<vec3, 4>> rects = {corners(setup.light)};
   if (setup.occluder) rects.push_back(corners(*setup.occluder));
   std::vector<double> breaks;
@@ -96,8 +96,8 @@ irradiance_setup side_setup(bool with_occluder) {
   return s;
 }
 
-// 1e-10 is the brief's bar: with every jump on a breakpoint, nested Gauss–Kronrod reaches ~1e-15
-// (measured errors are printed).
+// 1e-10 is the bar of docs/design.md#accuracy-targets: with every jump on a breakpoint, nested
+// Gauss–Kronrod reaches ~1e-15 (measured errors are printed).
 constexpr double tolerance = 1e-10;
 
 TEST(Irradiance, LambertAgreesWithBothFormsIntegratedNumerically) {
@@ -161,7 +161,7 @@ TEST(Irradiance, IncidentRadianceAndVisibilityMatchTheIntegrands) {
     const irradiance_setup setup = default_irradiance_setup(occluded);
     const irradiance_hemisphere h(setup);
     const irradiance_area a(setup);
-    const detail::tangent_frame frame(setup.n);
+    const orthonormal_basis frame(setup.n);
     const philox_stream rng(7, 0);
     int lit = 0, blocked = 0;
     for (std::uint64_t i = 0; i < 2000; ++i) {

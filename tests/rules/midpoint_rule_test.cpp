@@ -44,8 +44,9 @@ TEST(MidpointRule, SecondOrderOnSmoothIntegrand) {
   EXPECT_NEAR(quadmc::testing::log_log_slope(ns, errors), -2.0, 0.05);
 }
 
-// Opposite signs, the trapezoid error about twice as large (THEORY.md pitfalls): for eˣ the ratio
-// (T − I)/(I − M) → 2 as h → 0; at n = 64 the O(h²) correction to the ratio is below 1e-3.
+// Opposite signs, the trapezoid error about twice as large (docs/theory.md#opposite-signs): for eˣ
+// the ratio (T − I)/(I − M) → 2 as h → 0; at n = 64 the O(h²) correction to the ratio is below
+// 1e-3.
 TEST(MidpointRule, ErrorIsMinusHalfTheTrapezoidError) {
   const auto f = [](double x) { return std::exp(x); };
   const double exact = std::expm1(1.0);

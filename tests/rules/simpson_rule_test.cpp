@@ -45,8 +45,9 @@ TEST(SimpsonRule, FourthOrderOnSmoothIntegrand) {
   EXPECT_NEAR(quadmc::testing::log_log_slope(ns, errors), -4.0, 0.1);
 }
 
-// S on 2n panels (spacing h) = (2·M + T)/3 with M, T on n panels of width 2h (THEORY.md
-// pitfalls). Both sides are rounded sums of ~2n terms of size ≤ e/n, so they agree to a few ε·e.
+// S on 2n panels (spacing h) = (2·M + T)/3 with M, T on n panels of width 2h
+// (docs/theory.md#opposite-signs). Both sides are rounded sums of ~2n terms of size ≤ e/n, so they
+// agree to a few ε·e.
 TEST(SimpsonRule, IsTheWeightedMeanOfMidpointAndTrapezoid) {
   const auto f = [](double x) { return std::exp(x); };
   for (std::uint64_t n : {1U, 3U, 16U, 100U}) {

@@ -285,10 +285,11 @@ double error_at(const R& rule, std::uint64_t n, quadmc::summation sum, unsigned 
 }
 
 // Compensated sums keep the error at a few ε·|I| (Higham §4.3: 2ε·Σ|x| + O(nε²), plus ε per
-// node a + w·t and per f): the issue's bound 100·ε·|I| has a wide margin. A naive left-to-right
-// sum of 10⁸ positive terms of ≈ 10⁻⁸ into a total ≈ 0.8 loses about half an ulp of the total
-// per add with a bias that does not average out (Higham §4.2): its error is orders of magnitude
-// above 100·ε·|I|, which the test asserts, together with "naive is worse than compensated".
+// node a + w·t and per f): the bound 100·ε·|I| of docs/design.md#accuracy-targets has a wide
+// margin. A naive left-to-right sum of 10⁸ positive terms of ≈ 10⁻⁸ into a total ≈ 0.8 loses about
+// half an ulp of the total per add with a bias that does not average out (Higham §4.2): its error
+// is orders of magnitude above 100·ε·|I|, which the test asserts, together with "naive is worse
+// than compensated".
 TEST(TensorProductSummation, CompensatedReachesEpsilonAtHundredMillionPanels) {
   using quadmc::summation;
   const std::uint64_t n = 100'000'000;

@@ -17,7 +17,7 @@ const method_info& method(std::string_view name) {
 }
 
 TEST(MethodCatalogue, NamesEveryMethodTheSceneFormatPromises) {
-  // The list of the issue (parse.hpp's reference block) plus the irradiance estimators.
+  // The list of parse.hpp's reference block plus the irradiance estimators.
   for (std::string_view name :
        {"left_rectangle", "right_rectangle", "midpoint", "trapezoid", "simpson", "gauss_legendre",
         "romberg", "plain_mc", "jittered", "unjittered", "padded_jittered", "latin_hypercube",
@@ -34,7 +34,7 @@ TEST(MethodCatalogue, NamesEveryMethodTheSceneFormatPromises) {
 }
 
 TEST(MethodCatalogue, KindsAndOrdersMatchTheTheoryTable) {
-  // THEORY.md: r = 1 rectangle, 2 midpoint/trapezoid, 4 Simpson.
+  // docs/theory.md#newton-cotes-errors: r = 1 rectangle, 2 midpoint/trapezoid, 4 Simpson.
   EXPECT_EQ(method("left_rectangle").order, 1);
   EXPECT_EQ(method("right_rectangle").order, 1);
   EXPECT_EQ(method("midpoint").order, 2);
@@ -77,7 +77,7 @@ TEST(IntegerRoot, ExactAroundEveryPerfectPowerForSUpTo8) {
 }
 
 TEST(LargestTensorGrid, NearPerfectCubes) {
-  // The issue's example: N = 4096 = 16^3 → n = 16 midpoint panels; N = 4095 → 15.
+  // Exact integer grids: N = 4096 = 16^3 → n = 16 midpoint panels; N = 4095 → 15.
   EXPECT_EQ(largest_tensor_grid(method("midpoint"), 4096, 3, 1)->panels, 16u);
   EXPECT_EQ(largest_tensor_grid(method("midpoint"), 4095, 3, 1)->panels, 15u);
   EXPECT_EQ(largest_tensor_grid(method("midpoint"), 4095, 3, 1)->evaluations, 3375u);

@@ -2,21 +2,15 @@
 #include "quadmc/analysis/cell_statistics.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/normal_quantile.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/core/welford.hpp"
-
-#include <boost/math/distributions/normal.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 namespace quadmc {
-
-double normal_quantile_975() {
-  static const double z = boost::math::quantile(boost::math::normal_distribution<double>(), 0.975);
-  return z;
-}
 
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference) {
@@ -52,7 +46,7 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   const double inverse_scale = 1.0 / scale;  // exact: a power of two ≥ 2^-1023
 
   const double count = static_cast<double>(repetitions.size());
-  const double z = normal_quantile_975();
+  constexpr double z = normal_quantile_975();
   neumaier_sum value_sum, squared_error_sum, abs_error_sum, seconds_sum;
   welford squared_error_spread;
   std::uint64_t evaluations = 0;

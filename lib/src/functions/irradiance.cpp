@@ -170,10 +170,7 @@ irradiance_setup default_irradiance_setup(bool with_occluder) {
 }
 
 irradiance_hemisphere::irradiance_hemisphere(irradiance_setup setup)
-    : setup_(std::move(setup)),
-      n_(setup_.n),
-      frame_(setup_.n),
-      exact_(irradiance_exact(setup_)) {  // validates
+    : setup_(std::move(setup)), frame_(setup_.n), exact_(irradiance_exact(setup_)) {  // validates
   light_ = detail::rectangle_frame(setup_.light);
   if (setup_.occluder) occluder_ = detail::rectangle_frame(*setup_.occluder);
 }

@@ -170,8 +170,8 @@ std::string render_results_markdown(const run_info& info,
   out += '\n';
 
   // The floor rule of rounding_floor.hpp, per series: the smallest error reached before rounding
-  // took over, absolute and relative to |I|, and where the floor began (issue 8: "reported as the
-  // attainable accuracy of each method").
+  // took over, absolute and relative to |I|, and where the floor began (reported as each method's
+  // attainable accuracy: docs/design.md#accuracy-targets, docs/theory.md#rounding-floor).
   out += "## Attainable accuracy\n\n";
   out +=
       "Smallest error before the rounding floor (rounding_floor.hpp), absolute and relative to "

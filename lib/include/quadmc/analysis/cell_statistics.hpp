@@ -1,24 +1,27 @@
 // Statistics of one cell of a convergence study: R repetitions of one (integrand, s, method, N)
 // measured against the integrand's reference value I.
 //
-// Use it to turn the repetitions of a cell into the numbers a convergence table shows (DESIGN.md,
-// "Estimates ──analyse──▶ ConvergenceTable"). Not for one estimator's own error bar: that is the
-// estimator's std_error σ̂/√N, computed from its samples, not from repetitions.
+// Use it to turn the repetitions of a cell into the numbers a convergence table shows
+// (docs/design.md#data-flow: estimates are analysed into a convergence table). Not for one
+// estimator's own error bar: that is the estimator's std_error σ̂/√N, computed from its samples,
+// not from repetitions.
 //
 // With errors e_r = v_r − I:
 //   rmse              √(Σe_r²/R): the error measure every slope of the suite is fitted to
-//                     (THEORY.md: "fitted slopes are of RMSE or |error|"); R = 1 gives |e|.
+//                     (docs/theory.md#conventions: slopes are of RMSE or |error|); R = 1 gives |e|.
 //   mean_abs_error    Σ|e_r|/R.
-//   std_error_of_rmse delta method (Casella & Berger, Statistical Inference, §5.5.4): with
+//   std_error_of_rmse delta method ([Casella & Berger, §5.5.4]): with
 //                     MSE = mean of e_r² and se(MSE) = sd(e_r²)/√R, d√m/dm = 1/(2√m) gives
 //                     se(RMSE) ≈ se(MSE)/(2·RMSE). NaN ("not estimated", an empty CSV field) for
 //                     R = 1: one repetition has no spread to measure. A deterministic rule runs
-//                     once per N (DESIGN.md), so its |error| is exact and this field stays empty
-//                     rather than claiming a measured 0. 0 when every e_r = 0.
-//   coverage_95       fraction of r with |e_r| ≤ z·std_error_r, z = Φ⁻¹(0.975) ≈ 1.96: how often
-//                     the CLT interval F ± 1.96 σ̂/√N (THEORY.md, lecture eq. 14) holds I. ≈ 0.95
-//                     for a method whose std_error is honest. NaN when any repetition has no
-//                     std_error (NaN): deterministic rules, methods without a variance estimate.
+//                     once per N (docs/design.md#skip-what-a-scene-does-not-need), so its |error|
+//                     is exact and this field stays empty rather than claiming a measured 0. 0 when
+//                     every e_r = 0.
+//   coverage_95       fraction of r with |e_r| ≤ z·std_error_r, z = Φ⁻¹(0.975) ≈ 1.96
+//                     (normal_quantile_975(), core/normal_quantile.hpp): how often
+//                     the CLT interval F ± 1.96 σ̂/√N (docs/theory.md#confidence-intervals) holds
+//                     I. ≈ 0.95 for a method whose std_error is honest. NaN when any repetition has
+//                     no std_error (NaN): deterministic rules, methods without a variance estimate.
 //   seconds           total over the R repetitions; evals_per_second = Σevaluations / Σseconds
 //                     (NaN when the clock read 0).
 // All sums are compensated (Neumaier); the spread of e_r² uses Welford's update.
@@ -43,7 +46,7 @@ struct repetition_result {
 struct cell_statistics {
   std::size_t repetitions = 0;
   // Evaluations of one repetition (mean over repetitions, rounded: rejection warps may differ);
-  // the N of THEORY.md ("N = total function evaluations") that slopes are fitted against.
+  // the N of docs/theory.md#conventions (N = evaluations) that slopes are fitted against.
   std::uint64_t evaluations = 0;
   std::uint64_t total_evaluations = 0;
   double estimate_mean = 0.0;
@@ -64,8 +67,5 @@ struct cell_statistics {
 // non-finite time, or a negative std_error (NaN std_error is allowed and means "none").
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference);
-
-// z_{0.975} = Φ⁻¹(0.975) = 1.959963984540054 (Boost.Math normal quantile).
-double normal_quantile_975();
 
 }  // namespace quadmc

@@ -1,14 +1,14 @@
 // The convergence table of one (integrand, s, method) series: every cell's statistics, the
 // rounding floor, the fitted slope with its interval, the theoretical slope, the verdict and the
-// work-precision row. The unit the report layer writes (DESIGN.md: "Estimates ──analyse──▶
-// ConvergenceTable per (integrand, method)").
+// work-precision row. The unit the report layer writes (docs/design.md#data-flow: one
+// convergence table per (integrand, method)).
 //
 // Use analyse_convergence once per series after the runner has all its cells. Not incremental:
 // the floor rule and the fit look at the whole ladder.
 //
 // The error of a cell is its RMSE over repetitions (|error| for one repetition), the x axis its
-// evaluations per repetition (THEORY.md: N = total function evaluations). Floor points, flagged by
-// rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
+// evaluations per repetition (docs/theory.md#conventions: N = evaluations). Floor points, flagged
+// by rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
 // fitted error is > 0). The floor scale is |reference|; when the reference is 0 it falls back to
 // the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table).
 #pragma once

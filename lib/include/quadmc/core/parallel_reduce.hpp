@@ -4,7 +4,7 @@
 // thread count). Threads take chunks in any order and write each result into its own slot; the
 // slots are then folded strictly left to right, chunk 0 first. Floating-point addition is not
 // associative, so this fixed fold order is what makes a run on 8 threads bitwise equal to a run
-// on 1 (DESIGN.md: "chunk results are combined in chunk order").
+// on 1 (docs/design.md#hot-path-contract: chunk results are folded in chunk order).
 //
 // Memory stays bounded for any N: chunks are processed in windows of at most `window` slots, each
 // window folded before the next starts. The fold order is the same as with one big window.

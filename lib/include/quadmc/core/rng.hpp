@@ -1,10 +1,10 @@
-// Counter-based random streams: Philox4x32-10 (Salmon et al., "Parallel random numbers: as easy
-// as 1, 2, 3", SC'11), from Debian's librandom123-dev.
+// Counter-based random streams: Philox4x32-10 ([Salmon et al. 2011 (Random123)]), from Debian's
+// librandom123-dev.
 //
 // Why counter-based: value number i of a stream is a pure function of (seed, stream, i), so any
 // sample can be regenerated alone, chunks can run on any thread in any order, and a parallel run
-// is bitwise equal to a serial one (DESIGN.md, hot-path contract). There is no state to advance,
-// share or lock.
+// is bitwise equal to a serial one (docs/design.md#hot-path-contract). There is no state to
+// advance, share or lock.
 //
 // Layout of one Philox call: key = seed (2 × 32 bits), counter = (block index: 64 bits,
 // stream id: 64 bits). One call yields 128 bits = two 64-bit words = two uniforms, so uniform
@@ -33,7 +33,7 @@ void philox_uniform_blocks(std::uint32_t key0, std::uint32_t key1, std::uint32_t
                            double* out);
 }  // namespace detail
 
-// SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014): a bijective 64-bit mixer, used to
+// SplitMix64's finaliser ([Steele, Lea & Flood 2014]): a bijective 64-bit mixer, used to
 // turn structured ids (integrand, method, N, repetition, …) into well-spread stream ids.
 constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;

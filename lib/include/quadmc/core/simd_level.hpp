@@ -1,6 +1,6 @@
 // Which instruction set the batched kernels (Philox blocks, vector exp/cos) run on: chosen at run
 // time, never at build time, so one binary built for baseline x86-64 uses AVX2 or AVX-512 where
-// the CPU has them (the "runtime dispatch, never -march=native").
+// the CPU has them (docs/design.md#hot-path-contract: run-time dispatch, never -march=native).
 //
 // What depends on the level:
 //  - Philox uniforms (core/rng.hpp): nothing but speed. Every level computes the same

@@ -1,10 +1,11 @@
-// Importance sampling: F = (1/N)Σ f(Xᵢ)/p(Xᵢ) with Xᵢ = warp(Uᵢ) (lecture eq. 10–12, §4.1).
+// Importance sampling: F = (1/N)Σ f(Xᵢ)/p(Xᵢ) with Xᵢ = warp(Uᵢ) (docs/theory.md#importance;
+// [Ramamoorthi 2009, §4.1]).
 //
 // Use it when a density p roughly proportional to |f| can be sampled: the variance is
-// (∫f²/p − I²)/N, zero when p ∝ f and f keeps one sign (lecture §4.1). A poor p can make it
-// larger than plain Monte Carlo (and infinite when p → 0 faster than f²), which the tests show.
-// Any point set can feed the warp (stratified u gives stratified X). Not when the warp's support
-// misses part of f's: the estimate is then biased, and we throw instead of returning it.
+// (∫f²/p − I²)/N, zero when p ∝ f and f keeps one sign (docs/theory.md#zero-variance). A poor p can
+// make it larger than plain Monte Carlo (and infinite when p → 0 faster than f²), which the tests
+// show. Any point set can feed the warp (stratified u gives stratified X). Not when the warp's
+// support misses part of f's: the estimate is then biased, and we throw instead of returning it.
 //
 // The warp's output must lie in the integrand's domain and its pdf must be a density with
 // respect to the measure f is integrated against (sampling/warp.hpp). No box volume enters.

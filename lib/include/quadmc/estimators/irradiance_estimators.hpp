@@ -1,21 +1,23 @@
-// The rendering estimators of lecture §2.2.3 for the irradiance E = ∫_Ω L_i(x, ω) cosθ dω at x
-// from a rectangular area light (functions/irradiance.hpp), each fed by any point set on [0,1)²:
+// The rendering estimators for the irradiance E = ∫_Ω L_i(x, ω) cosθ dω at x from a rectangular
+// area light (functions/irradiance.hpp; [Ramamoorthi 2009, §2.2.3]), each fed by any point set on
+// [0,1)² (docs/theory.md#irradiance-derivation):
 //
 //  - irradiance_uniform_hemisphere: ω uniform, p = 1/(2π): Y = 2π·L_i(ω)·cosθ.
 //  - irradiance_cosine_hemisphere: p = cosθ/π: Y = π·L_i(ω) (the cosine cancels).
 //  - irradiance_light_area: x' uniform on the light, p = 1/A per area, i.e. p_ω = r²/(A cosθ')
-//    per solid angle: Y = L·V(x, x')·cosθ·cosθ'/r²·A (lecture eq. 15).
+//    per solid angle: Y = L·V(x, x')·cosθ·cosθ'/r²·A (docs/theory.md#irradiance-derivation).
 // Use the light-area one for small or distant lights (every sample hits the light); the
 // hemisphere ones waste every direction that misses it, which is most of them for a small light.
-// A setup without occluder casts no visibility test (DESIGN.md "skip what a scene doesn't need").
+// A setup without occluder casts no visibility test
+// (docs/design.md#skip-what-a-scene-does-not-need).
 #pragma once
 
 #include "quadmc/estimators/estimate.hpp"
 #include "quadmc/estimators/sample_mean.hpp"
 #include "quadmc/functions/irradiance.hpp"
+#include "quadmc/functions/orthonormal_basis.hpp"
 #include "quadmc/functions/vec3.hpp"
 #include "quadmc/sampling/hemisphere_warps.hpp"
-#include "quadmc/sampling/orthonormal_basis.hpp"
 #include "quadmc/sampling/point_set.hpp"
 #include "quadmc/sampling/rectangle_light_warp.hpp"
 

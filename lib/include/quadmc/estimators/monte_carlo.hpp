@@ -1,9 +1,11 @@
-// Plain Monte Carlo over any point set: F = vol(box)·(1/N)Σ f(a + (b − a)∘Uᵢ) (lecture eq. 8).
+// Plain Monte Carlo over any point set: F = vol(box)·(1/N)Σ f(a + (b − a)∘Uᵢ)
+// (docs/theory.md#the-monte-carlo-estimator).
 //
-// Use it with independent_points for the textbook estimator (error σ/√N, lecture eq. 13), or
-// with jittered / unjittered / padded / Latin hypercube points for the same average over a better
-// spread point set; the error estimate follows the point set (point_set.hpp, variance_kind).
-// Not for integrands on unbounded domains (map them to a box first, or use importance sampling).
+// Use it with independent_points for the textbook estimator (error σ/√N,
+// docs/theory.md#plain-monte-carlo), or with jittered / unjittered / padded / Latin hypercube
+// points for the same average over a better spread point set; the error estimate follows the point
+// set (point_set.hpp, variance_kind). Not for integrands on unbounded domains (map them to a box
+// first, or use importance sampling).
 #pragma once
 
 #include "quadmc/estimators/estimate.hpp"

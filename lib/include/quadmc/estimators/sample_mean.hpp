@@ -5,18 +5,19 @@
 // points of [0,1)^s into values Y (f mapped to a box times its volume, f/p for importance
 // sampling, a radiance estimate for rendering). Not for deterministic rules (rules/).
 //
-// Why it looks like this (DESIGN.md hot-path contract):
+// Why it looks like this (docs/design.md#hot-path-contract):
 //  - Chunks of chunk_points = 12288 points (48 batches of 256), boundaries a function of N and the
 //    point set only, folded in chunk order by quadmc::parallel_reduce: bitwise identical results
 //    for any thread count. 12288 is a multiple of 3 so the triples of stratum_differences never
 //    straddle a chunk; for m points per stratum a chunk is a whole number of strata.
 //  - Statistics per batch of 256 values, then merged: the batch sum and the batch's Σ(y − ȳ)² by
 //    two passes (each with four interleaved partial sums, a fixed order the compiler can keep in
-//    vector registers), merged into the chunk by Chan, Golub & LeVeque's formula
+//    vector registers), merged into the chunk by the formula of [Chan, Golub & LeVeque]
 //    (core/welford.hpp); the batch sums are added with Neumaier summation, so the value's rounding
-//    error stays at the batch level (about 65ε·mean|Y| for 4 lanes of 64 terms, Higham §4.2) and
-//    does not grow with N (Boost's naive_monte_carlo explains why a plain running sum's εN error
-//    eventually exceeds σ/√N). Per-sample Welford updates cost a division each; this costs none.
+//    error stays at the batch level (about 65ε·mean|Y| for 4 lanes of 64 terms,
+//    [Higham 2002, §4.2]) and does not grow with N (Boost's naive_monte_carlo explains why a plain
+//    running sum's εN error eventually exceeds σ/√N). Per-sample Welford updates cost a division
+//    each; this costs none.
 //  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
 #pragma once
 

@@ -1,10 +1,11 @@
-// The stratified estimator of lecture §4.2: k^s equal strata of the integrand's box, m uniform
-// points in each (nᵢ = vᵢn with n = m·k^s), F = Σ vᵢFᵢ, and its own variance estimate
+// The stratified estimator ([Ramamoorthi 2009, §4.2]): k^s equal strata of the integrand's box, m
+// uniform points in each (nᵢ = vᵢn with n = m·k^s), F = Σ vᵢFᵢ, and its own variance estimate
 // V̂[F] = Σ vᵢ²σ̂ᵢ²/nᵢ from the per-stratum sample variances (needs m ≥ 2; with m = 1 the
 // second-difference estimate of jittered_points.hpp is used instead).
 //
-// Use it to measure the blog seed's theorem, V_strat = (1/n)Σvᵢσᵢ² ≤ V_random, or whenever N can
-// be m·k^s. Not for high s (k^s strata).
+// Use it to measure the theorem V_strat = (1/n)Σvᵢσᵢ² ≤ V_random
+// (docs/theory.md#stratified-vs-random; [Stratified vs random 2023]), or whenever N can be m·k^s.
+// Not for high s (k^s strata).
 #pragma once
 
 #include "quadmc/estimators/monte_carlo.hpp"

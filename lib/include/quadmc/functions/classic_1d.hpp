@@ -1,7 +1,7 @@
-// The classic one-dimensional test integrands of numerical-analysis textbooks (Burden & Faires,
-// "Numerical Analysis", §4.3–4.4; Davis & Rabinowitz, "Methods of Numerical Integration"), each
-// with its exact integral and the exact maxima M_k = max|f⁽ᵏ⁾| on its interval that the
-// Newton–Cotes error terms need (midpoint/trapezoid use M₂, Simpson M₄; THEORY.md).
+// The classic one-dimensional test integrands of numerical-analysis textbooks
+// ([Burden & Faires, §4.3–4.4]; [Davis & Rabinowitz]), each with its exact integral and the exact
+// maxima M_k = max|f⁽ᵏ⁾| on its interval that the Newton–Cotes error terms need (midpoint/trapezoid
+// use M₂, Simpson M₄; docs/theory.md#newton-cotes-errors).
 //
 //   catalogue name      f(x)              interval      smoothness     ∫
 //   poly                x⁵                [lo, hi]      analytic       (hi⁶ − lo⁶)/6
@@ -12,11 +12,11 @@
 //   abs_kink            |x − c|           [0, 1]        C⁰             (c² + (1 − c)²)/2
 //   step                1 if x ≥ c else 0 [0, 1]        discontinuous  1 − c
 //
-// Use them to reproduce the 1D rates of THEORY.md (O(h²) midpoint, O(h⁴) Simpson, O(n^−1.5) for
-// √x, O(n^−1) for a jump). x⁵ is the lowest monomial Simpson does not integrate exactly. Not for
-// multi-dimensional studies (dimension() is 1). Derivative bounds are exact maxima; a bound is
-// absent where the derivative is unbounded or undefined (√x from k = 1; the kink and the step
-// beyond the order they are smooth on either side of c, where f' or f'' is a Dirac).
+// Use them to reproduce the 1D rates of docs/theory.md#tensor-rules (O(h²) midpoint, O(h⁴) Simpson,
+// O(n^−1.5) for √x, O(n^−1) for a jump). x⁵ is the lowest monomial Simpson does not integrate
+// exactly. Not for multi-dimensional studies (dimension() is 1). Derivative bounds are exact
+// maxima; a bound is absent where the derivative is unbounded or undefined (√x from k = 1; the kink
+// and the step beyond the order they are smooth on either side of c, where f' or f'' is a Dirac).
 #pragma once
 
 #include "quadmc/core/errors.hpp"

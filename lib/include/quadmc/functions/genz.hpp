@@ -16,17 +16,18 @@
 // x₁ when s = 1); `cut` = {1, …, s} gives the every-coordinate convention of other collections.
 //
 // Corner peak accuracy: its closed form is an alternating sum over 2^s vertices that cancels
-// catastrophically (THEORY.md). Measured (tests/functions/genz_test.cpp, random weights with
-// Genz's Σa = 1.85, against 100-digit arithmetic): summed in double it errs 5.5e-12 relative at
-// s = 8, 2.2e-10 at s = 10, 8e-7 at s = 14, 1.6e-5 at s = 16; in long double 8e-15, 8e-14, 6e-10
-// and 1.5e-8. So it is summed in 50-digit arithmetic (inclusion_exclusion.hpp): exact to double
-// precision (≤ 2e-16 relative) for every s ≤ 14 measured against 100 digits; its rounding bound
-// is 7e-32 at s = 16 and 2e-27 at s = 20. The constructor still computes that bound and throws
-// unless it is ≤ 1e-10 relative (it fires only for extreme a, e.g. aᵢ = 1e-6 at s = 12). s > 20
-// is rejected for cost (2^s terms: ~1 s at s = 20 at -O2).
+// catastrophically (docs/theory.md#corner-peak-cancellation). Measured
+// (tests/functions/genz_test.cpp, random weights with Genz's Σa = 1.85, against 100-digit
+// arithmetic): summed in double it errs 5.5e-12 relative at s = 8, 2.2e-10 at s = 10, 8e-7 at
+// s = 14, 1.6e-5 at s = 16; in long double 8e-15, 8e-14, 6e-10 and 1.5e-8. So it is summed in
+// 50-digit arithmetic (inclusion_exclusion.hpp): exact to double precision (≤ 2e-16 relative) for
+// every s ≤ 14 measured against 100 digits; its rounding bound is 7e-32 at s = 16 and 2e-27 at
+// s = 20. The constructor still computes that bound and throws unless it is ≤ 1e-10 relative (it
+// fires only for extreme a, e.g. aᵢ = 1e-6 at s = 12). s > 20 is rejected for cost (2^s terms: ~1 s
+// at s = 20 at -O2).
 //
-// Difficulty normalisation (Genz 1987, used in many comparisons): aᵢ = b·wᵢ/Σw with
-// b = (9.0, 7.25, 1.85, 7.03, 20.4, 4.3) for the six families in the order above
+// Difficulty normalisation ([Genz 1987], used in many comparisons; docs/theory.md#genz-difficulty):
+// aᵢ = b·wᵢ/Σw with b = (9.0, 7.25, 1.85, 7.03, 20.4, 4.3) for the six families in the order above
 // (genz_normalise). genz_random_parameters draws w and u from a philox_stream.
 //
 // Use them for multi-dimensional convergence studies with known answers. Derivative bounds in

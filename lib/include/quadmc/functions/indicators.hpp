@@ -1,5 +1,5 @@
 // Indicator functions of regions of [0,1]^s with exact volumes: the discontinuous integrands of
-// geometric Monte Carlo (the "area of a disk" experiment of every MC lecture).
+// geometric Monte Carlo (the "area of a disk" experiment of every Monte Carlo course).
 //
 //   ball        1 if ‖x − c‖ ≤ r          volume π^{s/2} r^s / Γ(s/2 + 1)   (ball inside the cube)
 //   half_space  1 if Σ wᵢxᵢ ≤ t, wᵢ > 0   volume Σ_{v∈{0,1}^s} (−1)^{|v|} (t − w·v)₊^s / (s!·Π wᵢ)
@@ -11,8 +11,8 @@
 // = (1, 1) it is the triangle/pentagon below the line x₁ + x₂ = t.
 //
 // Use the ball for a curved boundary (infinite Hardy–Krause variation: Koksma–Hlawka says
-// nothing, THEORY.md), the half-space for a flat but oblique one; Genz's discontinuous family has
-// only axis-parallel jumps. Not for smooth-integrand rates: both jump.
+// nothing, docs/theory.md#curved-boundaries), the half-space for a flat but oblique one; Genz's
+// discontinuous family has only axis-parallel jumps. Not for smooth-integrand rates: both jump.
 #pragma once
 
 #include "quadmc/core/errors.hpp"

@@ -1,5 +1,5 @@
 // Irradiance from a rectangular Lambertian area light, optionally behind a rectangular occluder:
-// the rendering integrand of the lecture (§2.2.3, "Solid angle sampling and area sampling"),
+// the rendering integrand of [Ramamoorthi 2009, §2.2.3] (solid-angle and area sampling),
 // written two ways on [0,1]²:
 //   (i)  over the hemisphere of directions at x:  E = ∫_Ω L_i(x, ω) cosθ dω, with the uniform
 //        hemisphere map z = cosθ = u₁, φ = 2πu₂ in the local frame of n (Jacobian dω = 2π du);
@@ -19,11 +19,12 @@
 // plane (rejected: the shadow projection is only a convex polygon in that case).
 //
 // No-occluder setups cast no visibility ray at all: evaluate() picks a kernel templated on
-// whether there is an occluder once per batch, never per point (DESIGN.md "skip what a scene
-// doesn't need").
+// whether there is an occluder once per batch, never per point
+// (docs/design.md#skip-what-a-scene-does-not-need).
 #pragma once
 
 #include "quadmc/functions/integrand.hpp"
+#include "quadmc/functions/orthonormal_basis.hpp"
 #include "quadmc/functions/vec3.hpp"
 
 #include <algorithm>
@@ -123,19 +124,6 @@ struct rectangle_frame {
   }
 };
 
-// An orthonormal basis (t1, t2, n) around a unit n (Duff et al., "Building an orthonormal basis,
-// revisited", JCGT 6(1), 2017): branch on the sign only, no normalisation.
-struct tangent_frame {
-  vec3 t1, t2;
-  explicit tangent_frame(vec3 n) noexcept {
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z);
-    const double b = n.x * n.y * a;
-    t1 = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    t2 = {b, sign + n.y * n.y * a, -n.y};
-  }
-};
-
 }  // namespace detail
 
 // (i) f(u) = 2π·u₁·L_i(x, ω(u)) on [0,1]², name "irradiance_hemisphere". Discontinuous (the
@@ -163,7 +151,7 @@ class irradiance_hemisphere {
       const double z = x[2 * i];
       const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
       const double phi = two_pi * x[2 * i + 1];
-      const vec3 w = (r * std::cos(phi)) * frame_.t1 + (r * std::sin(phi)) * frame_.t2 + z * n_;
+      const vec3 w = frame_.to_world({r * std::cos(phi), r * std::sin(phi), z});
       bool lit = light_.hit(setup_.x, w, inf_);
       if constexpr (Occluded) lit &= !occluder_.hit(setup_.x, w, inf_);
       y[i] = lit ? two_pi * z * setup_.radiance : 0.0;
@@ -172,8 +160,7 @@ class irradiance_hemisphere {
 
   static constexpr double inf_ = std::numeric_limits<double>::infinity();
   irradiance_setup setup_;
-  vec3 n_;
-  detail::tangent_frame frame_;
+  orthonormal_basis frame_;
   detail::rectangle_frame light_, occluder_;
   double exact_;
 };

@@ -4,9 +4,9 @@
 // makes coordinate i important, a large one makes it nearly irrelevant (factor ≈ 1).
 //
 // Use it for a C⁰ integrand (kink at xᵢ = 1/2) with controllable effective dimension. Beware
-// (THEORY.md): a tensor midpoint/trapezoid rule with an even number of panels per axis puts the
-// kink on a node and is exact; use odd n to see the C⁰ rate. Default aᵢ = (i − 1)/2 (1-based), a
-// common choice that makes the first coordinates matter most.
+// (docs/theory.md#sobol-g-with-even-panels): a tensor midpoint/trapezoid rule with an even number
+// of panels per axis puts the kink on a node and is exact; use odd n to see the C⁰ rate. Default
+// aᵢ = (i − 1)/2 (1-based), a common choice that makes the first coordinates matter most.
 #pragma once
 
 #include "quadmc/core/errors.hpp"

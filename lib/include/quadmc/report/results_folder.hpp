@@ -16,8 +16,9 @@
 
 namespace quadmc {
 
-// Which files to write ("outputs not asked for are not produced", DESIGN.md). bench/plot.py
-// reads the CSV files, so a scene that wants plots needs csv = true.
+// Which files to write (outputs not asked for are not written:
+// docs/design.md#skip-what-a-scene-does-not-need). bench/plot.py reads the CSV files, so a scene
+// that wants plots needs csv = true.
 struct results_outputs {
   bool csv = true;       // convergence.csv and slopes.csv
   bool markdown = true;  // README.md

@@ -2,12 +2,13 @@
 // included.
 //
 // Q(f) = Π(b_j − a_j) · Σ_{k_1…k_s} w_{k_1}⋯w_{k_s} f(a_1 + (b_1 − a_1)t_{k_1}, …), the product of
-// a 1D rule with m nodes along each of the s axes, N = m^s evaluations (lecture seed 004 §1.2,
-// eq. 2). Use it for smooth integrands in a few dimensions; its error is O(N^(−r/s)) for a rule
-// of order r, so past s ≈ 4 Monte Carlo and QMC win (THEORY.md table: "curse of
-// dimensionality"), and a jump across a non-axis surface gives only O(N^(−1/s)).
+// a 1D rule with m nodes along each of the s axes, N = m^s evaluations
+// (docs/theory.md#tensor-products; [Ramamoorthi 2009, §1.2]). Use it for smooth integrands in a few
+// dimensions; its error is O(N^(−r/s)) for a rule of order r, so past s ≈ 4 Monte Carlo and QMC win
+// (the curse of dimensionality, docs/theory.md#tensor-products), and a jump across a non-axis
+// surface gives only O(N^(−1/s)) (docs/theory.md#jumps).
 //
-// How it runs (DESIGN.md hot-path contract):
+// How it runs (docs/design.md#hot-path-contract):
 //  - the grid is never stored: a chunk decodes its first flat index into a multi-index (last
 //    axis fastest) and walks on like an odometer, recomputing a node only when its axis moves;
 //  - points go to the integrand in batches of 256 (row-major x[i*s + j]); each batch's terms

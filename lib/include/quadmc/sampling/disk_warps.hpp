@@ -1,13 +1,15 @@
-// Points in the unit disk from two uniforms (lecture §3.1.3; PBRT 3rd ed. §13.6.2).
+// Points in the unit disk from two uniforms (docs/theory.md#inversion; [Ramamoorthi 2009, §3.1.3];
+// [Pharr et al. 2016, §13.6.2]).
 //
 //  - uniform_disk_warp: r = √U₁, θ = 2πU₂. The area element is r dr dθ, so P(r) = r² and
 //    inversion gives r = √U₁; density 1/π with respect to area. Use it for area lights shaped
 //    like disks, lens samples, or as the first step of cosine-weighted hemisphere sampling.
 //  - naive_disk_warp: r = U₁, θ = 2πU₂. DELIBERATELY WRONG, kept so that a plot and a test can
-//    show the clumping at the centre the lecture warns of: its true density is 1/(2πr), not the
-//    1/π its pdf() claims, so an estimator using it is biased. Never use it for estimation.
-// Neither preserves stratification perfectly (Shirley & Chiu's concentric map does better); the
-// polar map is the lecture's and is enough for the convergence study.
+//    show the clumping at the centre [Ramamoorthi 2009, §3.1.3] warns of: its true density is
+//    1/(2πr), not the 1/π its pdf() claims, so an estimator using it is biased. Never estimate
+//    with it.
+// Neither preserves stratification perfectly (the concentric map of [Shirley & Chiu 1997] does
+// better); the polar map is the one of [Ramamoorthi 2009] and enough for the convergence study.
 #pragma once
 
 #include <cmath>

@@ -1,14 +1,15 @@
-// Directions on the upper hemisphere (z ≥ 0, z-up local frame) from two uniforms (lecture
-// §2.2.3; PBRT 3rd ed. §13.6.1 and §13.6.3). Densities are with respect to solid angle.
+// Directions on the upper hemisphere (z ≥ 0, z-up local frame) from two uniforms
+// (docs/theory.md#hemisphere-sampling; [Pharr et al. 2016, §13.6.1 and §13.6.3]). Densities are
+// with respect to solid angle.
 //
 //  - uniform_hemisphere_warp: z = U₁, φ = 2πU₂, p = 1/(2π). Since dω = dz dφ (Archimedes),
 //    uniform z and φ give uniform directions. Use it when nothing is known about the incident
 //    light; it wastes samples near the horizon where cos θ is small.
-//  - cosine_hemisphere_warp: p = cos θ/π (Malley's method: a uniform disk point lifted to the
-//    hemisphere, z = √(1 − r²) = √(1 − U₁)). Use it for irradiance E = ∫L cos θ dω: the estimator
-//    becomes π·L, removing the cosine from the variance. Not for light that arrives near the
-//    horizon only.
-// To go from the local frame to world space around a normal n use orthonormal_basis.hpp.
+//  - cosine_hemisphere_warp: p = cos θ/π ([Malley 1988]'s method: a uniform disk point lifted to
+//    the hemisphere, z = √(1 − r²) = √(1 − U₁)). Use it for irradiance E = ∫L cos θ dω: the
+//    estimator becomes π·L, removing the cosine from the variance. Not for light that arrives near
+//    the horizon only.
+// To go from the local frame to world space around a normal n use functions/orthonormal_basis.hpp.
 #pragma once
 
 #include <algorithm>

@@ -1,8 +1,9 @@
-// Independent uniform points in [0,1)^s: plain Monte Carlo (lecture §2.2.1, eq. 8).
+// Independent uniform points in [0,1)^s: plain Monte Carlo (docs/theory.md#plain-monte-carlo).
 //
 // Use it as the baseline every other point set is measured against, and where nothing is known
-// about the integrand. Its error is σ/√N in any dimension (lecture eq. 13); for smooth integrands
-// in low dimension, jittered or Latin hypercube points converge faster.
+// about the integrand. Its error is σ/√N in any dimension
+// (docs/theory.md#the-monte-carlo-estimator); for smooth integrands in low dimension, jittered or
+// Latin hypercube points converge faster.
 #pragma once
 
 #include "quadmc/core/rng.hpp"

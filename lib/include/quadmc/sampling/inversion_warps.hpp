@@ -1,18 +1,20 @@
-// One-dimensional warps by inversion of the CDF, X = P⁻¹(U) (lecture §3.1).
+// One-dimensional warps by inversion of the CDF, X = P⁻¹(U) (docs/theory.md#inversion;
+// [Ramamoorthi 2009, §3.1]).
 //
-// Use them to importance-sample integrands shaped like xⁿ on [0,1] (Blinn microfacet lobes,
-// lecture §3.1.1) or like e^(−ax) on [0,∞) (free paths in participating media, §3.1.2). Not for
+// Use them to importance-sample integrands shaped like xⁿ on [0,1] (Blinn microfacet lobes)
+// or like e^(−ax) on [0,∞) (free paths in participating media). Not for
 // densities without a closed-form inverse CDF (use rejection, or tabulate).
 //
 //  - power_warp: p(x) = (n+1)xⁿ on [0,1], P(x) = x^(n+1), X = U^(1/(n+1)); any real n > −1.
 //  - exponential_warp: p(x) = a·e^(−ax) on [0,∞), P(x) = 1 − e^(−ax), X = −ln(1−U)/a.
-//    The lecture's last line simplifies to "X = −U′/a", dropping the logarithm; that is wrong
-//    (it yields values in (−1/a, 0]); the correct form keeps it, −ln(U′)/a with U′ = 1 − U.
+//    [Ramamoorthi 2009, §3.1.2] ends by simplifying to "X = −U′/a", dropping the logarithm; that is
+//    wrong (it yields values in (−1/a, 0]); the correct form keeps it, −ln(U′)/a with U′ = 1 − U.
 //    We use −log1p(−U)/a: U ∈ [0,1) so 1 − U ∈ (0,1] and the log is finite (U = 0 gives X = 0),
 //    and log1p keeps full relative accuracy for small U, where X ≈ U/a.
 //  - truncated_exponential_warp: p(x) = λe^(λx)/(e^λ − 1) on [0,1], λ ≠ 0,
 //    P(x) = (e^(λx) − 1)/(e^λ − 1), X = log1p(U·expm1(λ))/λ (expm1/log1p: no cancellation for
-//    small λ). With λ = 1 it is p ∝ eˣ, the zero-variance density for ∫₀¹eˣdx (lecture §4.1).
+//    small λ). With λ = 1 it is p ∝ eˣ, the zero-variance density for ∫₀¹eˣdx
+//    (docs/theory.md#zero-variance).
 // All densities are with respect to length on the real line.
 #pragma once
 

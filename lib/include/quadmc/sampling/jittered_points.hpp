@@ -1,11 +1,14 @@
-// Jittered (stratified) points: k^s equal strata, m uniform points in each (PBRT 3rd ed. §7.3,
-// the StratifiedSampler with jitter; lecture §4.2 with nᵢ = vᵢN).
+// Jittered (stratified) points: k^s equal strata, m uniform points in each
+// ([Pharr et al. 2016, §7.3], the StratifiedSampler with jitter; [Ramamoorthi 2009, §4.2] with
+// nᵢ = vᵢN).
 //
-// Use it for smooth integrands in low dimension: the RMSE falls as N^(−1/2−1/s) (Mitchell 1996;
-// Pilleboue et al. 2015), N^(−1/2−1/(2s)) for an indicator of a smooth region, and the variance
-// never exceeds plain Monte Carlo's (the blog seed: (1/N)Σvᵢσᵢ² ≤ (1/N)[Σvᵢσᵢ² + Σvᵢ(μᵢ−I)²]).
-// Not for high s: N must be m·k^s (the curse of dimensionality, PBRT §7.3) — use padded jittered
-// or Latin hypercube points there. N that is not k^s is rejected (see stratum_grid.hpp).
+// Use it for smooth integrands in low dimension: the RMSE falls as N^(−1/2−1/s), N^(−1/2−1/(2s))
+// for an indicator of a smooth region (docs/theory.md#jittered-variance; [Mitchell 1996],
+// [Pilleboue et al. 2015]), and the variance never exceeds plain Monte Carlo's:
+// (1/N)Σvᵢσᵢ² ≤ (1/N)[Σvᵢσᵢ² + Σvᵢ(μᵢ−I)²] (docs/theory.md#stratified-vs-random).
+// Not for high s: N must be m·k^s (the curse of dimensionality, [Pharr et al. 2016, §7.3]) — use
+// padded jittered or Latin hypercube points there. N that is not k^s is rejected (see
+// stratum_grid.hpp).
 //
 // Layout: point i lies in stratum i / m (row-major, last axis fastest), so points of one stratum
 // are consecutive and an estimator sees them together. Coordinate j is (cell_j + u)/k with u
@@ -36,7 +39,7 @@ class jittered_points {
   jittered_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
       : jittered_points(stratum_grid::for_size(dimension, n), 1, seed, stream) {}
 
-  // k^s strata with m points each (the lecture's stratified estimator, nᵢ = m for all i).
+  // k^s strata with m points each (the stratified estimator, nᵢ = m for all i).
   jittered_points(stratum_grid grid, std::uint64_t points_per_stratum, std::uint64_t seed,
                   std::uint64_t stream)
       : grid_(grid), m_(points_per_stratum), rng_(seed, stream) {

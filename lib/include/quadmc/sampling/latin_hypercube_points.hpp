@@ -1,9 +1,9 @@
 // Latin hypercube points: any N, any s; along every axis each of the N equal rows holds exactly
-// one point (McKay, Beckman & Conover, Technometrics 21, 1979; PBRT 3rd ed. §7.3).
+// one point ([McKay et al. 1979]; [Pharr et al. 2016, §7.3]; docs/theory.md#latin-hypercube).
 //
 // Use it when N cannot be k^s or s is too high to stratify the cube: it removes the additive part
-// of f from the error, Var = (1/N)∫e² + o(1/N) with e = f − additive part (Stein 1987), and its
-// variance never exceeds σ²/(N − 1) (Owen 1997). Not a faster rate in general (still N^−½), and
+// of f from the error, Var = (1/N)∫e² + o(1/N) with e = f − additive part ([Stein 1987]), and its
+// variance never exceeds σ²/(N − 1) ([Owen 1997]). Not a faster rate in general (still N^−½), and
 // for an f dominated by interactions it is no better than plain Monte Carlo.
 //
 // Coordinate j of point i is (π_j(i) + u)/N, with π_j an independent random permutation per axis

@@ -1,6 +1,7 @@
 // Padded jittered points: 2D (and, for odd s, one 1D) stratified patterns over groups of
-// dimensions, randomly associated across groups (PBRT 3rd ed. §7.3, "padding"; Owen's Latin
-// supercube sampling, ACM TOMACS 8, 1998, is the same construction with any component sets).
+// dimensions, randomly associated across groups ([Pharr et al. 2016, §7.3], "padding"; the Latin
+// supercube sampling of [Owen 1998] is the same construction with any component sets;
+// docs/theory.md#padded-jittered).
 //
 // Use it when s is too high for k^s strata but the integrand's important interactions are
 // between pairs of coordinates (dimensions 2g and 2g+1 form group g): each group's projection is

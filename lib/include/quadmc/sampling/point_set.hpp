@@ -4,7 +4,7 @@
 // point_set, so independent, stratified, padded and Latin hypercube points share one kernel.
 // Not for warped samples (sampling/warp.hpp maps a point of [0,1)^s to a domain and a pdf).
 //
-// Contract (the hot-path contract of DESIGN.md):
+// Contract (docs/design.md#hot-path-contract):
 //  - generate(first, out) writes points [first, first + out.size()/s) row-major into out,
 //    out[i*s + j] = coordinate j of point first + i, every coordinate in [0, 1).
 //  - A point is a pure function of (the set's parameters, seed, stream, point index): batches
@@ -16,7 +16,7 @@
 //
 // A point set also says how an estimator can estimate its own error from one run
 // (variance_structure), because the textbook σ̂²/N is right for independent points only:
-// stratified points have a smaller variance (Veach thesis eq. 2.26; the blog seed), and a
+// stratified points have a smaller variance (docs/theory.md#stratified-vs-random), and a
 // grid of centres has none that one run can see.
 #pragma once
 
@@ -31,23 +31,24 @@ namespace quadmc {
 
 // How the sampling error of a mean over the points can be estimated from the points themselves.
 enum class variance_kind {
-  // Independent points: V̂[F] = σ̂²/N with the sample variance σ̂² (lecture eq. 13).
+  // Independent points: V̂[F] = σ̂²/N with the sample variance σ̂²
+  // (docs/theory.md#the-monte-carlo-estimator).
   independent,
   // `group` ≥ 2 consecutive points per equal-volume stratum (K = N/group strata): the stratified
-  // estimator's own estimate V̂[F] = Σ vᵢ²σ̂ᵢ²/nᵢ = Σ σ̂ᵢ²/(K²·group) (lecture §4.2).
+  // estimator's own estimate V̂[F] = Σ vᵢ²σ̂ᵢ²/nᵢ = Σ σ̂ᵢ²/(K²·group)
+  // (docs/theory.md#stratified-vs-random).
   within_strata,
   // One point per stratum, strata in row-major order with rows of `group` strata along the last
   // axis: σᵢ² cannot be estimated from one point, so triples of neighbouring strata in a row give
   // (a − 2b + c)²/6, whose mean is (σa² + 4σb² + σc²)/6 + (μa − 2μb + μc)²/6. Second differences
   // cancel the linear trend of a smooth f across strata (the bias is O(h⁴) against σ² = O(h²));
   // at a discontinuity the bias is positive (conservative). The successive-difference estimators
-  // of systematic sampling, Wolter, "Introduction to Variance Estimation" (2nd ed.), ch. 8.
+  // of systematic sampling ([Wolter, ch. 8]; docs/theory.md#jittered-error-estimate).
   stratum_differences,
   // Dependent points whose variance has no unbiased one-run estimate (Latin hypercube, padded):
   // σ̂²/N is reported. For Latin hypercube it is an upper bound up to N/(N − 1): V_LHS ≤
-  // σ²/(N − 1) (Owen, "Monte Carlo variance of scrambled net quadrature", SIAM J. Numer. Anal.
-  // 34, 1997). For padded jittered points it is an approximate upper bound (each group is
-  // stratified, which never increases variance under proportional allocation).
+  // σ²/(N − 1) ([Owen 1997]). For padded jittered points it is an approximate upper bound (each
+  // group is stratified, which never increases variance under proportional allocation).
   independent_bound,
   // No one-run error estimate exists: stratum centres (deterministic, or all shifted by one
   // shared random vector). NaN is reported, never a made-up number.

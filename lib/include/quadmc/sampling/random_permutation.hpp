@@ -5,14 +5,13 @@
 // would cost 8N bytes per dimension and tie a point to the batch that built the table. Not a
 // cryptographic permutation, and not for n > 2^62 (point sets never ask for more).
 //
-// Method (the idea of Kensler, "Correlated Multi-Jittered Sampling", Pixar TM 13-01, 2013, whose
-// permute() pbrt-v4 uses as PermutationElement; our own rounds and 64-bit domain): a keyed
+// Method (the idea of [Kensler 2013], whose permute() [Pharr et al. 2023] uses as
+// PermutationElement; our own rounds and 64-bit domain): a keyed
 // bijection on w-bit words, w = bit width of n − 1, built only from operations invertible modulo
 // 2^w (xor with a key, multiplication by an odd key, x ^= x >> r, addition of a key); then
 // "cycle walking": re-apply the bijection until the value falls in [0, n). Following a cycle of a
-// bijection of [0, 2^w) until it re-enters [0, n) is a bijection of [0, n) (Black & Rogaway,
-// "Ciphers with arbitrary finite domains", CT-RSA 2002), and since n > 2^(w−1) the expected
-// number of walks is below 2.
+// bijection of [0, 2^w) until it re-enters [0, n) is a bijection of [0, n)
+// ([Black & Rogaway 2002]), and since n > 2^(w−1) the expected number of walks is below 2.
 #pragma once
 
 #include "quadmc/core/errors.hpp"

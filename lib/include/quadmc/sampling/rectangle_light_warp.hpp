@@ -1,14 +1,14 @@
 // A uniform point on a rectangular area light: x' = corner + U₁·edge_u + U₂·edge_v, density 1/A
-// with respect to area (lecture §2.2.3, area sampling, p(u, v) = 1/A').
+// with respect to area (docs/theory.md#irradiance-derivation; [Ramamoorthi 2009, §2.2.3]).
 //
 // Use it for direct lighting from a rectangle (estimators/irradiance_estimators.hpp): the
 // estimator L·V·cosθ·cosθ'/|x − x'|²·A then has no variance from directions that miss the light,
 // which hemisphere sampling wastes. Not ideal for a light that is large and close (the 1/r² term
-// then varies strongly); solid-angle sampling of the spherical rectangle (Ureña et al. 2013) is
+// then varies strongly); solid-angle sampling of the spherical rectangle ([Ureña et al. 2013]) is
 // better there and not implemented.
 //
 // Area and solid angle: a density p_A per unit area seen from x is the density
-// p_ω = p_A·|x − x'|²/cosθ' per unit solid angle (PBRT 3rd ed. §5.5.3, dω = cosθ' dA/r²);
+// p_ω = p_A·|x − x'|²/cosθ' per unit solid angle ([Pharr et al. 2016, §5.5.3], dω = cosθ' dA/r²);
 // solid_angle_pdf() does that conversion.
 #pragma once
 

@@ -1,11 +1,11 @@
 // Uniform points in the unit disk by rejection: draw (2U₁ − 1, 2U₂ − 1) in the square [−1,1)²
-// and keep it when inside the disk (lecture §3.2). The acceptance rate is π/4 ≈ 78.5%
+// and keep it when inside the disk (docs/theory.md#rejection). The acceptance rate is π/4 ≈ 78.5%
 // (area of the disk over area of the square).
 //
-// Use it as the lecture does: a simple, obviously correct reference to check an inversion warp
-// against. Not as a warp: a sample consumes a random number of uniforms, so it is no function of
-// a fixed u and cannot take stratified input. Trial t reads uniforms 2t and 2t + 1 of the
-// stream, so the output depends only on (seed, stream, n).
+// Use it as [Ramamoorthi 2009, §3.2] does: a simple, obviously correct reference to check an
+// inversion warp against. Not as a warp: a sample consumes a random number of uniforms, so it is no
+// function of a fixed u and cannot take stratified input. Trial t reads uniforms 2t and 2t + 1 of
+// the stream, so the output depends only on (seed, stream, n).
 #pragma once
 
 #include "quadmc/core/errors.hpp"

@@ -4,7 +4,7 @@
 // is_valid_size() and skip a cell with the reason). Strata are numbered row-major, the last
 // axis fastest: stratum c has cell coordinate (c / k^(s−1−j)) mod k along axis j.
 //
-// Policy when N is not k^s (documented in the issue, tested in stratum_grid_test.cpp): REJECT,
+// Policy when N is not k^s (tested in stratum_grid_test.cpp): REJECT,
 // with a message naming the nearest valid sizes below and above. Silently using the largest
 // k^s ≤ N points would plot a convergence curve against an N that was not spent, and padding
 // with independent points would mix two convergence rates in one column.

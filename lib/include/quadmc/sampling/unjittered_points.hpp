@@ -1,10 +1,11 @@
-// Unjittered stratified points: the centre of each of the k^s strata (PBRT 3rd ed. §7.3, the
-// StratifiedSampler's unjittered mode), optionally with one random shift of the whole grid.
+// Unjittered stratified points: the centre of each of the k^s strata ([Pharr et al. 2016, §7.3],
+// the StratifiedSampler's unjittered mode; docs/theory.md#unjittered), optionally with one random
+// shift of the whole grid.
 //
 // Use it only to compare against jittered points: unshifted it is the tensor-product midpoint
-// rule, a deterministic rule with error O(N^(−2/s)) for smooth f (lecture §1.2) and aliasing on
-// periodic or discontinuous integrands. With a seed, the grid is shifted by one uniform vector Δ
-// modulo 1 (a Cranley–Patterson rotation, Cranley & Patterson, SIAM J. Numer. Anal. 13, 1976):
+// rule, a deterministic rule with error O(N^(−2/s)) for smooth f (docs/theory.md#tensor-products)
+// and aliasing on periodic or discontinuous integrands. With a seed, the grid is shifted by one
+// uniform vector Δ modulo 1 (a Cranley–Patterson rotation, [Cranley & Patterson 1976]):
 // every point is then uniform, so the mean over points is unbiased and repetitions give an RMSE,
 // but all points share Δ, so one run cannot estimate its own error: estimators report NaN as its
 // standard error (variance_kind::not_estimable). N must be k^s (see stratum_grid.hpp).

@@ -1,5 +1,5 @@
 // The warp interface: a map from a point u of [0,1)^m to a sample x with a known density p(x)
-// (lecture §3: inversion and rejection; PBRT 3rd ed. §13.6).
+// (docs/theory.md#inversion, docs/theory.md#rejection; [Pharr et al. 2016, §13.6]).
 //
 // Use it for importance sampling (estimators/importance_sampling.hpp: Y = f(X)/p(X)); any point
 // set can feed a warp, so stratified directions are stratified u pushed through the warp.

@@ -6,12 +6,12 @@
 // and to print `quadmc list`. Not the place for the methods' code (rules/, sampling/,
 // estimators/); the runner dispatches on `name`.
 //
-// N → grid mapping (THEORY.md convention: N = evaluations, n = panels per axis). A tensor rule
-// with p(n) points per axis uses p(n)^s evaluations: rectangles and midpoint p = n, trapezoid and
-// Simpson p = n + 1 (Simpson: n even), Gauss–Legendre p = m·n, Romberg (s = 1 only) p = 2^k + 1
+// N → grid mapping (docs/theory.md#conventions: N = evaluations, n = panels per axis). A tensor
+// rule with p(n) points per axis uses p(n)^s evaluations: rectangles and midpoint p = n, trapezoid
+// and Simpson p = n + 1 (Simpson: n even), Gauss–Legendre p = m·n, Romberg (s = 1 only) p = 2^k + 1
 // with n = 2^k panels. The planner takes the largest n with p(n)^s ≤ N. All of it is exact
 // integer arithmetic: pow(4096, 1/3.) = 15.999… would floor to the wrong n.
-// Orders r (|error| = O(n^-r) = O(N^(-r/s)) on smooth f): Burden & Faires §4.3–4.5 (rectangles
+// Orders r (|error| = O(n^-r) = O(N^(-r/s)) on smooth f): [Burden & Faires, §4.3–4.5] (rectangles
 // 1, midpoint/trapezoid 2, Simpson 4, m-point Gauss 2m, Romberg R(k,k) 2k + 2).
 #pragma once
 

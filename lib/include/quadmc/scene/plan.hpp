@@ -2,7 +2,7 @@
 //
 // Use make_plan after parse_scene, and format_plan for `quadmc plan scene.toml`; the runner
 // (scene/run.hpp) executes plan::cells in order. The plan holds only what the scene names
-// (DESIGN.md, "skip what a scene doesn't need"):
+// (docs/design.md#skip-what-a-scene-does-not-need):
 //  - a deterministic rule runs once per N (its repetitions are 1; a `repetitions` key on it is
 //    ignored with a note);
 //  - N is mapped to a count the method can use (methods.hpp): the largest tensor grid with

@@ -4,7 +4,7 @@
 // Dispatch happens once per repetition (a switch on the method name, then templates below);
 // the integrand is type-erased per batch only. Randomness: repetition r of a cell uses the
 // Philox stream stream_id({cell.stream_parts…, r}) keyed by the scene seed, so a result
-// depends on neither thread count nor run order (DESIGN.md, hot-path contract).
+// depends on neither thread count nor run order (docs/design.md#hot-path-contract).
 //
 // Ensembles (K random instances of a family): the instances' errors are pooled into one series.
 // Each estimate is shifted by (Ī − I_k), Ī the mean of the instances' references, so that the

@@ -1,12 +1,14 @@
-#include "quadmc/sampling/orthonormal_basis.hpp"
+// Tests for functions/orthonormal_basis.hpp: orthonormal, right-handed frames for random and
+// extreme normals, and the local z axis mapped onto the normal.
+#include "quadmc/functions/orthonormal_basis.hpp"
 
-#include "quadmc/sampling/independent_points.hpp"
+#include "quadmc/core/rng.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
-#include <vector>
 
 namespace {
 
@@ -39,10 +41,9 @@ TEST(OrthonormalBasis, IsOrthonormalForRandomAndExtremeNormals) {
   expect_orthonormal({0, 0, -1});  // Frisvad's version divides by zero here
   expect_orthonormal(normalize(vec3{1e-9, 0, -1}));
   expect_orthonormal({1, 0, 0});
-  std::vector<double> u(2000);
-  independent_points(2, 1000, 1, 1).generate(0, u);
-  for (std::size_t i = 0; i < 1000; ++i) {
-    const double z = 2 * u[2 * i] - 1, phi = 2 * std::numbers::pi * u[2 * i + 1];
+  const philox_stream u(1, 1);
+  for (std::uint64_t i = 0; i < 1000; ++i) {
+    const double z = 2 * u.uniform(2 * i) - 1, phi = 2 * std::numbers::pi * u.uniform(2 * i + 1);
     const double r = std::sqrt(1 - z * z);
     expect_orthonormal({r * std::cos(phi), r * std::sin(phi), z});
   }

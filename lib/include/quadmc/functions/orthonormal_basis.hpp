@@ -1,5 +1,8 @@
 // An orthonormal frame (t1, t2, n) around a unit normal n, to carry directions sampled in the
-// z-up local frame of hemisphere_warps.hpp to world space and back.
+// z-up local frame of sampling/hemisphere_warps.hpp to world space and back. The one frame of the
+// library: the irradiance integrands (irradiance.hpp) build their hemisphere directions with it
+// and the irradiance estimators (estimators/irradiance_estimators.hpp) their samples, so it lives
+// in functions/, the lowest layer that both use.
 //
 // Method: Duff, Burgess, Christensen, Hery, Kensler, Liani & Villemin, "Building an Orthonormal
 // Basis, Revisited", JCGT 6(1), 2017, Listing 3: branch-free but for the sign of n.z, no

@@ -1,0 +1,297 @@
+// Ladder, throughput and reproducibility of the methods; what and how: measurement.hpp.
+#include "measurement.hpp"
+
+#include "boost_math_methods.hpp"
+#include "cubature_methods.hpp"
+#include "gsl_monte_methods.hpp"
+#include "peer_method.hpp"
+#include "quadmc_methods.hpp"
+#include "sum_of_coordinates.hpp"
+
+#include "scalar_reference_loop.hpp"  // bench/common
+
+#include "quadmc/core/rng.hpp"
+#include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/functions/genz.hpp"
+#include "quadmc/sampling/independent_points.hpp"
+
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace quadmc::peers {
+namespace {
+
+struct timed_run {
+  run_result result;
+  double seconds = 0.0;
+  double cpu_seconds = 0.0;  // CPU time of the whole process (all threads) during the run
+};
+
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Runs fn at least min_runs times and until min_seconds have passed (at most max_runs); keeps the
+// run with the most evaluations per second (= the fastest when every run does the same work).
+template <class Fn>
+timed_run best_of(Fn&& fn, int min_runs, double min_seconds, int max_runs) {
+  timed_run best;
+  double best_rate = -1.0;
+  double total = 0.0;
+  for (int k = 0; k < min_runs || (total < min_seconds && k < max_runs); ++k) {
+    const double cpu_start = process_cpu_seconds();
+    const auto start = std::chrono::steady_clock::now();
+    const run_result r = fn();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = process_cpu_seconds() - cpu_start;
+    total += seconds;
+    const double rate = static_cast<double>(r.evaluations) / seconds;
+    if (rate > best_rate) {
+      best_rate = rate;
+      best = {r, seconds, cpu};
+    }
+  }
+  return best;
+}
+
+std::string control_name(control_kind k) {
+  switch (k) {
+    case control_kind::evaluations:
+      return "N";
+    case control_kind::panels:
+      return "panels per axis";
+    case control_kind::tolerance:
+      return "tolerance 10^-k";
+    case control_kind::target_calls:
+      return "target calls";
+  }
+  return "?";
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// Every method measured on f: the scalar loop, quadmc's five at 1 and 2 threads (ladders at one
+// thread only), GSL's three, Boost's naive_monte_carlo at 1 and default threads, cubature's two,
+// and for s = 1 Boost's three 1D rules.
+template <class F>
+std::vector<peer_method> methods_for(const F& f, const configuration& c, double variance) {
+  const std::size_t s = f.dimension();
+  std::vector<peer_method> m;
+  peer_method reference;
+  reference.name = "scalar reference loop";
+  reference.family = "reference";
+  reference.ladder = c.ladder;
+  reference.throughput_control = c.throughput_n;
+  reference.run = [&f](std::uint64_t n, std::uint64_t seed) {
+    const bench::scalar_loop_result r = bench::scalar_reference_loop(f, n, seed);
+    return run_result{r.value, r.evaluations};
+  };
+  m.push_back(std::move(reference));
+  const std::vector<std::uint64_t> none;
+  for (unsigned threads : {1U, 2U}) {
+    const auto& ladder = threads == 1 ? c.ladder : none;
+    m.push_back(quadmc_monte_carlo<independent_points>("quadmc plain MC", f, threads, ladder,
+                                                       c.throughput_n));
+    m.push_back(
+        quadmc_monte_carlo<jittered_points>("quadmc jittered", f, threads, ladder, c.throughput_n));
+    m.push_back(quadmc_monte_carlo<latin_hypercube_points>("quadmc Latin hypercube", f, threads,
+                                                           ladder, c.throughput_n));
+    m.push_back(quadmc_tensor_rule<simpson_rule>("quadmc tensor Simpson", f, threads, ladder,
+                                                 c.tensor_throughput_n));
+    m.push_back(quadmc_tensor_rule<trapezoid_rule>("quadmc tensor trapezoid", f, threads, ladder,
+                                                   c.tensor_throughput_n));
+  }
+  for (auto a :
+       {gsl_monte_algorithm::plain, gsl_monte_algorithm::miser, gsl_monte_algorithm::vegas}) {
+    m.push_back(gsl_monte(a, f, c.ladder, c.throughput_n));
+  }
+  m.push_back(boost_naive_monte_carlo(f, 1, variance, c.boost_naive_ladder, c.throughput_n));
+  m.push_back(boost_naive_monte_carlo(f, 0, variance, none, c.throughput_n));
+  m.push_back(cubature(cubature_algorithm::h_adaptive, f, c.ladder, c.throughput_n));
+  m.push_back(cubature(cubature_algorithm::p_adaptive, f, c.ladder, c.throughput_n));
+  if (s == 1) {
+    for (auto r : {boost_quadrature_1d::trapezoidal, boost_quadrature_1d::gauss_kronrod_15,
+                   boost_quadrature_1d::tanh_sinh}) {
+      m.push_back(boost_quadrature(r, f, c.tolerance_exponents));
+    }
+  }
+  return m;
+}
+
+// The ladder of every method, then its throughput in rounds, then (once, at s = 2) the
+// reproducibility check; rows and skipped points go into out.
+template <class F>
+void measure(const F& f, const configuration& c, study& out) {
+  const integrand_info info = f.info();
+  const std::size_t s = f.dimension();
+  const double exact = info.exact;
+  // V̂ for Boost's error goal: quadmc plain MC on 2^16 points, a stream of its own.
+  const double variance =
+      monte_carlo(f, independent_points(s, 1 << 16, base_seed, stream_id({0xba5e})), 1).variance;
+  std::cerr << fmt::format("{} s={}: ladder", info.name, s) << std::flush;
+  const std::vector<peer_method> methods = methods_for(f, c, variance);
+  std::vector<row> bases;
+  std::vector<std::vector<row>> ladders(methods.size());
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const peer_method& m = methods[k];
+    row base;
+    base.method = m.name;
+    base.family = m.family;
+    base.integrand = info.name;
+    base.s = s;
+    base.threads = m.threads;
+    base.control = control_name(m.kind);
+    bases.push_back(base);
+    for (std::uint64_t control : m.ladder) {
+      const int reps = m.random ? c.repetitions : 1;
+      std::vector<double> seconds;
+      double squared = 0.0, evaluations = 0.0;
+      try {
+        for (int r = 0; r < reps; ++r) {
+          const std::uint64_t seed = stream_id({base_seed, static_cast<std::uint64_t>(r)});
+          // At least 2 runs (one preemption by other work must not make a point), until 2 ms
+          // have passed; Boost's naive_monte_carlo runs ≥ 0.1 s by itself, once is enough.
+          const int min_runs = m.kind == control_kind::target_calls ? 1 : 2;
+          const timed_run t = best_of([&] { return m.run(control, seed); }, min_runs, 2e-3, 100);
+          const double e = t.result.value - exact;
+          squared += e * e;
+          evaluations += static_cast<double>(t.result.evaluations);
+          seconds.push_back(t.seconds);
+        }
+      } catch (const std::exception& e) {
+        out.skipped.push_back(fmt::format("{} on {} s={} at {} = {}: {}", m.name, info.name, s,
+                                          control_name(m.kind), control, e.what()));
+        continue;
+      }
+      row r = base;
+      r.run = "ladder";
+      r.n = control;
+      r.evaluations = evaluations / reps;
+      r.seconds = median(seconds);
+      r.rate = r.evaluations / r.seconds;
+      r.abs_error = std::sqrt(squared / reps);
+      r.repetitions = reps;
+      ladders[k].push_back(r);
+    }
+    std::cerr << "." << std::flush;
+  }
+
+  // Throughput in rounds: every method runs once per round, so a burst of load from elsewhere
+  // on the shared machine slows one round of all methods rather than every run of one method.
+  std::cerr << " throughput" << std::flush;
+  std::vector<std::optional<timed_run>> best(methods.size());
+  std::vector<bool> failed(methods.size(), false);
+  const std::uint64_t seed = stream_id({base_seed, 0xf00d});
+  for (int round = 0; round < c.throughput_runs; ++round) {
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const peer_method& m = methods[k];
+      if (m.throughput_control == 0 || failed[k]) continue;
+      try {
+        const timed_run t = best_of([&] { return m.run(m.throughput_control, seed); }, 1, 0.0, 1);
+        const auto rate = [](const timed_run& x) {
+          return static_cast<double>(x.result.evaluations) / x.seconds;
+        };
+        if (!best[k] || rate(t) > rate(*best[k])) best[k] = t;
+      } catch (const std::exception& e) {
+        failed[k] = true;
+        out.skipped.push_back(fmt::format(
+            "{} on {} s={} at the throughput size {} = {}: {} (its largest ladder run is used)",
+            m.name, info.name, s, control_name(m.kind), m.throughput_control, e.what()));
+      }
+    }
+    std::cerr << "." << std::flush;
+  }
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    out.rows.insert(out.rows.end(), ladders[k].begin(), ladders[k].end());
+    row r = bases[k];
+    r.run = "throughput";
+    if (best[k]) {
+      const timed_run& t = *best[k];
+      r.n = methods[k].throughput_control;
+      r.evaluations = static_cast<double>(t.result.evaluations);
+      r.seconds = t.seconds;
+      r.cpu_seconds = t.cpu_seconds;
+      r.abs_error = std::abs(t.result.value - exact);
+      r.repetitions = c.throughput_runs;
+    } else {
+      // Adaptive 1D rules: their largest ladder run (they converge long before 10^6 points);
+      // also a peer that fails at the throughput size.
+      if (ladders[k].empty()) continue;
+      const auto largest = std::max_element(
+          ladders[k].begin(), ladders[k].end(),
+          [](const row& a, const row& b) { return a.evaluations < b.evaluations; });
+      r.n = largest->n;
+      r.evaluations = largest->evaluations;
+      r.seconds = largest->seconds;
+      r.cpu_seconds = largest->seconds;
+      r.abs_error = largest->abs_error;
+      r.repetitions = 1;
+    }
+    r.rate = r.evaluations / r.seconds;
+    out.rows.push_back(r);
+  }
+  std::cerr << "\n";
+
+  if (!out.repro && s == 2) {
+    reproducibility rep{info.name, s, 0.0, 0.0, {}};
+    const std::uint64_t n = c.throughput_n;
+    const independent_points points(s, n, base_seed, stream_id({n}));
+    rep.quadmc_one_thread = monte_carlo(f, points, 1).value;
+    rep.quadmc_two_threads = monte_carlo(f, points, 2).value;
+    const peer_method boost = boost_naive_monte_carlo(f, 0, variance, {}, n);
+    for (int k = 0; k < 3; ++k) rep.boost_values.push_back(boost.run(n, base_seed).value);
+    out.repro = rep;
+  }
+}
+
+}  // namespace
+
+void measure_methods(const configuration& c, study& out) {
+  gsl_set_error_handler_off();  // GSL failures come back as status codes (gsl_monte_methods.hpp)
+  for (std::size_t s : c.dimensions) {
+    auto po = genz_random_parameters(genz_family::oscillatory, s, genz_seed);
+    measure(genz_oscillatory(std::move(po.a), std::move(po.u)), c, out);
+    auto pg = genz_random_parameters(genz_family::gaussian, s, genz_seed);
+    measure(genz_gaussian(std::move(pg.a), std::move(pg.u)), c, out);
+    measure(sum_of_coordinates(s), c, out);
+  }
+  // ratio_to_scalar_loop on throughput rows.
+  std::map<std::pair<std::string, std::size_t>, double> reference;
+  for (const row& r : out.rows) {
+    if (r.run == "throughput" && r.method == "scalar reference loop")
+      reference[{r.integrand, r.s}] = r.rate;
+  }
+  for (row& r : out.rows) {
+    const auto it = reference.find({r.integrand, r.s});
+    if (r.run == "throughput" && it != reference.end())
+      r.ratio_to_scalar_loop = r.rate / it->second;
+  }
+}
+
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  double one = 0, five = 0, fifteen = 0;
+  in >> one >> five >> fifteen;
+  return fmt::format("{:.2f} / {:.2f} / {:.2f}", one, five, fifteen);
+}
+
+}  // namespace quadmc::peers

@@ -1,0 +1,34 @@
+// The timed part of quadmc_peers: every method (quadmc's and the peers') on every integrand and
+// dimension, as a work-precision ladder and as a best-of-rounds throughput run, plus one check
+// that quadmc's plain Monte Carlo gives the same bits on 1 and 2 threads and Boost's need not.
+//
+// Use it from quadmc_peers.cpp only; the README the program writes repeats how it measures:
+//  - throughput: each method at N ≥ 4·10^6 (2^22 points for Monte Carlo; the smallest grid with
+//    ≥ 4·10^6 points for tensor rules; jittered k^s nearest 2^22), run throughput_runs times with
+//    the same seed in rounds over all methods, the best (highest evaluations per second) kept: on
+//    a shared 2-core machine the noise only ever slows a run down, so the best run is the closest
+//    to the method's own cost;
+//  - work-precision ladder: N = 10^2, 10^2.5, …, 10^6 (one thread); random methods are run with
+//    `repetitions` independent seeds and the RMS error is kept, with the median of their times;
+//    each run is repeated at least twice and until 2 ms have passed (at most 100 times) and its
+//    fastest repetition is its time.
+// Timer: std::chrono::steady_clock; CPU time: CLOCK_PROCESS_CPUTIME_ID. Nothing is asserted.
+// Peak memory is measured apart, in child processes (peak_memory.hpp).
+#pragma once
+
+#include "study.hpp"
+
+#include <string>
+
+namespace quadmc::peers {
+
+// Measures every method of the study on Genz oscillatory, Genz Gaussian and the sum of
+// coordinates for each s of c.dimensions; appends to out.rows (ladder and throughput rows, with
+// ratio_to_scalar_loop on throughput rows), out.skipped (points a peer could not run, with its
+// message) and sets out.repro.
+void measure_methods(const configuration& c, study& out);
+
+// /proc/loadavg as "1 / 5 / 15 min": how busy the shared machine was.
+std::string load_average();
+
+}  // namespace quadmc::peers

@@ -1,0 +1,443 @@
+// peers.csv and README.md from a study; what they hold: report.hpp.
+#include "report.hpp"
+
+#include "time_to_accuracy.hpp"
+
+#include "quadmc/core/simd_level.hpp"
+
+#include <fmt/format.h>
+#include <gsl/gsl_version.h>
+#include <boost/version.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#ifndef QUADMC_PEERS_BUILD
+#define QUADMC_PEERS_BUILD "unknown"
+#endif
+#ifndef QUADMC_PEERS_NOTES
+#define QUADMC_PEERS_NOTES ""
+#endif
+
+namespace quadmc::peers {
+namespace {
+
+// The commands at the top of the README that regenerate results/peers.
+constexpr const char* regenerate_command =
+    "cmake -S . -B build/peers -G Ninja -DCMAKE_BUILD_TYPE=Release \\\n"
+    "  -DCMAKE_CXX_FLAGS_RELEASE='-O2 -DNDEBUG' -DQUADMC_BUILD_TESTS=OFF\n"
+    "cmake --build build/peers --target quadmc_peers\n"
+    "build/peers/bench/peers/quadmc_peers --out results/peers\n"
+    "/usr/bin/python3 bench/peers/plot_peers.py results/peers";
+
+std::string format_seconds(double t) {
+  if (t < 1e-3) return fmt::format("{:.3g} µs", t * 1e6);
+  if (t < 1.0) return fmt::format("{:.3g} ms", t * 1e3);
+  return fmt::format("{:.3g} s", t);
+}
+
+// 10^k written 10ᵏ (for the sizes of the memory table); other numbers as they are.
+std::string power_of_ten(std::uint64_t n) {
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  int k = 0;
+  std::uint64_t m = n;
+  while (m >= 10 && m % 10 == 0) {
+    m /= 10;
+    ++k;
+  }
+  if (m != 1 || k == 0) return std::to_string(n);
+  return std::string("10") + (k >= 10 ? std::string(digits[k / 10]) : std::string()) +
+         digits[k % 10];
+}
+
+std::string format_rate(double r) {
+  return fmt::format("{:.3g}", r / 1e6);
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+struct key {
+  std::string method;
+  unsigned threads;
+  std::string integrand;
+  std::size_t s;
+  auto operator<=>(const key&) const = default;
+};
+
+class report {
+ public:
+  report(const configuration& c, const study& st) : c_(c), st_(st) {
+    for (const row& r : st.rows) {
+      if (r.run == "throughput") {
+        rate_[{r.method, r.threads, r.integrand, r.s}] = r.rate;
+        cores_[{r.method, r.threads, r.integrand, r.s}] = r.cpu_seconds / r.seconds;
+        evaluations_[{r.method, r.threads, r.integrand, r.s}] = r.evaluations;
+      }
+      if (r.run == "ladder") {
+        auto& v = ladder_[{r.method, r.threads, r.integrand, r.s}];
+        v.push_back({r.evaluations, r.seconds, r.abs_error});
+      }
+      if (std::find(integrands_.begin(), integrands_.end(), r.integrand) == integrands_.end()) {
+        integrands_.push_back(r.integrand);
+      }
+      const auto m = std::pair{r.method, r.threads};
+      if (r.run == "throughput" &&
+          std::find(methods_.begin(), methods_.end(), m) == methods_.end()) {
+        methods_.push_back(m);
+      }
+    }
+  }
+
+  std::string markdown() const {
+    std::ostringstream o;
+    o << "# Peers measured in the same run\n\n";
+    o << "quadmc's own methods beside what a user would otherwise pick, on the same integrand "
+         "code (quadmc::genz_oscillatory, quadmc::genz_gaussian with "
+         "genz_random_parameters(family, "
+         "s, 1), and a local sum of coordinates f = Σxⱼ) with the same references "
+         "(f.info().exact), measured in one process. Written by `bench/peers/quadmc_peers`; "
+         "every number below is in `peers.csv`.\n\n";
+    o << "Regenerate (from the repository root; needs libgsl-dev, libcubature-dev, "
+         "python3-matplotlib):\n\n```sh\n"
+      << regenerate_command << "\n```\n\n";
+    o << fmt::format(
+        "Machine: {}, {} hardware threads (shared with other work while measuring); quadmc's "
+        "kernels at SIMD level {} (chosen at run time, core/simd_level.hpp). Compiler: "
+        "GCC {}; build: {}. GSL {}, Boost {}, cubature (Debian libcubature-dev). Whole run: "
+        "{:.0f} s; load average (1/5/15 min) {} before, {} after.\n\n",
+        cpu_model(), std::thread::hardware_concurrency(),
+        quadmc::to_string(quadmc::active_simd_level()), __VERSION__, QUADMC_PEERS_BUILD,
+        GSL_VERSION, BOOST_LIB_VERSION, st_.wall_seconds, st_.load_before, st_.load_after);
+    o << "How it is timed: std::chrono::steady_clock around one whole call of each method "
+         "(set-up included: point-set construction, GSL state and generator allocation). "
+         "**Throughput** rows: N ≥ 4·10⁶ evaluations (2^22 for the Monte Carlo methods; "
+         "jittered k^s nearest 2^22; tensor rules the smallest (n+1)^s ≥ 4·10⁶), run "
+      << c_.throughput_runs
+      << " times with one seed, in rounds (each round runs every method once, so a burst of "
+         "load hits all methods alike), the **best** run kept (highest evaluations/s: on a "
+         "shared machine noise only slows runs down). **Ladder** rows (work-precision): N = 10², "
+         "10^2.5, …, 10⁶ with one thread; random methods with "
+      << c_.repetitions
+      << " independent seeds, error = RMS over the seeds, time = median over the seeds; each "
+         "run repeated at least twice (Boost naive_monte_carlo: once) and until 2 ms have "
+         "passed (≤ 100 times), and its fastest repetition kept.\n\n";
+    o << "Peers, as called: GSL `gsl_monte_plain/miser/vegas_integrate` with `gsl_rng_mt19937` "
+         "(GSL's default), calls = N (VEGAS: N/5 per iteration × its default 5 iterations); "
+         "Boost `naive_monte_carlo` with error goal √(V̂/N) (it is goal-driven and polls every "
+         "100 ms, so a run lasts ≥ 0.1 s and usually overshoots N; its own `calls()` give the "
+         "rate), 1 worker thread and its default (hardware_concurrency); cubature "
+         "`hcubature_v`/`pcubature_v` with maxEval = N, tolerances 0 (they get whole batches, "
+         "quadmc's layout); Boost `trapezoidal` (max_refinements 20), `gauss_kronrod<double,15>` "
+         "(max_depth 15), `tanh_sinh` for s = 1 with tolerances 10⁻² … 10⁻¹²; the scalar "
+         "reference loop (xoshiro256+, s uniforms per point, the integrand inlined through a "
+         "batch of one, plain sum, `bench/common/scalar_reference_loop.hpp`). Per-point peers call "
+         "the suite's integrand through a batch of one (`bench/common/point_adapter.hpp`); "
+         "evaluations are counted in every adapter, never assumed.\n\n";
+    targets(o);
+    throughput(o);
+    accuracy(o);
+    memory(o);
+    determinism(o);
+    notes(o);
+    o << "## Plots\n\n";
+    for (const auto& name : integrands_) {
+      o << fmt::format("![work-precision, {0}](work_precision_{0}.svg)\n\n", name);
+    }
+    if (!st_.skipped.empty()) {
+      o << "## Points that could not be run\n\n";
+      for (const auto& s : st_.skipped) o << "- " << s << "\n";
+      o << "\n";
+    }
+    return o.str();
+  }
+
+ private:
+  std::optional<double> rate(const std::string& method, unsigned threads,
+                             const std::string& integrand, std::size_t s) const {
+    const auto it = rate_.find({method, threads, integrand, s});
+    if (it == rate_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  // One target row: numerator/denominator per s, with the goal.
+  void target_row(std::ostringstream& o, const std::string& label, const std::string& integrand,
+                  const std::string& num, unsigned num_threads, const std::string& den,
+                  unsigned den_threads, double goal, int& met, int& total, int& unmeasurable,
+                  bool show_cores = false) const {
+    o << "| " << label << " | " << integrand << " | ≥ " << goal << "× |";
+    for (std::size_t s : c_.dimensions) {
+      const auto a = rate(num, num_threads, integrand, s);
+      const auto b = rate(den, den_threads, integrand, s);
+      if (!a || !b) {
+        o << " — |";
+        continue;
+      }
+      const double ratio = *a / *b;
+      // A run that got less than 0.75 of a core per thread measured the machine's other work,
+      // not the method: the ratio is shown but counted neither as met nor as missed.
+      const double cores = cores_.at({num, num_threads, integrand, s});
+      const double den_cores = cores_.at({den, den_threads, integrand, s});
+      const bool starved = cores < 0.75 * num_threads || den_cores < 0.75 * den_threads;
+      const std::string mark = starved ? "⚠" : ratio >= goal ? "✅" : "❌";
+      if (starved) {
+        ++unmeasurable;
+      } else {
+        ++total;
+        if (ratio >= goal) ++met;
+      }
+      o << fmt::format(" {:.2f}× {}", ratio, mark);
+      if (show_cores || starved) o << fmt::format(" ({:.2f} / {:.2f} cores)", cores, den_cores);
+      o << " |";
+    }
+    o << "\n";
+  }
+
+  void targets(std::ostringstream& o) const {
+    o << "## Targets (measured, never asserted)\n\n"
+         "Ratios of evaluations per second (throughput rows), on the Genz integrands. "
+         "✅ met, ❌ missed, ⚠ not measurable in this run (see below the table).\n\n"
+         "| ratio | integrand | goal |";
+    for (std::size_t s : c_.dimensions) o << " s = " << s << " |";
+    o << "\n|---|---|---|";
+    for (std::size_t i = 0; i < c_.dimensions.size(); ++i) o << "---|";
+    o << "\n";
+    int met = 0, total = 0, unmeasurable = 0;
+    const std::vector<std::string> genz{"genz_oscillatory", "genz_gaussian"};
+    const std::string mc = "quadmc plain MC";
+    for (const auto& g : genz) {
+      target_row(o, "plain MC (1 thread) / scalar reference loop", g, mc, 1,
+                 "scalar reference loop", 1, 1.0, met, total, unmeasurable);
+    }
+    for (const auto& g : genz) {
+      target_row(o, "plain MC (1 thread) / GSL plain", g, mc, 1, "GSL plain", 1, 2.0, met, total,
+                 unmeasurable);
+    }
+    for (const auto& g : genz) {
+      target_row(o, "plain MC (1 thread) / Boost naive_monte_carlo (1 thread)", g, mc, 1,
+                 "Boost naive_monte_carlo", 1, 2.0, met, total, unmeasurable);
+    }
+    for (const auto& name : {"quadmc jittered", "quadmc Latin hypercube"}) {
+      for (const auto& g : genz) {
+        target_row(o, fmt::format("{} / plain MC (1 thread each)", name), g, name, 1, mc, 1, 0.7,
+                   met, total, unmeasurable);
+      }
+    }
+    for (const auto& name : {"quadmc tensor Simpson", "quadmc tensor trapezoid"}) {
+      for (const auto& g : genz) {
+        target_row(o, fmt::format("{} / plain MC (1 thread each)", name), g, name, 1, mc, 1, 2.0,
+                   met, total, unmeasurable);
+      }
+    }
+    for (const auto& name : {"quadmc plain MC", "quadmc jittered", "quadmc Latin hypercube",
+                             "quadmc tensor Simpson", "quadmc tensor trapezoid"}) {
+      for (const auto& g : genz) {
+        target_row(o, fmt::format("{}: 2 threads / 1 thread (N ≥ 10⁶)", name), g, name, 2, name, 1,
+                   1.8, met, total, unmeasurable, true);
+      }
+    }
+    o << fmt::format(
+        "\n**{} of {} measured ratios met**; {} not measurable (⚠). \"cores\": process CPU "
+        "time / wall time of the kept run (CLOCK_PROCESS_CPUTIME_ID), i.e. how much of the "
+        "machine the run actually got. A ratio is marked ⚠ instead of ✅/❌ when either of its "
+        "two runs got less than 0.75 of a core per thread in the best of its {} rounds: the "
+        "machine's other work held a core, so the ratio measures that work, not the method.\n\n",
+        met, total, unmeasurable, c_.throughput_runs);
+  }
+
+  void throughput(std::ostringstream& o) const {
+    o << "## Throughput: million evaluations per second\n\n"
+         "Per method and thread count; in parentheses the ratio to the scalar reference loop "
+         "(same integrand, same s, one thread). Two threads on a 2-core machine: the ideal is "
+         "2× the one-thread figure. † fewer than 10⁵ evaluations: the method stopped early "
+         "because it had converged (adaptive 1D rules at their tightest tolerance) or its rule "
+         "is exact for the integrand (cubature on the sum of coordinates: error estimate 0 "
+         "after one rule application), so the figure is mostly set-up cost, not a rate.\n\n";
+    for (const auto& integrand : integrands_) {
+      o << "### " << integrand << "\n\n| method | threads |";
+      for (std::size_t s : c_.dimensions) o << " s = " << s << " |";
+      o << "\n|---|---|";
+      for (std::size_t i = 0; i < c_.dimensions.size(); ++i) o << "---|";
+      o << "\n";
+      for (const auto& [method, threads] : methods_) {
+        bool any = false;
+        std::string line = fmt::format("| {} | {} |", method, threads);
+        for (std::size_t s : c_.dimensions) {
+          const auto r = rate(method, threads, integrand, s);
+          const auto ref = rate("scalar reference loop", 1, integrand, s);
+          if (!r) {
+            line += " — |";
+            continue;
+          }
+          any = true;
+          const bool short_run = evaluations_.at({method, threads, integrand, s}) < 1e5;
+          line += fmt::format(" {}{} ({:.2f}×) |", format_rate(*r), short_run ? " †" : "",
+                              ref ? *r / *ref : NAN);
+        }
+        if (any) o << line << "\n";
+      }
+      o << "\n";
+    }
+  }
+
+  void accuracy(std::ostringstream& o) const {
+    o << "## Time to reach an absolute error of 10⁻³ and 10⁻⁵\n\n"
+         "Interpolated on the work-precision ladder (one thread; log time against log error "
+         "between the last point above ε and the first of the tail that stays below); "
+         "\"≤ t\": already below ε at the smallest ladder point; \"not reached\": not within "
+         "the ladder (N ≤ 10⁶, or the peer's own limit). Random methods: RMS error over the "
+         "seeds, so one lucky seed does not count.\n\n";
+    for (const auto& integrand : integrands_) {
+      o << "### " << integrand << "\n\n| method |";
+      for (std::size_t s : c_.dimensions) o << " s = " << s << ": 10⁻³ | 10⁻⁵ |";
+      o << "\n|---|";
+      for (std::size_t i = 0; i < c_.dimensions.size(); ++i) o << "---|---|";
+      o << "\n";
+      for (const auto& [method, threads] : methods_) {
+        bool any = false;
+        std::string line = "| " + method + " |";
+        for (std::size_t s : c_.dimensions) {
+          const auto it = ladder_.find({method, threads, integrand, s});
+          if (it == ladder_.end()) {
+            line += " — | — |";
+            continue;
+          }
+          any = true;
+          for (double eps : {1e-3, 1e-5}) {
+            const time_to_accuracy t = time_to_reach(it->second, eps);
+            switch (t.outcome) {
+              case time_to_accuracy::status::reached:
+                // fmt rather than " " + string: GCC 12 at -O3 warns a false -Wrestrict there.
+                line += fmt::format(" {} |", format_seconds(t.seconds));
+                break;
+              case time_to_accuracy::status::at_most:
+                line += fmt::format(" ≤ {} |", format_seconds(t.seconds));
+                break;
+              case time_to_accuracy::status::not_reached:
+                line += " not reached |";
+                break;
+            }
+          }
+        }
+        if (any) o << line << "\n";
+      }
+      o << "\n";
+    }
+  }
+
+  void memory(std::ostringstream& o) const {
+    o << "## Peak memory of quadmc's methods\n\n"
+         "Peak RSS (VmHWM of /proc/self/status, read by the child at its end) of a fresh child "
+         "process — this program re-executed as `quadmc_peers --one METHOD genz_gaussian 2 N 2` "
+         "— that integrates Genz Gaussian, s = 2, with 2 threads. Not getrusage's ru_maxrss: "
+         "Linux carries it over fork and exec, so a child would report the parent's peak "
+         "(bench/common/peak_rss.hpp). Jittered and tensor sizes are the nearest valid ones "
+         "(k² and (n+1)²). Baseline: the same child doing no integration (libraries, one "
+         "integrand). What "
+         "grows with N is bounded: parallel_reduce folds at most 4096 chunk results at a "
+         "time (core/parallel_reduce.hpp), so the slots stop growing at 4096 chunks — "
+         "4096 × 128-byte sample_statistics = 512 KiB for Monte Carlo (reached at 5·10⁷ "
+         "points), 4096 × 16-byte Neumaier sums for tensor rules — whatever N; nothing "
+         "is stored per point.\n\n"
+         "| method |";
+    for (std::uint64_t n : c_.rss_sizes) o << " N = " << power_of_ten(n) << " |";
+    o << " growth |\n|---|";
+    for (std::size_t i = 0; i <= c_.rss_sizes.size(); ++i) o << "---|";
+    o << "\n";
+    o << fmt::format("| baseline (no integration) | {} KiB |", st_.rss_baseline_kib);
+    for (std::size_t i = 1; i < c_.rss_sizes.size(); ++i) o << " |";
+    o << " |\n";
+    for (const auto& r : st_.rss) {
+      o << "| " << r.method << " |";
+      for (long k : r.kib) o << " " << k << " KiB |";
+      o << fmt::format(" {:+} KiB |\n", r.kib.back() - r.kib.front());
+    }
+    o << "\n";
+  }
+
+  void determinism(std::ostringstream& o) const {
+    if (!st_.repro) return;
+    const auto& r = *st_.repro;
+    o << "## Same seed, same answer?\n\n";
+    o << fmt::format(
+        "{}, s = {}, N = {}: quadmc plain MC with 1 thread gives {:.17g}, with 2 threads {:.17g} "
+        "({}). Boost naive_monte_carlo (default threads) run {} times with the same seed and "
+        "error goal:",
+        r.integrand, r.s, c_.throughput_n, r.quadmc_one_thread, r.quadmc_two_threads,
+        std::bit_cast<std::uint64_t>(r.quadmc_one_thread) ==
+                std::bit_cast<std::uint64_t>(r.quadmc_two_threads)
+            ? "bitwise identical"
+            : "**different bits**",
+        r.boost_values.size());
+    for (double v : r.boost_values) o << fmt::format(" {:.17g}", v);
+    bool same = true;
+    for (double v : r.boost_values) same &= v == r.boost_values.front();
+    o << (same ? " (identical this time).\n\n"
+               : " — it changes from run to run: its threads race to the goal and the master "
+                 "stops them at a time-dependent point.\n\n");
+  }
+
+  void notes(std::ostringstream& o) const {
+    std::ifstream in(QUADMC_PEERS_NOTES);
+    // Read into a string first: streaming an empty rdbuf() would set failbit on `o`.
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!text.empty()) o << text << "\n";
+  }
+
+  const configuration& c_;
+  const study& st_;
+  std::map<key, double> rate_;
+  std::map<key, double> cores_;        // process CPU time / wall time of the kept throughput run
+  std::map<key, double> evaluations_;  // evaluations of the kept throughput run
+  std::map<key, std::vector<ladder_point>> ladder_;
+  std::vector<std::string> integrands_;
+  std::vector<std::pair<std::string, unsigned>> methods_;
+};
+
+}  // namespace
+
+void write_csv(const std::filesystem::path& path, const std::vector<row>& rows) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out << "method,integrand,s,threads,N,evaluations,seconds,evals_per_second,abs_error,"
+         "ratio_to_scalar_loop,run,family,control,repetitions,cpu_seconds\n";
+  for (const row& r : rows) {
+    out << fmt::format(
+        "{},{},{},{},{},{:.0f},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{}\n", r.method, r.integrand,
+        r.s, r.threads, r.n, r.evaluations, r.seconds, r.rate, r.abs_error,
+        r.ratio_to_scalar_loop ? fmt::format("{:.4f}", *r.ratio_to_scalar_loop) : std::string(),
+        r.run, r.family, r.control, r.repetitions,
+        r.run == "throughput" ? fmt::format("{:.6g}", r.cpu_seconds) : std::string());
+  }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");
+}
+
+void write_markdown_report(const std::filesystem::path& path, const configuration& c,
+                           const study& st) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out << report(c, st).markdown();
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");
+}
+
+}  // namespace quadmc::peers

@@ -1,0 +1,93 @@
+// What one run of quadmc_peers measures and what it collects: the configuration (sizes, ladders,
+// repetitions), one CSV row per measurement, and the whole study that the report is written
+// from.
+//
+// Use it to pass results from the measurement (measurement.hpp, peak_memory.hpp) to the writing
+// (report.hpp). Not the place for how anything is measured or printed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace quadmc::peers {
+
+// Fixed seeds: the Genz parameters (genz_random_parameters) and the base of every run's seed.
+inline constexpr std::uint64_t genz_seed = 1;
+inline constexpr std::uint64_t base_seed = 0x5eed0007;
+
+struct configuration {
+  std::vector<std::size_t> dimensions{1, 2, 4, 8};
+  std::vector<std::uint64_t> ladder{100, 316, 1000, 3162, 10000, 31623, 100000, 316228, 1000000};
+  std::vector<std::uint64_t> boost_naive_ladder{100000, 1000000};  // ≥ 0.1 s per run anyway
+  std::vector<std::uint64_t> tolerance_exponents{2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  // 2^22: at quadmc's 150–250 M evaluations/s a one-thread run of 2^20 lasts 4–7 ms, so the
+  // fixed cost of starting threads blurred the two-thread ratio; 2^22 runs last 15–30 ms.
+  std::uint64_t throughput_n = std::uint64_t{1} << 22;
+  std::uint64_t tensor_throughput_n = 4000000;
+  int repetitions = 3;      // seeds per ladder point of a random method
+  int throughput_runs = 5;  // best of
+  std::vector<std::uint64_t> rss_sizes{1000000, 100000000};
+};
+
+// `--quick`: a smoke run (small N, seconds); its numbers are not for the record.
+inline configuration quick_configuration() {
+  configuration c;
+  c.ladder = {100, 1000, 10000};
+  c.boost_naive_ladder = {10000};
+  c.tolerance_exponents = {2, 4, 6};
+  c.throughput_n = std::uint64_t{1} << 16;
+  c.tensor_throughput_n = 1 << 16;
+  c.repetitions = 2;
+  c.throughput_runs = 2;
+  c.rss_sizes = {10000, 1000000};
+  return c;
+}
+
+// One line of peers.csv.
+struct row {
+  std::string run;  // "throughput" or "ladder"
+  std::string method;
+  std::string family;
+  std::string integrand;
+  std::size_t s = 0;
+  unsigned threads = 1;
+  std::uint64_t n = 0;       // the control: N, panels per axis, tolerance exponent, target calls
+  std::string control;       // what n means
+  double evaluations = 0.0;  // mean over repetitions
+  double seconds = 0.0;
+  double cpu_seconds = 0.0;  // throughput rows: process CPU time of the kept run
+  double rate = 0.0;
+  double abs_error = 0.0;  // |error|, RMS over repetitions for random methods
+  int repetitions = 1;
+  std::optional<double> ratio_to_scalar_loop;
+};
+
+// quadmc's plain MC at 1 and 2 threads must agree bit for bit; Boost's naive_monte_carlo at a
+// fixed seed need not. Both observed once and reported.
+struct reproducibility {
+  std::string integrand;
+  std::size_t s = 0;
+  double quadmc_one_thread = 0.0, quadmc_two_threads = 0.0;
+  std::vector<double> boost_values;
+};
+
+// Peak memory of one of quadmc's methods, per size of configuration::rss_sizes.
+struct rss_row {
+  std::string method;
+  std::vector<long> kib;
+};
+
+struct study {
+  std::string load_before, load_after;  // /proc/loadavg: how busy the shared machine was
+  std::vector<row> rows;
+  std::optional<reproducibility> repro;
+  std::vector<std::string> skipped;
+  std::vector<rss_row> rss;
+  long rss_baseline_kib = 0;  // the same child doing no integration
+  double wall_seconds = 0.0;  // the whole run
+};
+
+}  // namespace quadmc::peers
