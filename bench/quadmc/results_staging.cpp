@@ -184,7 +184,7 @@ void results_staging::create_parents() {
 }
 
 void results_staging::lock() {
-  lock_file_ = folder_.parent_path() / ("." + folder_.filename().string() + ".lock");
+  lock_file_ = folder_.parent_path() / fmt::format(".{}.lock", folder_.filename().string());
   // The holder removes the lock file before it closes it, so a file opened just before that is
   // no longer the lock: after flock, check that the path still names the locked file, else retry.
   for (int attempt = 0; attempt < 100; ++attempt) {
@@ -225,7 +225,8 @@ void results_staging::lock() {
 
 void results_staging::make_staging() {
   std::string pattern =
-      (folder_.parent_path() / ("." + folder_.filename().string() + ".partial-XXXXXX")).string();
+      (folder_.parent_path() / (fmt::format(".{}.partial-XXXXXX", folder_.filename().string())))
+          .string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     refuse(fmt::format("cannot create the staging folder {}: {}", pattern, error_text(errno)));
   }
@@ -265,7 +266,8 @@ std::string results_staging::commit() {
       // No RENAME_EXCHANGE on this file system: old aside, new in; the folder is missing for
       // the instant between the two renames, never holding a mixture.
       std::string aside =
-          (folder_.parent_path() / ("." + folder_.filename().string() + ".old-XXXXXX")).string();
+          (folder_.parent_path() / (fmt::format(".{}.old-XXXXXX", folder_.filename().string())))
+              .string();
       if (::mkdtemp(aside.data()) == nullptr) {
         keep_and_refuse(fmt::format("cannot create {}: {}", aside, error_text(errno)));
       }
