@@ -11,7 +11,7 @@ that moves one must come with regenerated results.
 
 Compared: every column of both files except the timing ones (`seconds`, `evals_per_second`),
 which depend on the machine's load. Rows are matched by their key (integrand, s, method, and N
-for convergence.csv); a row or column present on one side only is a difference.
+and tolerance for convergence.csv); a row or column present on one side only is a difference.
 With R = 0 (the default) fields must be equal as text: the writer prints the shortest text that
 reads back to the same double, so equal text is equal bits. R > 0 is for two machines with
 different vector units, whose exp/cos differ in the last bits (the README's SIMD section): numbers
@@ -26,9 +26,10 @@ import sys
 
 TIMING_COLUMNS = {"seconds", "evals_per_second"}
 KEYS = {
-    "convergence.csv": ("integrand", "s", "method", "N"),
+    "convergence.csv": ("integrand", "s", "method", "N", "tolerance"),
     "slopes.csv": ("integrand", "s", "method"),
 }
+OPTIONAL_KEYS = {"tolerance"}  # a column added later: empty when a file predates it
 SHOWN = 20
 
 
@@ -48,7 +49,7 @@ def read_rows(path, key_columns):
     except OSError as e:
         print(f"same_results.py: cannot read {path}: {e.strerror}", file=sys.stderr)
         sys.exit(2)
-    missing = [k for k in key_columns if k not in header]
+    missing = [k for k in key_columns if k not in header and k not in OPTIONAL_KEYS]
     if missing:
         print(f"same_results.py: {path}: no column {missing[0]}", file=sys.stderr)
         sys.exit(2)

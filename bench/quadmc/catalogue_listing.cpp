@@ -1,7 +1,8 @@
 #include "catalogue_listing.hpp"
 
+#include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/functions/catalogue.hpp"
-#include "quadmc/scene/methods.hpp"
+#include "quadmc/methods/registry.hpp"
 
 #include <fmt/format.h>
 
@@ -19,20 +20,24 @@ std::string catalogue_listing() {
     if (!e.parameters.empty())
       fmt::format_to(line, "  {:<24} {:<14} keys: {}\n", "", "", e.parameters);
   }
-  fmt::format_to(line, "\nmethods ([[method]] name = …):\n");
-  for (const auto& m : quadmc::method_catalogue()) {
-    fmt::format_to(line, "  {:<30} {:<7} {}\n", m.name,
-                   m.kind == quadmc::method_kind::deterministic_rule ? "rule" : "random",
-                   m.description);
+  fmt::format_to(line,
+                 "\nmethods ([[method]] name = …; every method also takes label, integrands, "
+                 "repetitions, control, tolerances):\n");
+  for (const quadmc::method_descriptor* m : quadmc::method_registry()) {
+    std::string controls;
+    for (const quadmc::cell_control c : m->controls) {
+      controls += (controls.empty() ? "" : "|") + std::string(quadmc::to_string(c));
+    }
+    fmt::format_to(line, "  {:<30} {:<13} {:<24} {}\n", m->name,
+                   m->kind == quadmc::method_kind::deterministic ? "deterministic" : "randomized",
+                   "control " + controls, m->description);
+    for (const quadmc::option_doc& o : m->options) {
+      fmt::format_to(line, "  {:<30} {:<13} {:<24} {} = {}\n", "", "", "", o.key, o.meaning);
+    }
   }
   fmt::format_to(line, "\npoint sets ([[method]] point_set = …, for importance/irradiance):\n");
   for (const auto& p : quadmc::point_set_catalogue()) {
     fmt::format_to(line, "  {:<30} {}\n", p.name, p.description);
-  }
-  fmt::format_to(line, "\nwarps ([[method]] warp = …, for importance):\n");
-  for (const auto& w : quadmc::warp_catalogue()) {
-    fmt::format_to(line, "  {:<30} {} (parameter {}, default {})\n", w.name, w.description,
-                   w.parameter, w.default_value);
   }
   return out;
 }

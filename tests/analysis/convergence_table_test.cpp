@@ -3,6 +3,8 @@
 
 #include "quadmc/core/errors.hpp"
 
+#include "series_builder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,17 +13,22 @@
 namespace quadmc {
 namespace {
 
+using test::cell_at;
+using test::repetition;
+using test::series_of;
+
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // A deterministic midpoint-like series: value = I + 0.1·N⁻² + a rounding floor of 4e-16 that
 // alternates in sign, N = 2^1 … 2^28, cells given in reverse order to check the sort.
 convergence_series midpoint_series() {
-  convergence_series series{"genz_gaussian", 1, "midpoint", "analytic", 0.5, {}, "", 0};
+  convergence_series series = series_of("genz_gaussian", 1, "midpoint", smoothness::analytic, 0.5,
+                                        composite_rule_rate(2, {smoothness::analytic, 1}));
   for (int k = 28; k >= 1; --k) {
     const double n = std::ldexp(1.0, k);
     const double value = 0.5 + 0.1 / (n * n) + (k % 2 == 0 ? 4e-16 : -4e-16);
-    series.cells.push_back(
-        {static_cast<std::uint64_t>(n), {{value, nan, static_cast<std::uint64_t>(n), 1e-9 * n}}});
+    const auto count = static_cast<std::uint64_t>(n);
+    series.cells.push_back(cell_at(count, {repetition(value, nan, count, 1e-9 * n)}));
   }
   return series;
 }
@@ -70,13 +77,16 @@ TEST(ConvergenceTable, DeterministicSeriesWithFloor) {
 TEST(ConvergenceTable, MonteCarloSeriesUsesRmseAndCoverage) {
   // Four repetitions per N with errors ±c/√N (two each sign) and std_error c/√N: RMSE = c/√N
   // exactly, coverage 1 (|e| = se ≤ 1.96·se), slope −1/2 exactly.
-  convergence_series series{"genz_oscillatory", 2, "plain_mc", "analytic", 1.0, {}, "", 0};
+  convergence_series series =
+      series_of("genz_oscillatory", 2, "plain_mc", smoothness::analytic, 1.0,
+                root_n_rate({smoothness::analytic, 2}, "σ/√N", "docs/theory.md#plain-monte-carlo"));
   for (int k = 4; k <= 12; ++k) {
     const double n = std::ldexp(1.0, k);
     const double se = 0.3 / std::sqrt(n);
-    convergence_cell cell{static_cast<std::uint64_t>(n), {}};
+    convergence_cell cell = cell_at(static_cast<std::uint64_t>(n), {});
     for (double sign : {1.0, -1.0, 1.0, -1.0}) {
-      cell.repetitions.push_back({1.0 + sign * se, se, static_cast<std::uint64_t>(n), 1e-6});
+      cell.repetitions.push_back(
+          repetition(1.0 + sign * se, se, static_cast<std::uint64_t>(n), 1e-6));
     }
     series.cells.push_back(cell);
   }
@@ -104,14 +114,15 @@ TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
 // every n: flat over twelve doublings. The envelope is |J|·h/2 = 1/(2n) ≥ 2⁻¹⁷ > 2⁻²⁰.
 convergence_series run_of_ones_series() {
   const double c = 0.5 + 0.25 + 0.125 + 0.0625 + std::ldexp(1.0, -20);
-  convergence_series series{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  convergence_series series = series_of("step", 1, "midpoint", smoothness::discontinuous, 1.0 - c,
+                                        composite_rule_rate(2, {smoothness::discontinuous, 1}));
   for (int k = 4; k <= 16; ++k) {
     const auto n = static_cast<std::uint64_t>(1) << k;
     convergence_cell cell;
     cell.n = n;
     cell.per_axis = n;
     cell.error_envelope = 0.5 / static_cast<double>(n);
-    cell.repetitions.push_back({1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9});
+    cell.repetitions.push_back(repetition(1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9));
     series.cells.push_back(cell);
   }
   return series;
@@ -176,16 +187,20 @@ TEST(ConvergenceTable, EnvelopeOnSomeCellsOnlyIsRejected) {
 }
 
 TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
-  convergence_series empty{"f", 1, "midpoint", "smooth", 1.0, {}, "", 0};
+  convergence_series empty = series_of("f", 1, "midpoint", smoothness::smooth, 1.0, {});
   EXPECT_THROW(analyse_convergence(empty), invalid_argument);
+
+  convergence_series no_dimension = midpoint_series();
+  no_dimension.s = 0;
+  EXPECT_THROW(analyse_convergence(no_dimension), invalid_argument);
+
+  convergence_series mixed = midpoint_series();
+  mixed.cells[2].tolerance = 1e-6;  // one cell run to a tolerance among sized cells
+  EXPECT_THROW(analyse_convergence(mixed), invalid_argument);
 
   convergence_series duplicate = midpoint_series();
   duplicate.cells.push_back(duplicate.cells.front());
   EXPECT_THROW(analyse_convergence(duplicate), invalid_argument);
-
-  convergence_series bad_class = midpoint_series();
-  bad_class.smoothness = "wiggly";
-  EXPECT_THROW(analyse_convergence(bad_class), invalid_argument);
 
   convergence_series no_reps = midpoint_series();
   no_reps.cells[3].repetitions.clear();

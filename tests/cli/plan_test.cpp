@@ -1,10 +1,11 @@
 // End-to-end tests of `quadmc plan` and `quadmc list`: what a user reads before running a scene.
 //
 // Use these to check the command prints the planner's cells and skips (scene/plan.hpp) and the
-// whole catalogue (functions/catalogue.hpp, scene/methods.hpp). Not for the planner's N → grid
+// whole catalogue (functions/catalogue.hpp, methods/registry.hpp). Not for the planner's N → grid
 // arithmetic itself (tests/scene covers it exhaustively).
+#include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/functions/catalogue.hpp"
-#include "quadmc/scene/methods.hpp"
+#include "quadmc/methods/registry.hpp"
 #include "quadmc_command.hpp"
 
 #include <gtest/gtest.h>
@@ -56,17 +57,20 @@ max_evaluations = 5000
   }
 }
 
-TEST(ListTest, PrintsEveryMethodIntegrandPointSetAndWarp) {
+TEST(ListTest, PrintsEveryMethodIntegrandPointSetAndOption) {
   scratch_folder dir;
   const command_result r = run_quadmc(dir, {"list"});
   ASSERT_EQ(r.exit_status, 0) << describe(r);
   EXPECT_EQ(r.err, "") << describe(r);
   std::vector<std::string> names;
-  for (const auto& m : quadmc::method_catalogue()) names.emplace_back(m.name);
+  for (const quadmc::method_descriptor* m : quadmc::method_registry()) {
+    names.emplace_back(m->name);
+    for (const quadmc::option_doc& o : m->options) names.emplace_back(std::string(o.key) + " = ");
+  }
   for (const auto& e : quadmc::integrand_catalogue()) names.emplace_back(e.name);
   for (const auto& p : quadmc::point_set_catalogue()) names.emplace_back(p.name);
-  for (const auto& w : quadmc::warp_catalogue()) names.emplace_back(w.name);
-  ASSERT_GE(names.size(), 16u + 19u);  // parse.hpp lists 16 methods, catalogue.cpp 19 families
+  for (const char* warp : {"\"power\"", "\"exponential\""}) names.emplace_back(warp);
+  ASSERT_GE(names.size(), 16u + 26u);  // the 16 methods of the registry, 26 families
   for (const auto& name : names) {
     EXPECT_NE(r.out.find(name), std::string::npos) << "`quadmc list` misses " << name;
   }

@@ -2,6 +2,8 @@
 // within the intervals is not.
 #include "quadmc/report/compare.hpp"
 
+#include "../analysis/series_builder.hpp"
+
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/results_folder.hpp"
 
@@ -18,6 +20,12 @@
 
 namespace quadmc {
 namespace {
+
+using test::cell_at;
+using test::monte_carlo_theory;
+using test::repetition;
+using test::rule_theory;
+using test::series_of;
 
 namespace fs = std::filesystem;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -38,14 +46,17 @@ struct temporary_directory {
 // A midpoint series with error c·N^rate (exact power law: CI half-width ~0) and time 1e-8·N,
 // plus a Monte Carlo series with rate −1/2.
 void write_folder(const fs::path& folder, double midpoint_rate, double time_factor) {
-  convergence_series rule{"genz_gaussian", 1, "midpoint", "analytic", 1.0, {}, "", 0};
-  convergence_series mc{"genz_gaussian", 1, "plain_mc", "analytic", 1.0, {}, "", 0};
+  convergence_series rule = series_of("genz_gaussian", 1, "midpoint", smoothness::analytic, 1.0,
+                                      rule_theory(2, smoothness::analytic));
+  convergence_series mc = series_of("genz_gaussian", 1, "plain_mc", smoothness::analytic, 1.0,
+                                    monte_carlo_theory(smoothness::analytic));
   for (int k = 2; k <= 12; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
-    rule.cells.push_back(
-        {nk, {{1.0 + 0.1 * std::pow(n, midpoint_rate), nan, nk, time_factor * 1e-8 * n}}});
-    mc.cells.push_back({nk, {{1.0 + 0.5 / std::sqrt(n), 0.5 / std::sqrt(n), nk, 1e-7 * n}}});
+    rule.cells.push_back(cell_at(
+        nk, {repetition(1.0 + 0.1 * std::pow(n, midpoint_rate), nan, nk, time_factor * 1e-8 * n)}));
+    mc.cells.push_back(
+        cell_at(nk, {repetition(1.0 + 0.5 / std::sqrt(n), 0.5 / std::sqrt(n), nk, 1e-7 * n)}));
   }
   const std::vector<convergence_table> tables = {analyse_convergence(rule),
                                                  analyse_convergence(mc)};
@@ -116,12 +127,13 @@ TEST(Compare, ShallowerSlopeIsARegression) {
 
 // A midpoint series on a step with envelope 0.5/N and |error| = scale·N^rate: an envelope series.
 void write_jump_folder(const fs::path& folder, double rate, double scale) {
-  convergence_series rule{"step", 1, "midpoint", "discontinuous", 0.25, {}, "", 2};
+  convergence_series rule = series_of("step", 1, "midpoint", smoothness::discontinuous, 0.25,
+                                      rule_theory(2, smoothness::discontinuous));
   for (int k = 2; k <= 12; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
-    rule.cells.push_back(
-        {nk, {{0.25 + scale * std::pow(n, rate), nan, nk, 1e-8 * n}}, nk, 0.5 / n});
+    rule.cells.push_back(cell_at(
+        nk, {repetition(0.25 + scale * std::pow(n, rate), nan, nk, 1e-8 * n)}, nk, 0.5 / n));
   }
   run_info info;
   info.scene = "compare_test";
@@ -162,11 +174,12 @@ TEST(Compare, SmallSlopeChangeWithinToleranceAndMissingSeries) {
 // A power-law series c·N^rate on N = 2^2…2^points+1 (fewer than three points: no fit).
 convergence_series power_series(const std::string& integrand, const std::string& method,
                                 double rate, int points) {
-  convergence_series s{integrand, 1, method, "analytic", 1.0, {}, "", 0};
+  convergence_series s = series_of(integrand, 1, method, smoothness::analytic, 1.0,
+                                   rule_theory(2, smoothness::analytic));
   for (int k = 2; k < 2 + points; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
-    s.cells.push_back({nk, {{1.0 + 0.1 * std::pow(n, rate), nan, nk, 1e-8 * n}}});
+    s.cells.push_back(cell_at(nk, {repetition(1.0 + 0.1 * std::pow(n, rate), nan, nk, 1e-8 * n)}));
   }
   return s;
 }

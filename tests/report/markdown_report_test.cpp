@@ -1,6 +1,8 @@
 // Tests for markdown_report.hpp: header, slope summary, per-integrand tables, plot links.
 #include "quadmc/report/markdown_report.hpp"
 
+#include "../analysis/series_builder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,21 +14,29 @@
 namespace quadmc {
 namespace {
 
+using test::cell_at;
+using test::monte_carlo_theory;
+using test::repetition;
+using test::rule_theory;
+using test::series_of;
+
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<convergence_table> sample_tables() {
-  convergence_series rule{"genz|odd", 1, "trapezoid", "analytic", 2.0, {}, "", 0};
-  convergence_series mc{"genz|odd", 1, "plain_mc", "analytic", 2.0, {}, "", 0};
+  convergence_series rule = series_of("genz|odd", 1, "trapezoid", smoothness::analytic, 2.0,
+                                      rule_theory(2, smoothness::analytic));
+  convergence_series mc = series_of("genz|odd", 1, "plain_mc", smoothness::analytic, 2.0,
+                                    monte_carlo_theory(smoothness::analytic));
   for (int k = 1; k <= 26; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
     // Trapezoid-like 0.5·N⁻² reaching a floor of ±5e-16.
-    rule.cells.push_back(
-        {nk, {{2.0 + 0.5 / (n * n) + (k % 2 ? 5e-16 : -5e-16), nan, nk, 1e-8 * n}}});
+    rule.cells.push_back(cell_at(
+        nk, {repetition(2.0 + 0.5 / (n * n) + (k % 2 ? 5e-16 : -5e-16), nan, nk, 1e-8 * n)}));
     if (k <= 12) {
-      mc.cells.push_back({nk,
-                          {{2.0 + 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n},
-                           {2.0 - 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n}}});
+      mc.cells.push_back(
+          cell_at(nk, {repetition(2.0 + 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n),
+                       repetition(2.0 - 1.0 / std::sqrt(n), 1.0 / std::sqrt(n), nk, 1e-6 * n)}));
     }
   }
   return {analyse_convergence(rule), analyse_convergence(mc)};
@@ -36,11 +46,12 @@ std::vector<convergence_table> sample_tables() {
 // of convergence_table_test.cpp): an envelope series.
 convergence_table envelope_table() {
   const double c = 0.93750095367431640625;
-  convergence_series series{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  convergence_series series = series_of("step", 1, "midpoint", smoothness::discontinuous, 1.0 - c,
+                                        rule_theory(2, smoothness::discontinuous));
   for (int k = 4; k <= 10; ++k) {
     const auto n = static_cast<std::uint64_t>(1) << k;
-    series.cells.push_back(
-        {n, {{1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9}}, n, 0.5 / static_cast<double>(n)});
+    series.cells.push_back(cell_at(n, {repetition(1.0 - c + std::ldexp(1.0, -20), nan, n, 1e-9)}, n,
+                                   0.5 / static_cast<double>(n)));
   }
   return analyse_convergence(series);
 }

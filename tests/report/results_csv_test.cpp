@@ -2,6 +2,8 @@
 // added columns, strictness about missing ones.
 #include "quadmc/report/results_csv.hpp"
 
+#include "../analysis/series_builder.hpp"
+
 #include "quadmc/core/errors.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +18,12 @@
 
 namespace quadmc {
 namespace {
+
+using test::cell_at;
+using test::monte_carlo_theory;
+using test::repetition;
+using test::rule_theory;
+using test::series_of;
 
 namespace fs = std::filesystem;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -43,16 +51,18 @@ void write(const fs::path& file, const std::string& text) {
 // 0.5/N that its error 0.3/N stays under) with an awkward integrand name, and a Monte Carlo
 // method with coverage and no envelope.
 std::vector<convergence_table> sample_tables() {
-  convergence_series rule{"step, \"shifted\"", 1,  "midpoint", "discontinuous",
-                          1.0 / 3.0,           {}, "",         0};
-  convergence_series mc{"genz_gaussian", 2, "plain_mc", "analytic", 0.7, {}, "", 0};
+  convergence_series rule = series_of("step, \"shifted\"", 1, "midpoint", smoothness::discontinuous,
+                                      1.0 / 3.0, rule_theory(2, smoothness::discontinuous));
+  convergence_series mc = series_of("genz_gaussian", 2, "plain_mc", smoothness::analytic, 0.7,
+                                    monte_carlo_theory(smoothness::analytic, 2));
   for (int k = 2; k <= 6; ++k) {
     const double n = std::ldexp(1.0, k);
     const auto nk = static_cast<std::uint64_t>(n);
-    rule.cells.push_back({nk, {{1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n}}, nk, 0.5 / n});
-    mc.cells.push_back({nk,
-                        {{0.7 + 0.2 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 1e-6},
-                         {0.7 - 0.3 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 2e-6}}});
+    rule.cells.push_back(
+        cell_at(nk, {repetition(1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n)}, nk, 0.5 / n));
+    mc.cells.push_back(
+        cell_at(nk, {repetition(0.7 + 0.2 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 1e-6),
+                     repetition(0.7 - 0.3 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 2e-6)}));
   }
   return {analyse_convergence(rule), analyse_convergence(mc)};
 }
@@ -63,7 +73,7 @@ TEST(ResultsCsv, ExactHeaderLines) {
   EXPECT_EQ(conv.substr(0, conv.find('\n')),
             "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
-            "smoothness,envelope");
+            "smoothness,envelope,tolerance,error_estimate");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"

@@ -1,6 +1,8 @@
 // Tests for results_folder.hpp: the three files appear together and agree.
 #include "quadmc/report/results_folder.hpp"
 
+#include "../analysis/series_builder.hpp"
+
 #include "quadmc/report/results_csv.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +18,12 @@
 
 namespace quadmc {
 namespace {
+
+using test::cell_at;
+using test::monte_carlo_theory;
+using test::repetition;
+using test::rule_theory;
+using test::series_of;
 
 namespace fs = std::filesystem;
 
@@ -34,10 +42,11 @@ struct temporary_directory {
 
 TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   const temporary_directory dir;
-  convergence_series s{"f", 2, "simpson", "smooth", 1.0, {}, "", 0};
+  convergence_series s =
+      series_of("f", 2, "simpson", smoothness::smooth, 1.0, rule_theory(4, smoothness::smooth, 2));
   for (std::uint64_t n : {9u, 25u, 81u, 289u}) {
-    s.cells.push_back(
-        {n, {{1.0 + 1.0 / (n * n), std::numeric_limits<double>::quiet_NaN(), n, 1e-6}}});
+    s.cells.push_back(cell_at(
+        n, {repetition(1.0 + 1.0 / (n * n), std::numeric_limits<double>::quiet_NaN(), n, 1e-6)}));
   }
   const std::vector<convergence_table> tables = {analyse_convergence(s)};
   run_info info;
@@ -62,13 +71,13 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
 TEST(ResultsFolder, EnvelopeVerdictReachesSlopesCsvAndTheReadme) {
   const temporary_directory dir;
   const double c = 0.93750095367431640625;  // 1/2 + 1/4 + 1/8 + 1/16 + 2⁻²⁰
-  convergence_series s{"step", 1, "midpoint", "discontinuous", 1.0 - c, {}, "", 2};
+  convergence_series s = series_of("step", 1, "midpoint", smoothness::discontinuous, 1.0 - c,
+                                   rule_theory(2, smoothness::discontinuous));
   for (std::uint64_t n = 16; n <= 4096; n *= 2) {
-    s.cells.push_back(
-        {n,
-         {{1.0 - c + std::ldexp(1.0, -20), std::numeric_limits<double>::quiet_NaN(), n, 1e-6}},
-         n,
-         0.5 / static_cast<double>(n)});
+    s.cells.push_back(cell_at(n,
+                              {repetition(1.0 - c + std::ldexp(1.0, -20),
+                                          std::numeric_limits<double>::quiet_NaN(), n, 1e-6)},
+                              n, 0.5 / static_cast<double>(n)));
   }
   const std::vector<convergence_table> tables = {analyse_convergence(s)};
   run_info info;
@@ -92,8 +101,9 @@ TEST(ResultsFolder, EnvelopeVerdictReachesSlopesCsvAndTheReadme) {
 
 TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
   const temporary_directory dir;
-  convergence_series s{"f", 1, "plain_mc", "smooth", 1.0, {}, "", 0};
-  s.cells.push_back({16, {{1.1, 0.1, 16, 1e-6}}});
+  convergence_series s = series_of("f", 1, "plain_mc", smoothness::smooth, 1.0,
+                                   monte_carlo_theory(smoothness::smooth));
+  s.cells.push_back(cell_at(16, {repetition(1.1, 0.1, 16, 1e-6)}));
   const std::vector<convergence_table> tables = {analyse_convergence(s)};
   run_info info;
   info.scene = "unit";

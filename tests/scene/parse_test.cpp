@@ -2,6 +2,9 @@
 // scene_error naming the file, the line of the offending key and the key.
 #include "quadmc/scene/parse.hpp"
 
+#include "quadmc/functions/catalogue.hpp"
+#include "quadmc/methods/registry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -12,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -112,7 +116,8 @@ TEST(ParseScene, DefaultsWhenOptionalKeysAreOmitted) {
   EXPECT_EQ(sc.seed, 0u);
   EXPECT_EQ(sc.threads, 0u);  // all cores
   EXPECT_EQ(sc.methods[0].repetitions, 32u);
-  EXPECT_EQ(sc.methods[0].m, 3u);
+  EXPECT_EQ(sc.methods[0].control, cell_control::fixed_size);
+  EXPECT_TRUE(sc.methods[0].tolerances.empty());
   EXPECT_FALSE(sc.budget.max_evaluations.has_value());
   EXPECT_TRUE(sc.output.csv && sc.output.markdown && sc.output.plots);
 }
@@ -173,12 +178,35 @@ plots = false
 [budget]
 max_seconds = 60)"));
   ASSERT_EQ(sc.methods.size(), 4u);
-  EXPECT_EQ(sc.methods[2].m, 5u);
-  EXPECT_EQ(sc.methods[2].panels, (std::vector<std::uint64_t>{1, 2, 4}));
-  EXPECT_EQ(sc.methods[3].warp, "power");
-  EXPECT_EQ(sc.methods[3].warp_parameter, 2.0);
-  EXPECT_EQ(sc.methods[3].point_set, "jittered");
+  // The options reached the configured methods: m = 5 is order 10; the panels replace the
+  // ladder with n = 1, 2, 4 (5, 10, 20 nodes per axis).
+  const method& gauss = *sc.methods[2].configured;
+  EXPECT_EQ(gauss.theory({smoothness::smooth, 1}).slope, -10.0);
+  std::vector<std::uint64_t> panels, nodes;
+  for (const sizing& size : gauss.explicit_sizes(1)) {
+    ASSERT_TRUE(size.size) << size.reason;
+    panels.push_back(size.size->per_axis);
+    nodes.push_back(size.size->points_per_axis);
+  }
+  EXPECT_EQ(panels, (std::vector<std::uint64_t>{1, 2, 4}));
+  EXPECT_EQ(nodes, (std::vector<std::uint64_t>{5, 10, 20}));
+  // The warp's exponent and the point set: the same estimates as the method configured from C++
+  // with them (and not as with another exponent).
+  const method& importance = *sc.methods[3].configured;
   EXPECT_EQ(sc.methods[3].label, "importance_power_jittered");
+  const integrand_params params;
+  const any_integrand f = make_integrand("exp", params);
+  const cell_size size{1024, 32, 0, 0};
+  const method_cell cell{
+      f, params, size, cell_control::fixed_size, std::numeric_limits<double>::quiet_NaN(), 3};
+  const run_context context{7, 1};
+  const double value = importance.run(cell, context).value;
+  auto warp = [](double exponent) {
+    return option_table{{"warp", option_table{{"name", "power"}, {"exponent", exponent}}},
+                        {"point_set", "jittered"}};
+  };
+  EXPECT_EQ(make_method("importance", warp(2.0))->run(cell, context).value, value);
+  EXPECT_NE(make_method("importance", warp(3.0))->run(cell, context).value, value);
   EXPECT_EQ(sc.methods[3].integrands, (std::vector<std::string>{"genz_gaussian_s2"}));
   EXPECT_FALSE(sc.output.plots);
   EXPECT_TRUE(sc.output.csv);
@@ -196,12 +224,9 @@ name = "gauss_legendre"
 accumulator = "long_double"
 [budget])"));
   ASSERT_EQ(sc.methods.size(), 4u);
-  EXPECT_EQ(sc.methods[0].accumulator, summation::pairwise) << "the default";
-  EXPECT_FALSE(sc.methods[0].accumulator_given);
-  EXPECT_EQ(sc.methods[0].label, "simpson");
-  EXPECT_EQ(sc.methods[2].accumulator, summation::naive);
+  // (That the accumulator reaches the kernel: tests/scene/run_test.cpp.)
+  EXPECT_EQ(sc.methods[0].label, "simpson") << "the default accumulator adds no suffix";
   EXPECT_EQ(sc.methods[2].label, "simpson_naive");
-  EXPECT_EQ(sc.methods[3].accumulator, summation::long_double);
   EXPECT_EQ(sc.methods[3].label, "gauss_legendre_long_double");
 }
 

@@ -11,6 +11,19 @@
 #include <string>
 
 namespace quadmc {
+namespace {
+
+// 1, or for x above 2^200 the power of two c with c ≤ x < 2c: x/c < 2 squares (and its square
+// squares) without overflow, and dividing by a power of two is exact, so statistics of x/c times
+// c are those of x, bit for bit below 2^200.
+double squaring_scale(double x) {
+  if (!(x > 0x1p200)) return 1.0;
+  int exponent = 0;
+  (void)std::frexp(x, &exponent);        // 2^(exponent − 1) ≤ x < 2^exponent
+  return std::ldexp(1.0, exponent - 1);  // ≤ 2^1023: finite
+}
+
+}  // namespace
 
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference) {
@@ -24,6 +37,9 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
             "a finite time >= 0");
     require(std::isnan(rep.std_error) || (std::isfinite(rep.std_error) && rep.std_error >= 0.0),
             where + ".std_error", rep.std_error, "NaN (none) or a finite value >= 0");
+    require(std::isnan(rep.error_estimate) ||
+                (std::isfinite(rep.error_estimate) && rep.error_estimate >= 0.0),
+            where + ".error_estimate", rep.error_estimate, "NaN (none) or a finite value >= 0");
   }
 
   // Large errors are divided by a power of two c before they are squared: e² overflows above
@@ -37,12 +53,7 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
             "a finite error (estimate and reference are too far apart for double)");
     largest_error = std::max(largest_error, std::abs(error));
   }
-  double scale = 1.0;
-  if (largest_error > 0x1p200) {
-    int exponent = 0;
-    (void)std::frexp(largest_error, &exponent);  // 2^(exponent − 1) ≤ largest_error < 2^exponent
-    scale = std::ldexp(1.0, exponent - 1);       // ≤ 2^1023: finite
-  }
+  const double scale = squaring_scale(largest_error);
   const double inverse_scale = 1.0 / scale;  // exact: a power of two ≥ 2^-1023
 
   const double count = static_cast<double>(repetitions.size());
@@ -88,6 +99,26 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
     }
   }
   if (every_rep_has_std_error) out.coverage_95 = static_cast<double>(covered) / count;
+  // The estimates' root mean square, scaled like the errors so that it cannot overflow where the
+  // RMSE does not.
+  neumaier_sum estimate_square_sum;
+  double largest_estimate = 0.0;
+  for (const repetition_result& rep : repetitions) {
+    largest_estimate = std::max(largest_estimate, rep.error_estimate);  // NaN stays out of max
+  }
+  bool every_rep_has_estimate = true;
+  const double estimate_scale = squaring_scale(largest_estimate);
+  for (const repetition_result& rep : repetitions) {
+    if (std::isnan(rep.error_estimate)) {
+      every_rep_has_estimate = false;
+      break;
+    }
+    const double scaled = rep.error_estimate / estimate_scale;
+    estimate_square_sum += scaled * scaled;
+  }
+  if (every_rep_has_estimate) {
+    out.error_estimate = std::sqrt(estimate_square_sum.value() / count) * estimate_scale;
+  }
   out.seconds = seconds_sum.value();
   if (out.seconds > 0.0) out.evals_per_second = static_cast<double>(evaluations) / out.seconds;
   return out;

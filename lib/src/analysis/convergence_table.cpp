@@ -14,28 +14,45 @@ convergence_table analyse_convergence(const convergence_series& series,
                                       const analysis_options& options) {
   require(!series.cells.empty(), "cells", series.cells.size(),
           fmt::format("at least one cell for {} / {}", series.integrand, series.method));
+  require(series.s >= 1, "s", series.s,
+          fmt::format("a dimension >= 1 for {} / {}", series.integrand, series.method));
   convergence_table table;
   table.integrand = series.integrand;
   table.s = series.s;
   table.method = series.method;
-  table.smoothness = series.smoothness;
+  table.regularity = series.regularity;
   table.reference = series.reference;
-  // Validates smoothness and s before any work.
-  table.theory =
-      theoretical_slope(series.method_name.empty() ? series.method : series.method_name,
-                        series.smoothness, series.s, series.order, series.singularity_exponent);
+  table.theory = series.theory;
 
+  // Sized cells in increasing N; cells run to a tolerance in decreasing tolerance, the order in
+  // which a convergent method spends more.
+  const bool to_tolerance = !std::isnan(series.cells.front().tolerance);
   std::vector<const convergence_cell*> cells;
-  for (const convergence_cell& cell : series.cells) cells.push_back(&cell);
-  std::stable_sort(
-      cells.begin(), cells.end(),
-      [](const convergence_cell* a, const convergence_cell* b) { return a->n < b->n; });
+  for (const convergence_cell& cell : series.cells) {
+    require(std::isnan(cell.tolerance) != to_tolerance, "tolerance", cell.tolerance,
+            fmt::format("cells of one kind in a series, all sized or all run to a tolerance ({} / "
+                        "s = {} / {})",
+                        series.integrand, series.s, series.method));
+    cells.push_back(&cell);
+  }
+  std::stable_sort(cells.begin(), cells.end(),
+                   [&](const convergence_cell* a, const convergence_cell* b) {
+                     return to_tolerance ? a->tolerance > b->tolerance : a->n < b->n;
+                   });
 
   for (const convergence_cell* cell : cells) {
-    const std::string where = fmt::format("cell N = {} of {} / s = {} / {}", cell->n,
-                                          series.integrand, series.s, series.method);
-    require(table.rows.empty() || cell->n != table.rows.back().n, "N", cell->n,
-            "distinct N in a series (" + where + ")");
+    const std::string where =
+        to_tolerance ? fmt::format("cell tolerance = {} of {} / s = {} / {}", cell->tolerance,
+                                   series.integrand, series.s, series.method)
+                     : fmt::format("cell N = {} of {} / s = {} / {}", cell->n, series.integrand,
+                                   series.s, series.method);
+    if (to_tolerance) {
+      require(table.rows.empty() || cell->tolerance != table.rows.back().tolerance, "tolerance",
+              cell->tolerance, "distinct tolerances in a series (" + where + ")");
+    } else {
+      require(table.rows.empty() || cell->n != table.rows.back().n, "N", cell->n,
+              "distinct N in a series (" + where + ")");
+    }
     require(std::isnan(cell->error_envelope) || cell->error_envelope >= 0.0, "error_envelope",
             cell->error_envelope, "a bound >= 0 on |error|, or NaN for none (" + where + ")");
     require(std::isnan(cell->error_envelope) == std::isnan(series.cells.front().error_envelope),
@@ -43,6 +60,7 @@ convergence_table analyse_convergence(const convergence_series& series,
             "an envelope on every cell of the series or on none (" + where + ")");
     convergence_row row;
     row.n = cell->n;
+    row.tolerance = cell->tolerance;
     row.per_axis = cell->per_axis;
     row.envelope = cell->error_envelope;
     try {
@@ -50,15 +68,32 @@ convergence_table analyse_convergence(const convergence_series& series,
     } catch (const invalid_argument& e) {
       throw invalid_argument(fmt::format("{}: {}", where, e.what()));
     }
-    require(table.rows.empty() || row.stats.evaluations > table.rows.back().stats.evaluations,
-            "evaluations", row.stats.evaluations,
-            "more evaluations than the previous N of the ladder (" + where + ")");
+    if (to_tolerance) {
+      require(table.rows.empty() || row.stats.evaluations >= table.rows.back().stats.evaluations,
+              "evaluations", row.stats.evaluations,
+              "at least the evaluations of the previous, looser tolerance (" + where + ")");
+    } else {
+      require(table.rows.empty() || row.stats.evaluations > table.rows.back().stats.evaluations,
+              "evaluations", row.stats.evaluations,
+              "more evaluations than the previous N of the ladder (" + where + ")");
+    }
     table.rows.push_back(row);
   }
 
+  // The ladder the floor rule, the fit and the work-precision table see: one point per distinct
+  // evaluation count (for tolerance cells, the first row that spent it; sized cells are
+  // distinct already).
+  std::vector<std::size_t> ladder;
+  for (std::size_t k = 0; k < table.rows.size(); ++k) {
+    if (ladder.empty() ||
+        table.rows[k].stats.evaluations != table.rows[ladder.back()].stats.evaluations) {
+      ladder.push_back(k);
+    }
+  }
   std::vector<double> evaluations, errors, seconds;
   double largest_error = 0.0;
-  for (const convergence_row& row : table.rows) {
+  for (const std::size_t k : ladder) {
+    const convergence_row& row = table.rows[k];
     evaluations.push_back(static_cast<double>(row.stats.evaluations));
     errors.push_back(row.stats.rmse);
     seconds.push_back(row.stats.seconds_per_repetition());
@@ -78,24 +113,34 @@ convergence_table analyse_convergence(const convergence_series& series,
   table.floor =
       in_series([&] { return detect_rounding_floor(evaluations, errors, scale, options.floor); });
 
+  // A row shares the floor flag of the ladder point that spent its evaluations; the table's
+  // floor is then stated per row, like everything else in it.
   std::vector<double> fit_n, fit_error;
-  for (std::size_t k = 0; k < table.rows.size(); ++k) {
-    table.rows[k].floor = table.floor.flags[k];
-    if (!table.rows[k].floor) {
-      fit_n.push_back(evaluations[k]);
-      fit_error.push_back(errors[k]);
+  std::vector<bool> row_flags(table.rows.size(), false);
+  for (std::size_t p = 0; p < ladder.size(); ++p) {
+    const std::size_t end = p + 1 < ladder.size() ? ladder[p + 1] : table.rows.size();
+    for (std::size_t k = ladder[p]; k < end; ++k) {
+      table.rows[k].floor = table.floor.flags[p];
+      row_flags[k] = table.floor.flags[p];
+    }
+    if (!table.floor.flags[p]) {
+      fit_n.push_back(evaluations[p]);
+      fit_error.push_back(errors[p]);
     }
   }
+  if (table.floor.first) table.floor.first = ladder[*table.floor.first];
+  table.floor.flags = std::move(row_flags);
   table.fit = in_series([&] { return fit_power_law(fit_n, fit_error, options.confidence); });
   if (table.has_envelope()) {
     std::vector<double> judged_error, allowed;
-    for (std::size_t k = 0; k < table.rows.size(); ++k) {
-      const convergence_row& row = table.rows[k];
+    for (const convergence_row& row : table.rows) {
       if (row.floor) continue;
-      judged_error.push_back(errors[k]);
-      allowed.push_back(row.envelope + rounding_level(evaluations[k], scale, options.floor));
+      const double error = row.stats.rmse;
+      const auto n = static_cast<double>(row.stats.evaluations);
+      judged_error.push_back(error);
+      allowed.push_back(row.envelope + rounding_level(n, scale, options.floor));
       const double ratio =
-          row.envelope > 0.0 ? errors[k] / row.envelope : std::numeric_limits<double>::infinity();
+          row.envelope > 0.0 ? error / row.envelope : std::numeric_limits<double>::infinity();
       table.envelope_ratio =
           std::isnan(table.envelope_ratio) ? ratio : std::max(table.envelope_ratio, ratio);
     }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 namespace quadmc {
@@ -36,103 +37,6 @@ constexpr std::string_view genz_doc =
     "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b), "
     "not subnormal, and such that f's values and ∫f are normal doubles; u: shift in [0,1], "
     "length s (default: drawn from seed)";
-
-const std::array<catalogue_entry, 26> entries = {{
-    {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
-     genz_doc},
-    {"genz_product_peak", "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys,
-     no_keys, genz_doc},
-    {"genz_corner_peak", "(1 + Σ aᵢxᵢ)^−(s+1) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
-     "as the other Genz families; s ≤ 20 (its closed form sums 2^s terms in 50-digit arithmetic "
-     "and must carry a rounding bound ≤ 1e-10, true for Genz's difficulty at every s ≤ 20)"},
-    {"genz_gaussian", "exp(−Σ aᵢ²(xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
-     genz_doc},
-    {"genz_continuous", "exp(−Σ aᵢ|xᵢ − uᵢ|) on [0,1]^s", "C0", genz_vector_keys, no_keys,
-     genz_doc},
-    {"genz_discontinuous", "0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ) on [0,1]^s",
-     "discontinuous", genz_discontinuous_keys, no_keys,
-     "a, u as the other Genz families; cut: 1-based indices of the cut coordinates, distinct, in "
-     "1..s (default [1, 2], [1] when s = 1; [1, …, s] cuts every coordinate)"},
-    {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1), |lower|, |upper| ≤ 1e51; dimension 1"},
-    {"exp", "eˣ on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1), upper ≤ 709.78; dimension 1"},
-    {"sin", "sin x on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, π), of finite width; dimension 1"},
-    {"inverse_quadratic", "1/(1 + x²) on [0, 1]", "analytic", no_keys, no_keys,
-     "no parameters; dimension 1"},
-    {"sqrt", "√x on [0, 1]", "singular", no_keys, no_keys, "no parameters; dimension 1"},
-    {"abs_kink", "|x − c| on [0, 1]", "C0", no_keys, c_key,
-     "c: the kink, in [0, 1] (default 0.3); dimension 1"},
-    {"step", "1 if x ≥ c else 0 on [0, 1]", "discontinuous", no_keys, c_key,
-     "c: the jump, in [0, 1] (default 0.3); dimension 1"},
-    {"disk_indicator", "1 if ‖x − center‖ ≤ r else 0 on [0,1]^s (disk for s = 2, ball otherwise)",
-     "discontinuous", center_key, r_key,
-     "center: length s (default all 0.5); r: radius > 0 (default 0.45); the ball must lie "
-     "inside the cube"},
-    {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
-     "w: weights > 0 of any magnitude, within 2^1021 of each other, length s (default all 1); t: "
-     "in (0, Σw) (default 0.6·Σw); s ≤ 20"},
-    {"sobol_g", "Π (|4xᵢ − 2| + aᵢ)/(1 + aᵢ) on [0,1]^s", "C0", a_key, no_keys,
-     "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)"},
-    {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,
-     "no parameters; 1 ≤ s ≤ 20"},
-    {"irradiance_hemisphere", "2π·u₁·L_i(x, ω(u)) on [0,1]², uniform hemisphere map",
-     "discontinuous", no_keys, irradiance_keys,
-     "occluder: 0 or 1 (default 0), adds default_irradiance_setup's occluder; radiance: L > 0 "
-     "(default 1); dimension 2"},
-    {"irradiance_area", "L·A·V·cosθ·cosθ'/|x − x'|² on [0,1]², light parameters (s, t)",
-     "analytic (discontinuous with occluder)", no_keys, irradiance_keys,
-     "occluder: 0 or 1 (default 0); radiance: L > 0 (default 1); dimension 2"},
-    // Floating-point stress members (stability_1d.hpp).
-    {"shifted_exp", "e^((x − lower)/w)/w on [lower, upper], w = upper − lower; ∫ = e − 1",
-     "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1), any finite box with a finite width ≥ 2.2e-308; "
-     "dimension 1"},
-    {"cosc_naive", "(1 − cos x)/x² on [0, 1], computed as written (cancellation near 0)",
-     "analytic", no_keys, no_keys, "no parameters; dimension 1"},
-    {"cosc_stable", "2·sin²(x/2)/x² on [0, 1], the same function without cancellation", "analytic",
-     no_keys, no_keys, "no parameters; dimension 1"},
-    {"inverse_sqrt", "1/√x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
-     "no parameters; dimension 1"},
-    {"log", "log x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
-     "no parameters; dimension 1"},
-    {"exp_float", "eˣ on [lower, upper] evaluated in float", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, 1), upper ≤ 88.72; dimension 1"},
-    {"inverse_quadratic_float", "1/(1 + x²) on [0, 1] evaluated in float", "analytic", no_keys,
-     no_keys, "no parameters; dimension 1"},
-}};
-
-bool contains(std::span<const std::string_view> keys, std::string_view key) {
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
-}
-
-void check_keys(const catalogue_entry& e, const integrand_params& p) {
-  for (const auto& [key, value] : p.vectors) {
-    if (contains(e.vector_keys, key)) continue;
-    if (contains(e.scalar_keys, key)) {
-      throw invalid_argument(key, "a vector", fmt::format("a number for {}", e.name));
-    }
-    throw invalid_argument(
-        "key", key,
-        fmt::format("one of [{}] for {}", fmt::join(e.vector_keys, ", "), e.name) +
-            (e.scalar_keys.empty()
-                 ? ""
-                 : fmt::format(" or a number [{}]", fmt::join(e.scalar_keys, ", "))));
-  }
-  for (const auto& [key, value] : p.scalars) {
-    if (contains(e.scalar_keys, key)) continue;
-    if (contains(e.vector_keys, key)) {
-      throw invalid_argument(key, quote(value), fmt::format("a vector for {}", e.name));
-    }
-    throw invalid_argument(
-        "key", key,
-        fmt::format("one of [{}] for {}", fmt::join(e.scalar_keys, ", "), e.name) +
-            (e.vector_keys.empty()
-                 ? ""
-                 : fmt::format(" or a vector [{}]", fmt::join(e.vector_keys, ", "))));
-  }
-}
 
 std::size_t dimension_or(const integrand_params& p, std::size_t default_s) {
   return p.dimension == 0 ? default_s : p.dimension;
@@ -157,11 +61,11 @@ std::vector<double> vector_of_length(const integrand_params& p, std::string_view
   return it->second;
 }
 
-template <class Family>
-any_integrand make_genz(genz_family f, const integrand_params& p) {
+template <class Family, genz_family F>
+any_integrand make_genz(const integrand_params& p) {
   const std::size_t s = dimension_or(p, 1);
   require(s >= 1, "dimension", s, "s ≥ 1");
-  genz_parameters drawn = genz_random_parameters(f, s, p.seed);
+  genz_parameters drawn = genz_random_parameters(F, s, p.seed);
   std::vector<double> a = vector_of_length(p, "a", s, std::move(drawn.a));
   std::vector<double> u = vector_of_length(p, "u", s, std::move(drawn.u));
   if constexpr (std::is_same_v<Family, genz_discontinuous>) {
@@ -180,7 +84,182 @@ any_integrand make_genz(genz_family f, const integrand_params& p) {
   }
 }
 
+// The parameters a Genz family draws from the seed when the scene omits them (genz.hpp).
+template <genz_family F>
+drawn_parameters draw_genz(std::size_t s, std::uint64_t seed) {
+  genz_parameters drawn = genz_random_parameters(F, s, seed);
+  return {{"a", std::move(drawn.a)}, {"u", std::move(drawn.u)}};
+}
+
+// 1D families on an interval [lower, upper] with a default.
+template <class Family, double Lower, double Upper>
+any_integrand make_interval(const integrand_params& p) {
+  return any_integrand(Family(scalar_or(p, "lower", Lower), scalar_or(p, "upper", Upper)));
+}
+
+// 1D families without parameters.
+template <class Family>
+any_integrand make_fixed(const integrand_params& /*params*/) {
+  return any_integrand(Family{});
+}
+
+// 1D families with a kink or jump at c (default 0.3).
+template <class Family>
+any_integrand make_located(const integrand_params& p) {
+  return any_integrand(Family(scalar_or(p, "c", 0.3)));
+}
+
+any_integrand make_disk(const integrand_params& p) {
+  const std::size_t s = dimension_or(p, 1);
+  return any_integrand(ball_indicator(vector_of_length(p, "center", s, std::vector<double>(s, 0.5)),
+                                      scalar_or(p, "r", 0.45)));
+}
+
+any_integrand make_half_space(const integrand_params& p) {
+  const std::size_t s = dimension_or(p, 1);
+  std::vector<double> w = vector_of_length(p, "w", s, std::vector<double>(s, 1.0));
+  // 0.6·Σw; when Σw overflows (weights near 1e308), as Σ 0.6·wᵢ, which may still be finite.
+  double t = 0.6 * std::accumulate(w.begin(), w.end(), 0.0);
+  if (!std::isfinite(t)) {
+    t = 0.0;
+    for (double wi : w) t += 0.6 * wi;
+  }
+  return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", t)));
+}
+
+any_integrand make_sobol_g(const integrand_params& p) {
+  const std::size_t s = dimension_or(p, 1);
+  require(s >= 1, "dimension", s, "s ≥ 1");
+  return any_integrand(sobol_g(vector_of_length(p, "a", s, sobol_g::default_a(s))));
+}
+
+any_integrand make_keister(const integrand_params& p) {
+  return any_integrand(keister(dimension_or(p, 1)));
+}
+
+template <class Family>
+any_integrand make_irradiance(const integrand_params& p) {
+  return any_integrand(Family(make_irradiance_setup(p)));
+}
+
+const std::array<catalogue_entry, 26> entries = {{
+    {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     genz_doc, make_genz<genz_oscillatory, genz_family::oscillatory>,
+     draw_genz<genz_family::oscillatory>, false, false, 0},
+    {"genz_product_peak", "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys,
+     no_keys, genz_doc, make_genz<genz_product_peak, genz_family::product_peak>,
+     draw_genz<genz_family::product_peak>, false, false, 0},
+    {"genz_corner_peak", "(1 + Σ aᵢxᵢ)^−(s+1) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     "as the other Genz families; s ≤ 20 (its closed form sums 2^s terms in 50-digit arithmetic "
+     "and must carry a rounding bound ≤ 1e-10, true for Genz's difficulty at every s ≤ 20)",
+     make_genz<genz_corner_peak, genz_family::corner_peak>, draw_genz<genz_family::corner_peak>,
+     false, true, 0},
+    {"genz_gaussian", "exp(−Σ aᵢ²(xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
+     genz_doc, make_genz<genz_gaussian, genz_family::gaussian>, draw_genz<genz_family::gaussian>,
+     false, false, 0},
+    {"genz_continuous", "exp(−Σ aᵢ|xᵢ − uᵢ|) on [0,1]^s", "C0", genz_vector_keys, no_keys, genz_doc,
+     make_genz<genz_continuous, genz_family::continuous>, draw_genz<genz_family::continuous>, false,
+     false, 0},
+    {"genz_discontinuous", "0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ) on [0,1]^s",
+     "discontinuous", genz_discontinuous_keys, no_keys,
+     "a, u as the other Genz families; cut: 1-based indices of the cut coordinates, distinct, in "
+     "1..s (default [1, 2], [1] when s = 1; [1, …, s] cuts every coordinate)",
+     make_genz<genz_discontinuous, genz_family::discontinuous>,
+     draw_genz<genz_family::discontinuous>, false, false, 0},
+    {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1), |lower|, |upper| ≤ 1e51; dimension 1",
+     make_interval<poly_1d, 0.0, 1.0>, nullptr, false, false, 1},
+    {"exp", "eˣ on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1), upper ≤ 709.78; dimension 1",
+     make_interval<exp_1d, 0.0, 1.0>, nullptr, false, false, 1},
+    {"sin", "sin x on [lower, upper]", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, π), of finite width; dimension 1",
+     make_interval<sin_1d, 0.0, std::numbers::pi>, nullptr, false, false, 1},
+    {"inverse_quadratic", "1/(1 + x²) on [0, 1]", "analytic", no_keys, no_keys,
+     "no parameters; dimension 1", make_fixed<inverse_quadratic_1d>, nullptr, false, false, 1},
+    {"sqrt", "√x on [0, 1]", "singular", no_keys, no_keys, "no parameters; dimension 1",
+     make_fixed<sqrt_1d>, nullptr, false, false, 1},
+    {"abs_kink", "|x − c| on [0, 1]", "C0", no_keys, c_key,
+     "c: the kink, in [0, 1] (default 0.3); dimension 1", make_located<abs_kink_1d>, nullptr, false,
+     false, 1},
+    {"step", "1 if x ≥ c else 0 on [0, 1]", "discontinuous", no_keys, c_key,
+     "c: the jump, in [0, 1] (default 0.3); dimension 1", make_located<step_1d>, nullptr, false,
+     false, 1},
+    {"disk_indicator", "1 if ‖x − center‖ ≤ r else 0 on [0,1]^s (disk for s = 2, ball otherwise)",
+     "discontinuous", center_key, r_key,
+     "center: length s (default all 0.5); r: radius > 0 (default 0.45); the ball must lie "
+     "inside the cube",
+     make_disk, nullptr, false, false, 0},
+    {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
+     "w: weights > 0 of any magnitude, within 2^1021 of each other, length s (default all 1); t: "
+     "in (0, Σw) (default 0.6·Σw); s ≤ 20",
+     make_half_space, nullptr, false, true, 0},
+    {"sobol_g", "Π (|4xᵢ − 2| + aᵢ)/(1 + aᵢ) on [0,1]^s", "C0", a_key, no_keys,
+     "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)", make_sobol_g, nullptr, false, false, 0},
+    {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,
+     "no parameters; 1 ≤ s ≤ 20", make_keister, nullptr, false, false, 0},
+    {"irradiance_hemisphere", "2π·u₁·L_i(x, ω(u)) on [0,1]², uniform hemisphere map",
+     "discontinuous", no_keys, irradiance_keys,
+     "occluder: 0 or 1 (default 0), adds default_irradiance_setup's occluder; radiance: L > 0 "
+     "(default 1); dimension 2",
+     make_irradiance<irradiance_hemisphere>, nullptr, true, false, 2},
+    {"irradiance_area", "L·A·V·cosθ·cosθ'/|x − x'|² on [0,1]², light parameters (s, t)",
+     "analytic (discontinuous with occluder)", no_keys, irradiance_keys,
+     "occluder: 0 or 1 (default 0); radiance: L > 0 (default 1); dimension 2",
+     make_irradiance<irradiance_area>, nullptr, true, false, 2},
+    // Floating-point stress members (stability_1d.hpp).
+    {"shifted_exp", "e^((x − lower)/w)/w on [lower, upper], w = upper − lower; ∫ = e − 1",
+     "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1), any finite box with a finite width ≥ 2.2e-308; "
+     "dimension 1",
+     make_interval<shifted_exp_1d, 0.0, 1.0>, nullptr, false, false, 1},
+    {"cosc_naive", "(1 − cos x)/x² on [0, 1], computed as written (cancellation near 0)",
+     "analytic", no_keys, no_keys, "no parameters; dimension 1", make_fixed<cosc_naive_1d>, nullptr,
+     false, false, 1},
+    {"cosc_stable", "2·sin²(x/2)/x² on [0, 1], the same function without cancellation", "analytic",
+     no_keys, no_keys, "no parameters; dimension 1", make_fixed<cosc_stable_1d>, nullptr, false,
+     false, 1},
+    {"inverse_sqrt", "1/√x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
+     "no parameters; dimension 1", make_fixed<inverse_sqrt_1d>, nullptr, false, false, 1},
+    {"log", "log x on [0, 1], 0 at x = 0", "singular", no_keys, no_keys,
+     "no parameters; dimension 1", make_fixed<log_1d>, nullptr, false, false, 1},
+    {"exp_float", "eˣ on [lower, upper] evaluated in float", "analytic", no_keys, interval_keys,
+     "lower, upper: the interval (default 0, 1), upper ≤ 88.72; dimension 1",
+     make_interval<exp_float_1d, 0.0, 1.0>, nullptr, false, false, 1},
+    {"inverse_quadratic_float", "1/(1 + x²) on [0, 1] evaluated in float", "analytic", no_keys,
+     no_keys, "no parameters; dimension 1", make_fixed<inverse_quadratic_float_1d>, nullptr, false,
+     false, 1},
+}};
 }  // namespace
+
+std::optional<key_problem> find_key_problem(const catalogue_entry& e, const integrand_params& p) {
+  auto contains = [](std::span<const std::string_view> keys, std::string_view key) {
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+  };
+  auto list_of = [](std::span<const std::string_view> keys) {
+    return keys.empty() ? std::string("none") : fmt::format("{}", fmt::join(keys, ", "));
+  };
+  const std::string parameters =
+      fmt::format("arrays: {}; numbers: {}", list_of(e.vector_keys), list_of(e.scalar_keys));
+  for (const auto& [key, value] : p.vectors) {
+    if (contains(e.vector_keys, key)) continue;
+    if (contains(e.scalar_keys, key)) {
+      return key_problem{key, fmt::format("expected a number for {}, got an array", e.name)};
+    }
+    return key_problem{key, fmt::format("unknown key: not a parameter of {} (its parameters: {})",
+                                        e.name, parameters)};
+  }
+  for (const auto& [key, value] : p.scalars) {
+    if (contains(e.scalar_keys, key)) continue;
+    if (contains(e.vector_keys, key)) {
+      return key_problem{key,
+                         fmt::format("expected an array of numbers for {}, got {}", e.name, value)};
+    }
+    return key_problem{key, fmt::format("unknown key: not a parameter of {} (its parameters: {})",
+                                        e.name, parameters)};
+  }
+  return std::nullopt;
+}
 
 irradiance_setup make_irradiance_setup(const integrand_params& p) {
   require_fixed_dimension(p, 2, "irradiance");
@@ -195,10 +274,15 @@ std::span<const catalogue_entry> integrand_catalogue() {
   return entries;
 }
 
-const catalogue_entry& find_catalogue_entry(std::string_view name) {
+const catalogue_entry* find_family(std::string_view name) noexcept {
   for (const auto& e : entries) {
-    if (e.name == name) return e;
+    if (e.name == name) return &e;
   }
+  return nullptr;
+}
+
+const catalogue_entry& find_catalogue_entry(std::string_view name) {
+  if (const catalogue_entry* e = find_family(name)) return *e;
   std::vector<std::string_view> names;
   for (const auto& e : entries) names.push_back(e.name);
   throw invalid_argument("integrand", name, fmt::format("one of {}", fmt::join(names, ", ")));
@@ -206,72 +290,12 @@ const catalogue_entry& find_catalogue_entry(std::string_view name) {
 
 any_integrand make_integrand(std::string_view name, const integrand_params& p) {
   const catalogue_entry& e = find_catalogue_entry(name);
-  check_keys(e, p);
-  if (name == "genz_oscillatory") return make_genz<genz_oscillatory>(genz_family::oscillatory, p);
-  if (name == "genz_product_peak") {
-    return make_genz<genz_product_peak>(genz_family::product_peak, p);
+  if (const auto problem = find_key_problem(e, p)) {
+    throw invalid_argument::about(problem->key,
+                                  fmt::format("invalid {}: {}", problem->key, problem->message));
   }
-  if (name == "genz_corner_peak") return make_genz<genz_corner_peak>(genz_family::corner_peak, p);
-  if (name == "genz_gaussian") return make_genz<genz_gaussian>(genz_family::gaussian, p);
-  if (name == "genz_continuous") return make_genz<genz_continuous>(genz_family::continuous, p);
-  if (name == "genz_discontinuous") {
-    return make_genz<genz_discontinuous>(genz_family::discontinuous, p);
-  }
-  if (name == "poly" || name == "exp" || name == "sin" || name == "inverse_quadratic" ||
-      name == "sqrt" || name == "abs_kink" || name == "step" || name == "shifted_exp" ||
-      name == "cosc_naive" || name == "cosc_stable" || name == "inverse_sqrt" || name == "log" ||
-      name == "exp_float" || name == "inverse_quadratic_float") {
-    require_fixed_dimension(p, 1, name);
-  }
-  if (name == "poly")
-    return any_integrand(poly_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
-  if (name == "exp")
-    return any_integrand(exp_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
-  if (name == "sin") {
-    return any_integrand(
-        sin_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", std::numbers::pi)));
-  }
-  if (name == "inverse_quadratic") return any_integrand(inverse_quadratic_1d{});
-  if (name == "sqrt") return any_integrand(sqrt_1d{});
-  if (name == "abs_kink") return any_integrand(abs_kink_1d(scalar_or(p, "c", 0.3)));
-  if (name == "step") return any_integrand(step_1d(scalar_or(p, "c", 0.3)));
-  if (name == "shifted_exp") {
-    return any_integrand(shifted_exp_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
-  }
-  if (name == "cosc_naive") return any_integrand(cosc_naive_1d{});
-  if (name == "cosc_stable") return any_integrand(cosc_stable_1d{});
-  if (name == "inverse_sqrt") return any_integrand(inverse_sqrt_1d{});
-  if (name == "log") return any_integrand(log_1d{});
-  if (name == "exp_float") {
-    return any_integrand(exp_float_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
-  }
-  if (name == "inverse_quadratic_float") return any_integrand(inverse_quadratic_float_1d{});
-  if (name == "disk_indicator") {
-    const std::size_t s = dimension_or(p, 1);
-    return any_integrand(ball_indicator(
-        vector_of_length(p, "center", s, std::vector<double>(s, 0.5)), scalar_or(p, "r", 0.45)));
-  }
-  if (name == "half_space") {
-    const std::size_t s = dimension_or(p, 1);
-    std::vector<double> w = vector_of_length(p, "w", s, std::vector<double>(s, 1.0));
-    // 0.6·Σw; when Σw overflows (weights near 1e308), as Σ 0.6·wᵢ, which may still be finite.
-    double t = 0.6 * std::accumulate(w.begin(), w.end(), 0.0);
-    if (!std::isfinite(t)) {
-      t = 0.0;
-      for (double wi : w) t += 0.6 * wi;
-    }
-    return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", t)));
-  }
-  if (name == "sobol_g") {
-    const std::size_t s = dimension_or(p, 1);
-    require(s >= 1, "dimension", s, "s ≥ 1");
-    return any_integrand(sobol_g(vector_of_length(p, "a", s, sobol_g::default_a(s))));
-  }
-  if (name == "keister") return any_integrand(keister(dimension_or(p, 1)));
-  if (name == "irradiance_hemisphere")
-    return any_integrand(irradiance_hemisphere(make_irradiance_setup(p)));
-  if (name == "irradiance_area") return any_integrand(irradiance_area(make_irradiance_setup(p)));
-  throw invalid_argument("integrand", name, "a catalogue name with a constructor (internal error)");
+  if (e.fixed_dimension != 0) require_fixed_dimension(p, e.fixed_dimension, e.name);
+  return e.make(p);
 }
 
 }  // namespace quadmc

@@ -36,7 +36,10 @@ std::map<series_key, std::vector<convergence_record>> by_series(
   }
   for (auto& [key, list] : out) {
     std::sort(list.begin(), list.end(),
-              [](const convergence_record& x, const convergence_record& y) { return x.n < y.n; });
+              [](const convergence_record& x, const convergence_record& y) {
+                // Sized cells by N; cells run to a tolerance (N = 0) by decreasing tolerance.
+                return x.n != y.n ? x.n < y.n : x.tolerance > y.tolerance;
+              });
   }
   return out;
 }
@@ -171,8 +174,10 @@ compare_result compare_results(const std::filesystem::path& a, const std::filesy
     if (it == rows_b.end()) continue;
     const auto& list_b = it->second;
     for (const convergence_record& ra : list_a) {
-      const auto rb = std::find_if(list_b.begin(), list_b.end(),
-                                   [&](const convergence_record& r) { return r.n == ra.n; });
+      const auto rb = std::find_if(list_b.begin(), list_b.end(), [&](const convergence_record& r) {
+        return r.n == ra.n && (r.tolerance == ra.tolerance ||
+                               (std::isnan(r.tolerance) && std::isnan(ra.tolerance)));
+      });
       if (rb == list_b.end()) continue;
       error_comparison e{
           std::get<0>(key),

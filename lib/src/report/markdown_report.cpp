@@ -77,14 +77,24 @@ void append_method_table(std::string& out, const convergence_table& t) {
                         t.rows[*t.floor.first].n, t.floor_points(), sci(t.floor.floor_level))
           : std::string("no rounding floor reached"),
       sci(t.floor.attainable_accuracy));
+  // The method's own error estimate, where it has one (Monte Carlo's σ̂/√N, Romberg's last
+  // difference): a column beside the true error, so a reader sees how far to trust it.
+  const bool estimated = std::any_of(t.rows.begin(), t.rows.end(), [](const convergence_row& r) {
+    return !std::isnan(r.stats.error_estimate);
+  });
+  const bool to_tolerance = !t.rows.empty() && !std::isnan(t.rows.front().tolerance);
   out += fmt::format(
-      "| N | evaluations | {} |{} std error | coverage 95% | time (s) | evals/s | floor |\n",
-      deterministic ? "\\|error\\|" : "RMSE", enveloped ? " envelope |" : "");
-  out += fmt::format("|---:|---:|---:|{}---:|---:|---:|---:|:---:|\n", enveloped ? "---:|" : "");
+      "| {} | evaluations | {} |{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
+      to_tolerance ? "tolerance" : "N", deterministic ? "\\|error\\|" : "RMSE",
+      estimated ? " error estimate |" : "", enveloped ? " envelope |" : "");
+  out += fmt::format("|---:|---:|---:|{}{}---:|---:|---:|---:|:---:|\n", estimated ? "---:|" : "",
+                     enveloped ? "---:|" : "");
   for (const convergence_row& row : t.rows) {
     const cell_statistics& c = row.stats;
     out += fmt::format(
-        "| {} | {} | {} |{} {} | {} | {} | {} | {} |\n", row.n, c.evaluations, sci(c.rmse),
+        "| {} | {} | {} |{}{} {} | {} | {} | {} | {} |\n",
+        to_tolerance ? sci(row.tolerance) : fmt::format("{}", row.n), c.evaluations, sci(c.rmse),
+        estimated ? fmt::format(" {} |", sci(c.error_estimate)) : "",
         enveloped ? fmt::format(" {} |", sci(row.envelope)) : "", sci(c.std_error_of_rmse),
         std::isnan(c.coverage_95) ? "—" : fmt::format("{:.2f}", c.coverage_95),
         short_number(c.seconds), short_number(c.evals_per_second), row.floor ? "▼" : "");

@@ -88,8 +88,10 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(c.seconds),
                                                number(c.evals_per_second),
                                                row.floor ? "1" : "0",
-                                               t.smoothness,
-                                               number(row.envelope)};
+                                               to_string(t.regularity),
+                                               number(row.envelope),
+                                               number(row.tolerance),
+                                               number(c.error_estimate)};
       out += csv_line(fields);
     }
   }
@@ -111,7 +113,7 @@ std::string slopes_csv_text(std::string_view scene, std::span<const convergence_
                                              to_string(t.verdict),
                                              fmt::format("{}", t.points_used()),
                                              fmt::format("{}", t.floor_points()),
-                                             t.smoothness,
+                                             to_string(t.regularity),
                                              to_string(t.fit.status),
                                              number(t.floor.attainable_accuracy),
                                              t.theory.note,
@@ -126,6 +128,8 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
   require_columns(table, convergence_csv_columns);
   const bool has_floor = table.has_column("floor");
   const bool has_envelope = table.has_column("envelope");
+  const bool has_tolerance = table.has_column("tolerance");
+  const bool has_error_estimate = table.has_column("error_estimate");
   std::vector<convergence_record> out;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const record_reader f(table, r);
@@ -147,6 +151,8 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     rec.evals_per_second = f.real("evals_per_second");
     rec.floor = has_floor && f.text("floor") == "1";
     if (has_envelope) rec.envelope = f.real("envelope");
+    if (has_tolerance) rec.tolerance = f.real("tolerance");
+    if (has_error_estimate) rec.error_estimate = f.real("error_estimate");
     out.push_back(std::move(rec));
   }
   return out;

@@ -5,9 +5,8 @@
 // is where an editor's cursor should land.
 #include "quadmc/scene/parse.hpp"
 
-#include "quadmc/rules/gauss_legendre_rule.hpp"
-#include "quadmc/sampling/inversion_warps.hpp"
-#include "quadmc/scene/methods.hpp"
+#include "quadmc/methods/registry.hpp"
+#include "quadmc/scene/toml_text.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -41,341 +40,6 @@ std::string describe(const toml::node& n) {
   return "a date/time";
 }
 
-// toml++ 3.3.0 has undefined behaviour on 3019 code points: its generated
-// is_non_ascii_horizontal_whitespace() reaches __builtin_unreachable() for U+00A1…U+0499,
-// U+2C5E…U+2FFF, U+3001…U+3057 and U+FB26…U+FEFE (found by the scene fuzzer, tests/fuzz/, on
-// `name = "x"§`; the ranges come from calling it on every code point). They include π, σ, ε, é, §
-// and ·, which scene descriptions and comments use. So toml++ never sees them: each is replaced by
-// a stand-in from the private-use area U+E000…U+EBCA, on which that function is defined, and every
-// string taken from the parsed document (values, keys, toml++'s messages) is mapped back. The
-// mapping is one-to-one, and line/column positions do not move (one code point for one).
-// Private-use characters of that block in the file itself would be ambiguous: they are an error.
-struct code_point_range {
-  char32_t first, last;
-};
-constexpr std::array<code_point_range, 4> toml_unsafe{
-    {{0x00A1, 0x0499}, {0x2C5E, 0x2FFF}, {0x3001, 0x3057}, {0xFB26, 0xFEFE}}};
-constexpr char32_t stand_in_base = 0xE000;
-constexpr char32_t stand_in_count = 3019;  // Σ (last − first + 1) over toml_unsafe
-
-constexpr char32_t stand_in_for(char32_t c) noexcept {  // 0 when c is safe
-  char32_t offset = 0;
-  for (const code_point_range& r : toml_unsafe) {
-    if (c >= r.first && c <= r.last) return stand_in_base + offset + (c - r.first);
-    offset += r.last - r.first + 1;
-  }
-  return 0;
-}
-
-constexpr char32_t original_of(char32_t c) noexcept {  // c itself when it is not a stand-in
-  if (c < stand_in_base || c >= stand_in_base + stand_in_count) return c;
-  char32_t offset = c - stand_in_base;
-  for (const code_point_range& r : toml_unsafe) {
-    const char32_t size = r.last - r.first + 1;
-    if (offset < size) return r.first + offset;
-    offset -= size;
-  }
-  return c;
-}
-static_assert(stand_in_for(0x00A7) == 0xE006 && original_of(0xE006) == 0x00A7);
-static_assert(stand_in_for(0xFEFE) == stand_in_base + stand_in_count - 1);
-static_assert(stand_in_for(0x00A0) == 0 && stand_in_for(0x3000) == 0);
-
-// One well-formed UTF-8 sequence at text[i]: its code point and length, or length 0 when the
-// bytes are not valid UTF-8 (those are left as they are, for toml++ to report).
-struct decoded {
-  char32_t c = 0;
-  std::size_t length = 0;
-};
-decoded decode_utf8(std::string_view text, std::size_t i) noexcept {
-  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[i + k]); };
-  const unsigned char lead = b(0);
-  const std::size_t n = lead < 0x80           ? 1
-                        : (lead >> 5) == 0x6  ? 2
-                        : (lead >> 4) == 0xE  ? 3
-                        : (lead >> 3) == 0x1E ? 4
-                                              : 0;
-  if (n == 0 || i + n > text.size()) return {};
-  char32_t c = n == 1 ? lead : lead & (0x7F >> n);
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((b(k) & 0xC0) != 0x80) return {};
-    c = (c << 6) | (b(k) & 0x3F);
-  }
-  return {c, n};
-}
-
-void encode_utf8(char32_t c, std::string& out) {
-  if (c < 0x80) {
-    out += static_cast<char>(c);
-  } else if (c < 0x800) {
-    out += static_cast<char>(0xC0 | (c >> 6));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else if (c < 0x10000) {
-    out += static_cast<char>(0xE0 | (c >> 12));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (c >> 18));
-    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  }
-}
-
-std::string with_stand_ins(std::string_view text, std::string_view file_name) {
-  std::string out;
-  out.reserve(text.size() + text.size() / 8);
-  std::uint32_t line = 1, column = 1;
-  for (std::size_t i = 0; i < text.size();) {
-    const decoded d = decode_utf8(text, i);
-    const std::size_t length = d.length == 0 ? 1 : d.length;
-    if (d.length > 1) {
-      if (d.c >= stand_in_base && d.c < stand_in_base + stand_in_count) {
-        throw scene_error({std::string(file_name), line, column}, "",
-                          fmt::format("private-use character U+{:04X} is not supported in scene "
-                                      "files",
-                                      static_cast<std::uint32_t>(d.c)));
-      }
-      if (const char32_t stand_in = stand_in_for(d.c); stand_in != 0) {
-        encode_utf8(stand_in, out);
-      } else {
-        out.append(text.substr(i, length));
-      }
-    } else {
-      out.append(text.substr(i, length));
-    }
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-    i += length;
-  }
-  return out;
-}
-
-std::string without_stand_ins(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const decoded d = decode_utf8(text, i);
-    if (d.length == 0) {
-      out += text[i++];
-      continue;
-    }
-    encode_utf8(original_of(d.c), out);
-    i += d.length;
-  }
-  return out;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Nesting bound, checked before toml++ sees the text.
-//
-// toml++ 3.3 bounds arrays and inline tables (TOML_MAX_NESTED_VALUES = 256) but not dotted keys or
-// table headers: every part of `a.a.a… = 1` or `[a.a.a…]` is one more nested table, and its
-// recursion overflows the stack somewhere between 20,000 and 40,000 parts (an 80 KB file). So a
-// lexical scan measures the depth first: each part of a dotted key or table header and each array
-// or inline table is one level, summed from the root to the innermost value, and a file deeper
-// than scene_limits::max_nesting is refused at the first level too many. A scene needs 4
-// ([budget] N = { from = … }). The scan knows TOML's four string forms and its comments, so dots,
-// brackets and braces inside them do not count; anything else it steps over without judging, since
-// toml++ reports the syntax errors. Its own recursion is bounded by the same limit.
-class nesting_scan {
- public:
-  nesting_scan(std::string_view text, std::string_view file) : text_(text), file_(file) {}
-
-  void run() {
-    std::size_t header_depth = 0;
-    while (skip_blank(true)) {
-      if (peek() == '[') {  // [table] or [[array of tables]]
-        const bool array = peek(1) == '[';
-        advance();
-        if (array) advance();
-        header_depth = key(0);
-      } else {
-        const std::size_t depth = header_depth + key(header_depth);
-        skip_blank(false);
-        if (peek() == '=') {
-          advance();
-          value(depth);
-        }
-      }
-      skip_line();
-    }
-  }
-
- private:
-  bool at_end() const noexcept { return i_ >= text_.size(); }
-  char peek(std::size_t ahead = 0) const noexcept {
-    return i_ + ahead < text_.size() ? text_[i_ + ahead] : '\0';
-  }
-  bool starts_with(std::string_view s) const noexcept { return text_.substr(i_, s.size()) == s; }
-  // Columns count code points, as toml++ and with_stand_ins do: UTF-8 continuation bytes do not
-  // advance the column.
-  void advance() noexcept {
-    const char c = text_[i_++];
-    if (c == '\n') {
-      ++line_;
-      column_ = 1;
-    } else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) {
-      ++column_;
-    }
-  }
-
-  // Called with the depth of the level that starts at the current position.
-  void check_depth(std::size_t depth) const {
-    if (depth <= scene_limits::max_nesting) return;
-    throw scene_error({std::string(file_), line_, column_}, "",
-                      fmt::format("nesting deeper than {} levels (each part of a dotted key or "
-                                  "table header and each array or inline table counts one; a "
-                                  "scene needs at most 4)",
-                                  scene_limits::max_nesting));
-  }
-
-  // Spaces, tabs and comments, and newlines when `newlines`; false at the end of the text.
-  bool skip_blank(bool newlines) noexcept {
-    while (!at_end()) {
-      const char c = peek();
-      if (c == ' ' || c == '\t' || c == '\r' || (newlines && c == '\n')) {
-        advance();
-      } else if (c == '#') {
-        while (!at_end() && peek() != '\n') advance();
-      } else {
-        break;
-      }
-    }
-    return !at_end();
-  }
-  // The rest of a top-level line (a comment, or text toml++ will reject) and its newline.
-  void skip_line() noexcept {
-    while (!at_end() && peek() != '\n') {
-      if (peek() == '"' || peek() == '\'') {
-        string();
-      } else if (peek() == '#') {
-        skip_blank(false);
-      } else {
-        advance();
-      }
-    }
-    if (!at_end()) advance();
-  }
-
-  // One string of any of TOML's four forms, from its opening quote. An unterminated one ends at
-  // the end of its line (single-line forms) or of the text (multi-line forms).
-  void string() noexcept {
-    const char quote = peek();
-    const bool basic = quote == '"';
-    const std::string_view triple = basic ? std::string_view("\"\"\"") : "'''";
-    if (starts_with(triple)) {
-      for (int k = 0; k < 3; ++k) advance();
-      while (!at_end() && !starts_with(triple)) {
-        if (basic && peek() == '\\') advance();  // an escape: the next character is taken as is
-        if (!at_end()) advance();
-      }
-      // The closing run may be up to five quotes long; the first two belong to the string.
-      for (int k = 0; k < 5 && !at_end() && peek() == quote; ++k) advance();
-      return;
-    }
-    advance();
-    while (!at_end() && peek() != '\n') {
-      const char c = peek();
-      advance();
-      if (c == quote) return;
-      if (basic && c == '\\' && !at_end() && peek() != '\n') advance();
-    }
-  }
-
-  // A possibly dotted key whose first part is at depth `base` + 1; returns its number of parts.
-  std::size_t key(std::size_t base) {
-    std::size_t parts = 0;
-    for (;;) {
-      skip_blank(false);
-      check_depth(base + parts + 1);
-      const std::size_t start = i_;
-      if (peek() == '"' || peek() == '\'') {
-        string();
-      } else {
-        while (!at_end() && (std::isalnum(static_cast<unsigned char>(peek())) != 0 ||
-                             peek() == '_' || peek() == '-')) {
-          advance();
-        }
-      }
-      if (i_ == start) return parts;  // not a key: toml++ will say what it is
-      ++parts;
-      skip_blank(false);
-      if (peek() != '.') return parts;
-      advance();
-    }
-  }
-
-  // One value whose key ends at `depth`: an array or inline table is one level deeper.
-  void value(std::size_t depth) {
-    skip_blank(false);
-    const char c = peek();
-    if (c == '[' || c == '{') {
-      check_depth(depth + 1);
-      advance();
-      if (c == '[') {
-        array(depth + 1);
-      } else {
-        inline_table(depth + 1);
-      }
-    } else if (c == '"' || c == '\'') {
-      string();
-    } else {
-      // A number, boolean or date; it ends where a separator, comment or another value begins.
-      constexpr std::string_view ends = ",]}#[{\"' \t\r\n";
-      while (!at_end() && ends.find(peek()) == std::string_view::npos) advance();
-    }
-  }
-
-  void array(std::size_t depth) {
-    while (skip_blank(true)) {
-      if (peek() == ']') {
-        advance();
-        return;
-      }
-      const std::size_t start = i_;
-      value(depth);
-      skip_blank(true);
-      if (peek() == ',') {
-        advance();
-      } else if (i_ == start && !at_end()) {
-        advance();  // neither a value nor a separator: step over it
-      }
-    }
-  }
-
-  void inline_table(std::size_t depth) {
-    while (skip_blank(true)) {
-      if (peek() == '}') {
-        advance();
-        return;
-      }
-      const std::size_t start = i_;
-      const std::size_t parts = key(depth);
-      skip_blank(false);
-      if (peek() == '=') {
-        advance();
-        value(depth + parts);
-      }
-      skip_blank(true);
-      if (peek() == ',') {
-        advance();
-      } else if (i_ == start && !at_end()) {
-        advance();
-      }
-    }
-  }
-
-  std::string_view text_;
-  std::string_view file_;
-  std::size_t i_ = 0;
-  std::uint32_t line_ = 1, column_ = 1;
-};
-
 // A key and its value inside a table, with the dotted path used in messages.
 struct entry {
   const toml::key* key = nullptr;
@@ -396,7 +60,7 @@ class scene_reader {
 
   [[noreturn]] void fail(const source_location& where, std::string_view path,
                          std::string_view message) const {
-    throw scene_error(where, without_stand_ins(path), without_stand_ins(message));
+    throw scene_error(where, toml_original_text(path), toml_original_text(message));
   }
   [[noreturn]] void fail(const entry& e, std::string_view message) const {
     fail(at(e), e.path, message);
@@ -455,7 +119,7 @@ class scene_reader {
   }
 
   std::string string(const entry& e, std::string_view what) const {
-    if (const auto* s = e.value->as_string()) return without_stand_ins(s->get());
+    if (const auto* s = e.value->as_string()) return toml_original_text(s->get());
     expected(e, what);
   }
 
@@ -507,7 +171,7 @@ class scene_reader {
 
 key_locations locations_of(const scene_reader& r, const toml::table& t) {
   key_locations keys;
-  for (auto&& [key, value] : t) keys.emplace(without_stand_ins(key.str()), r.at(key.source()));
+  for (auto&& [key, value] : t) keys.emplace(toml_original_text(key.str()), r.at(key.source()));
   return keys;
 }
 
@@ -577,7 +241,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     const std::string what =
         fmt::format("a number or an array of numbers (a parameter of {})", base.family);
     if (value.is_number()) {
-      base.scalars.emplace(without_stand_ins(k), r.number(e, what));
+      base.scalars.emplace(toml_original_text(k), r.number(e, what));
     } else if (const auto* a = value.as_array()) {
       if (a->empty()) r.expected(e, what);
       // A vector parameter has one entry per coordinate (the catalogue checks the exact length).
@@ -591,7 +255,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
         const entry element{&key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
         v.push_back(r.number(element, "a finite number"));
       }
-      base.vectors.emplace(without_stand_ins(k), std::move(v));
+      base.vectors.emplace(toml_original_text(k), std::move(v));
     } else {
       r.expected(e, what);
     }
@@ -627,74 +291,170 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
 // ---------------------------------------------------------------------------------------------
 // [[method]]
 
-void parse_warp(const scene_reader& r, const entry& e, method_spec& m) {
-  const warp_info* info = nullptr;
-  std::optional<entry> parameter;
-  if (e.value->is_string()) {
-    m.warp = r.string(e, "a warp name");
-    info = find_warp(m.warp);
-    if (info == nullptr) r.expected(e, fmt::format("one of: {}", warp_names()));
-  } else if (const auto* t = e.value->as_table()) {
-    const auto name = r.find(*t, "name", e.path);
-    if (!name) r.fail(e, fmt::format("missing `name` (one of: {})", warp_names()));
-    m.warp = r.string(*name, "a warp name");
-    info = find_warp(m.warp);
-    if (info == nullptr) r.expected(*name, fmt::format("one of: {}", warp_names()));
-    const std::array<std::string_view, 2> allowed{"name", info->parameter};
-    r.check_keys(*t, allowed, e.path, fmt::format("warp '{}'", m.warp));
-    parameter = r.find(*t, info->parameter, e.path);
-  } else {
-    r.expected(e, "a warp name or a table { name = …, <parameter> = … }");
-  }
-  m.warp_parameter = info->default_value;
-  if (parameter) {
-    // The warps' own bounds (sampling/inversion_warps.hpp explains them), checked here so that a
-    // run never reaches a warp that refuses its parameter.
-    if (m.warp == "power") {
-      const std::string what =
-          fmt::format("an exponent -1 < k <= {:g} (larger k round every sample to 1)",
-                      power_warp::max_exponent);
-      m.warp_parameter = r.number(*parameter, what);
-      if (!(m.warp_parameter > -1.0 && m.warp_parameter <= power_warp::max_exponent)) {
-        r.expected(*parameter, what);
-      }
-    } else {
-      const std::string what =
-          fmt::format("a rate 0 < |l| <= {:g} (e^l must stay a finite, normal double)",
-                      truncated_exponential_warp::max_abs_rate);
-      m.warp_parameter = r.number(*parameter, what);
-      if (!(m.warp_parameter != 0.0 &&
-            std::abs(m.warp_parameter) <= truncated_exponential_warp::max_abs_rate)) {
-        r.expected(*parameter, what);
-      }
-    }
-  }
-}
+// A [[method]] table as the option_reader its descriptor reads (methods/option_reader.hpp):
+// every failure is a scene_error at the key, so the descriptors' messages have the file, line
+// and key of every other scene message.
+class toml_option_reader final : public option_reader {
+ public:
+  toml_option_reader(const scene_reader& r, const toml::table& t, std::string prefix)
+      : r_(&r), t_(&t), prefix_(std::move(prefix)) {}
 
-void parse_panels(const scene_reader& r, const entry& e, method_spec& m) {
-  const bool simpson = m.name == "simpson";
-  const std::string_view what =
-      simpson ? "an even panel count between 2 and 2^53" : "a panel count between 1 and 2^53";
-  auto one = [&](const entry& element) {
-    const std::uint64_t n = r.count(element, simpson ? 2 : 1, max_count, what);
-    // Composite Simpson pairs the panels: an odd n leaves one panel without a partner.
-    if (simpson && n % 2 != 0) r.expected(element, what);
-    if (!m.panels.empty() && n <= m.panels.back()) {
-      r.fail(element,
-             fmt::format("panel counts must increase, got {} after {}", n, m.panels.back()));
+  std::string path() const override { return prefix_; }
+  bool has(std::string_view key) const override { return t_->contains(key); }
+
+  std::optional<std::uint64_t> count(std::string_view key, std::uint64_t lo, std::uint64_t hi,
+                                     std::string_view what) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    return r_->count(*e, lo, hi, what);
+  }
+  std::optional<double> number(std::string_view key, std::string_view what) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    return r_->number(*e, what);
+  }
+  std::optional<std::string> string(std::string_view key, std::string_view what) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    return r_->string(*e, what);
+  }
+  std::optional<bool> boolean(std::string_view key) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    return r_->boolean(*e);
+  }
+  std::optional<std::vector<std::uint64_t>> counts(std::string_view key, std::uint64_t lo,
+                                                   std::uint64_t hi, std::size_t max_values,
+                                                   std::string_view what) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    std::vector<std::uint64_t> out;
+    for_each_element(*e, max_values, what, [&](const entry& element) {
+      out.push_back(r_->count(element, lo, hi, what));
+    });
+    return out;
+  }
+  std::optional<std::vector<double>> numbers(std::string_view key, std::size_t max_values,
+                                             std::string_view what) override {
+    const auto e = take(key);
+    if (!e) return std::nullopt;
+    std::vector<double> out;
+    for_each_element(*e, max_values, what,
+                     [&](const entry& element) { out.push_back(r_->number(element, what)); });
+    return out;
+  }
+  bool is_table(std::string_view key) const override {
+    const auto it = t_->find(key);
+    return it != t_->end() && it->second.is_table();
+  }
+  std::unique_ptr<option_reader> table(std::string_view key, std::string_view what) override {
+    const auto e = take(key);
+    if (!e) fail_missing(key, fmt::format("missing {}", what));
+    return std::make_unique<toml_option_reader>(*r_, r_->table(*e, what), e->path);
+  }
+  std::exception_ptr error(where at, std::string_view key, std::size_t index,
+                           std::string_view message) const override {
+    const std::string path = scene_reader::path(prefix_, key);
+    const auto e = r_->find(*t_, key, prefix_);
+    if (at == where::missing || !e) {
+      return std::make_exception_ptr(
+          scene_error(r_->at(t_->source()), toml_original_text(path), toml_original_text(message)));
     }
-    m.panels.push_back(n);
-  };
-  if (const auto* a = e.value->as_array()) {
-    if (a->empty()) r.expected(e, "a panel count or a non-empty array of panel counts");
-    if (a->size() > max_ladder) r.fail(e, fmt::format("more than {} values", max_ladder));
+    // An element of an array value; a single value stands for its own array of one.
+    const bool array = e->value->is_array();
+    const std::string shown =
+        at == where::element && array ? fmt::format("{}[{}]", path, index + 1) : path;
+    return std::make_exception_ptr(
+        scene_error(r_->at(*e), toml_original_text(shown), toml_original_text(message)));
+  }
+  void reject_unread(std::string_view what, std::span<const std::string_view> accepted) override {
+    for (auto&& [key, value] : *t_) {
+      if (read_.contains(key.str())) continue;
+      if (std::find(accepted.begin(), accepted.end(), key.str()) != accepted.end()) continue;
+      std::string list;
+      for (std::string_view a : accepted) list += (list.empty() ? "" : ", ") + std::string(a);
+      r_->fail(r_->at(key.source()), scene_reader::path(prefix_, key.str()),
+               fmt::format("unknown key in {}; expected one of: {}", what, list));
+    }
+  }
+
+ private:
+  std::optional<entry> take(std::string_view key) {
+    auto e = r_->find(*t_, key, prefix_);
+    if (e) read_.insert(std::string(key));
+    return e;
+  }
+
+  // A value or an array of values, each handed to `one` with its own path ("panels[2]").
+  template <class One>
+  void for_each_element(const entry& e, std::size_t max_values, std::string_view what,
+                        One&& one) const {
+    const auto* a = e.value->as_array();
+    if (a == nullptr) {
+      one(e);
+      return;
+    }
+    if (a->empty()) r_->expected(e, fmt::format("{} or a non-empty array of them", what));
+    if (a->size() > max_values) r_->fail(e, fmt::format("more than {} values", max_values));
     for (std::size_t i = 0; i < a->size(); ++i) {
       one(entry{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)});
     }
-  } else {
-    one(e);
+  }
+
+  const scene_reader* r_;
+  const toml::table* t_;
+  std::string prefix_;
+  std::set<std::string, std::less<>> read_;
+};
+
+// `control` and `tolerances` (methods/method.hpp): how the method's cells are run. A control the
+// method does not support is an error naming the ones it does.
+void parse_control(const scene_reader& r, const toml::table& t, const std::string& prefix,
+                   const method_descriptor& descriptor, method_spec& m) {
+  m.control = descriptor.controls.front();
+  std::string supported;
+  for (const cell_control c : descriptor.controls) {
+    supported += (supported.empty() ? "" : ", ") + std::string(to_string(c));
+  }
+  if (const auto e = r.find(t, "control", prefix)) {
+    const std::string what = fmt::format("one of: {} ({} supports these)", supported, m.name);
+    const std::string given = r.string(*e, what);
+    bool found = false;
+    for (const cell_control c : descriptor.controls) {
+      if (to_string(c) == given) {
+        m.control = c;
+        found = true;
+      }
+    }
+    if (!found) r.expected(*e, what);
+  }
+  const auto tolerances = r.find(t, "tolerances", prefix);
+  if (m.control != cell_control::tolerance) {
+    if (tolerances) r.fail(*tolerances, "only with control = \"tolerance\"");
+    return;
+  }
+  if (!tolerances) {
+    r.fail(m.table, prefix + ".tolerances",
+           "missing required key for control = \"tolerance\" (the errors to reach, decreasing)");
+  }
+  const auto* a = tolerances->value->as_array();
+  if (a == nullptr || a->empty()) r.expected(*tolerances, "a non-empty array of tolerances");
+  if (a->size() > max_ladder) r.fail(*tolerances, fmt::format("more than {} values", max_ladder));
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const entry element{tolerances->key, a->get(i), fmt::format("{}[{}]", tolerances->path, i + 1)};
+    const double tol = r.number(element, "a tolerance > 0 (an absolute error)");
+    if (!(tol > 0.0)) r.expected(element, "a tolerance > 0 (an absolute error)");
+    if (!m.tolerances.empty() && tol >= m.tolerances.back()) {
+      r.fail(element,
+             fmt::format("tolerances must decrease, got {} after {}", tol, m.tolerances.back()));
+    }
+    m.tolerances.push_back(tol);
   }
 }
+
+// The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
+constexpr std::array<std::string_view, 6> common_method_keys{
+    "name", "label", "integrands", "repetitions", "control", "tolerances"};
 
 // The names a method's `integrands` list may use: display names and the `name` of a
 // `dimensions` table. A set, so that long lists cost n·log n, not n × integrands.
@@ -724,51 +484,22 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
            fmt::format("missing required key (one of: {})", method_names()));
   }
   m.name = r.string(*name, "a method name");
-  const method_info* info = find_method(m.name);
-  if (info == nullptr) r.expected(*name, fmt::format("one of: {}", method_names()));
-  r.check_keys(t, info->options, prefix, fmt::format("a '{}' method", m.name));
+  const method_descriptor* descriptor = find_method(m.name);
+  if (descriptor == nullptr) r.expected(*name, fmt::format("one of: {}", method_names()));
+
+  // Unknown keys first, before any value is judged: a typo ("repetition") must not fall back to
+  // a default, and it is the likelier mistake when both are present.
+  std::vector<std::string_view> accepted(common_method_keys.begin(), common_method_keys.end());
+  for (const option_doc& o : descriptor->options) accepted.push_back(o.key);
+  toml_option_reader options(r, t, prefix);
+  options.reject_unread(fmt::format("a '{}' method", m.name), accepted);
 
   if (const auto e = r.find(t, "repetitions", prefix)) {
     m.repetitions = r.count(*e, 1, 1'000'000'000, "a positive integer");
     m.repetitions_given = true;
   }
-  if (const auto e = r.find(t, "m", prefix)) {
-    const auto& supported = gauss_legendre_rule::supported_points;
-    std::string list;
-    for (unsigned p : supported) list += fmt::format("{}{}", list.empty() ? "" : " ", p);
-    const std::string what = fmt::format("one of {}", list);
-    m.m = r.count(*e, 1, gauss_legendre_rule::max_points, what);
-    if (std::find(supported.begin(), supported.end(), m.m) == supported.end()) {
-      r.expected(*e, what);
-    }
-  }
-  if (const auto e = r.find(t, "panels", prefix)) parse_panels(r, *e, m);
-  if (const auto e = r.find(t, "accumulator", prefix)) {
-    constexpr std::string_view names = "one of: pairwise, neumaier, naive, long_double";
-    const std::optional<summation> a = parse_summation(r.string(*e, names));
-    if (!a) r.expected(*e, names);
-    m.accumulator = *a;
-    m.accumulator_given = true;
-  }
-  if (const auto e = r.find(t, "point_set", prefix)) {
-    m.point_set = r.string(*e, "a point set name");
-    if (find_point_set(m.point_set) == nullptr) {
-      r.expected(*e, fmt::format("one of: {}", point_set_names()));
-    }
-  }
-  const bool takes_point_set =
-      std::find(info->options.begin(), info->options.end(), "point_set") != info->options.end();
-  const bool point_set_given = !m.point_set.empty();
-  if (takes_point_set && !point_set_given) m.point_set = "independent";
-
-  if (const auto e = r.find(t, "warp", prefix)) {
-    parse_warp(r, *e, m);
-  } else if (m.name == "importance") {
-    r.fail(m.table, prefix + ".warp",
-           fmt::format("missing required key for importance (one "
-                       "of: {})",
-                       warp_names()));
-  }
+  parse_control(r, t, prefix, *descriptor, m);
+  m.configured = descriptor->create(*descriptor, options);
 
   if (const auto e = r.find(t, "integrands", prefix)) {
     const auto* a = e->value->as_array();
@@ -795,11 +526,7 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   if (const auto e = r.find(t, "label", prefix)) {
     m.label = r.display_name(*e);
   } else {
-    m.label = m.name;
-    if (!m.warp.empty()) m.label += "_" + m.warp;
-    if (point_set_given) m.label += "_" + m.point_set;
-    // One series per accumulator: midpoint_naive beside midpoint_neumaier.
-    if (m.accumulator_given) m.label += "_" + std::string(to_string(m.accumulator));
+    m.label = m.name + m.configured->label_suffix();
   }
   return m;
 }
@@ -997,14 +724,13 @@ scene parse_scene(std::string_view toml_text, std::string_view file_name) {
                       fmt::format("the scene is {} bytes; a scene file has at most {} (1 MiB)",
                                   toml_text.size(), scene_limits::max_file_bytes));
   }
-  nesting_scan(toml_text, file_name).run();
-  const std::string safe_text = with_stand_ins(toml_text, file_name);
+  const std::string safe_text = toml_safe_text(toml_text, file_name);
   toml::table root;
   try {
     root = toml::parse(safe_text, file_name);
   } catch (const toml::parse_error& e) {
     // toml++'s own position: where the syntax broke (for a truncated file, its end).
-    throw scene_error(reader.at(e.source()), "", without_stand_ins(e.description()));
+    throw scene_error(reader.at(e.source()), "", toml_original_text(e.description()));
   }
   return parse_root(reader, root);
 }

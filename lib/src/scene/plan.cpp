@@ -1,15 +1,15 @@
 // Planning: scene → cells and skips (plan.hpp), and the `quadmc plan` listing.
 #include "quadmc/scene/plan.hpp"
 
+#include "quadmc/core/integer_powers.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/functions/catalogue.hpp"
-#include "quadmc/functions/genz.hpp"
-#include "quadmc/scene/methods.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -32,32 +32,23 @@ std::uint64_t saturating_sum(std::uint64_t a, std::uint64_t b) noexcept {
   return b > saturated - a ? saturated : a + b;
 }
 
-// Families the irradiance estimators apply to: the rendering integrands of functions/
-// irradiance.hpp (catalogue.hpp), whose irradiance_setup the estimators sample.
-bool is_irradiance_family(std::string_view family) noexcept {
-  return family == "irradiance_hemisphere" || family == "irradiance_area";
+// What a method may ask of an integrand before it is built: its family, s and whether it is a
+// rendering integrand (catalogue.hpp). s = 0 (the family's default) resolves to the family's
+// fixed dimension when it has one.
+integrand_traits traits_of(const integrand_spec& f) {
+  const catalogue_entry* entry = find_family(f.family);
+  integrand_traits t;
+  t.family = f.family;
+  t.rendering = entry != nullptr && entry->rendering;
+  t.s = f.dimension != 0                             ? f.dimension
+        : entry != nullptr && entry->fixed_dimension ? entry->fixed_dimension
+                                                     : 1;
+  return t;
 }
 
 // Why `method` cannot integrate `f`, or nullopt when it can.
-std::optional<std::string> incompatibility(const method_spec& method, const method_info& info,
-                                           const integrand_spec& f) {
-  switch (info.applies_to) {
-    case integrand_requirement::any:
-      return std::nullopt;
-    case integrand_requirement::one_dimensional:
-      if (f.dimension == 1) return std::nullopt;
-      if (method.name == "importance") {
-        return fmt::format("the '{}' warp is a 1D density; the integrand has s = {}", method.warp,
-                           f.dimension);
-      }
-      return fmt::format("{} is one-dimensional; the integrand has s = {}", method.name,
-                         f.dimension);
-    case integrand_requirement::irradiance:
-      if (is_irradiance_family(f.family)) return std::nullopt;
-      return fmt::format("{} estimates irradiance; '{}' is not a rendering integrand", method.name,
-                         f.family);
-  }
-  return std::nullopt;
+std::optional<std::string> incompatibility(const method_spec& method, const integrand_spec& f) {
+  return method.configured->incompatibility(traits_of(f));
 }
 
 // Each method's `integrands` list as a set (empty = every integrand): make_plan asks whether a
@@ -93,7 +84,6 @@ void check_explicit_pairings(const scene& sc) {
     if (f.base_name != f.name) by_name[f.base_name].push_back(fi);
   }
   for (const auto& method : sc.methods) {
-    const method_info& info = *find_method(method.name);
     name_set seen;
     for (std::size_t i = 0; i < method.integrands.size(); ++i) {
       const std::string& n = method.integrands[i];
@@ -104,7 +94,7 @@ void check_explicit_pairings(const scene& sc) {
       if (named == by_name.end()) continue;  // the parser checked that every name exists
       for (const std::size_t fi : named->second) {
         const integrand_spec& f = sc.integrands[fi];
-        const auto why = incompatibility(method, info, f);
+        const auto why = incompatibility(method, f);
         if (why) {
           reason = why;
         } else {
@@ -130,25 +120,29 @@ std::string_view leading_identifier(std::string_view parameter) {
   return parameter.substr(0, end);
 }
 
-// The Genz family named `family`, if it is one: its omitted a and u are drawn from the seed by
-// genz_random_parameters (the catalogue's documented rule), which the plan repeats to print them.
-std::optional<genz_family> genz_family_named(std::string_view family) {
-  for (int f = 0; f < 6; ++f) {
-    if (to_string(static_cast<genz_family>(f)) == family) return static_cast<genz_family>(f);
+// The parameters of f drawn from the seed (catalogue_entry::drawn): those the family draws and
+// the scene does not give, each with its values for instance seed `seed`. Empty when every
+// instance of an ensemble is the same integrand.
+drawn_parameters drawn_for(const integrand_spec& f, std::size_t s, std::uint64_t seed) {
+  drawn_parameters out;
+  const catalogue_entry* entry = find_family(f.family);
+  if (entry == nullptr || entry->drawn == nullptr) return out;
+  for (auto& [key, values] : entry->drawn(s, seed)) {
+    if (!f.vectors.contains(key)) out.emplace(key, std::move(values));
   }
-  return std::nullopt;
+  return out;
 }
 
-std::string list_of(std::span<const std::string_view> keys) {
-  std::string out;
-  for (std::string_view k : keys) out += fmt::format("{}{}", out.empty() ? "" : ", ", k);
-  return out.empty() ? "none" : out;
+bool draws_parameters(const integrand_spec& f, std::size_t s) {
+  return !drawn_for(f, s, 0).empty();
 }
 
-// Whether the instances of an ensemble differ: only the Genz families draw parameters (a and u
-// when the scene omits them, genz_random_parameters); every other family ignores the seed.
-bool draws_parameters(const integrand_spec& f) {
-  return genz_family_named(f.family) && (!f.vectors.contains("a") || !f.vectors.contains("u"));
+// How many cells a method makes per instance of an integrand: its explicit sizes, its
+// tolerances, or the N ladder.
+std::uint64_t cells_per_instance(const scene& sc, const method_spec& m, std::size_t s) {
+  if (m.control == cell_control::tolerance) return m.tolerances.size();
+  const std::size_t explicit_sizes = m.configured->explicit_sizes(s).size();
+  return explicit_sizes != 0 ? explicit_sizes : sc.budget.N.size();
 }
 
 // s as the catalogue will resolve it: 0 is the family default (1, or 2 for irradiance); 2 is
@@ -212,9 +206,10 @@ void check_plan_size(const scene& sc, const std::vector<name_set>& restriction) 
                       f.name, K, s, coordinates, plan_limits::max_coordinates));
     }
     // The families' own limit (s ≤ 20) rejects larger s before any term is summed.
-    const bool vertex_sum = f.family == "genz_corner_peak" || f.family == "half_space";
+    const catalogue_entry* entry = find_family(f.family);
+    const bool vertex_sum = entry != nullptr && entry->vertex_sum_reference;
     if (vertex_sum && s <= 20) {
-      const std::uint64_t built = draws_parameters(f) ? K : 1;
+      const std::uint64_t built = draws_parameters(f, s) ? K : 1;
       terms += built << s;
       if (terms > plan_limits::max_reference_terms) {
         fail(
@@ -227,8 +222,7 @@ void check_plan_size(const scene& sc, const std::vector<name_set>& restriction) 
     std::uint64_t per_instance = 0;
     for (std::size_t mi = 0; mi < sc.methods.size(); ++mi) {
       if (!restricted_to(restriction[mi], f)) continue;
-      const method_spec& m = sc.methods[mi];
-      per_instance += m.panels.empty() ? sc.budget.N.size() : m.panels.size();
+      per_instance += cells_per_instance(sc, sc.methods[mi], s);
     }
     cells += per_instance * K;
     if (cells > plan_limits::max_cells) {
@@ -249,47 +243,24 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
   integrand_spec& f = sc.integrands[index];
   const std::string prefix = fmt::format("integrand[{}]", f.table_index);
 
-  const auto catalogue = integrand_catalogue();
-  const auto entry = std::find_if(catalogue.begin(), catalogue.end(),
-                                  [&](const catalogue_entry& e) { return e.name == f.family; });
-  if (entry == catalogue.end()) {
+  const catalogue_entry* entry = find_family(f.family);
+  if (entry == nullptr) {
     std::string names;
-    for (const auto& e : catalogue) names += fmt::format("{}{}", names.empty() ? "" : ", ", e.name);
+    for (const auto& e : integrand_catalogue()) {
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", e.name);
+    }
     throw scene_error(key_location(f.keys, "family", f.table), prefix + ".family",
                       fmt::format("unknown family \"{}\"; expected one of: {}", f.family, names));
   }
-  auto contains = [](std::span<const std::string_view> keys, std::string_view k) {
-    return std::find(keys.begin(), keys.end(), k) != keys.end();
-  };
-  auto reject = [&](std::string_view key, std::string_view message) {
-    throw scene_error(key_location(f.keys, key, f.table), fmt::format("{}.{}", prefix, key),
-                      message);
-  };
-  const std::string keys_of_family = fmt::format(
-      "arrays: {}; numbers: {}", list_of(entry->vector_keys), list_of(entry->scalar_keys));
-  for (const auto& [k, v] : f.vectors) {
-    if (contains(entry->vector_keys, k)) continue;
-    if (contains(entry->scalar_keys, k)) {
-      reject(k, fmt::format("expected a number for {}, got an array", f.family));
-    }
-    reject(k, fmt::format("unknown key: not a parameter of {} (its parameters: {})", f.family,
-                          keys_of_family));
-  }
-  for (const auto& [k, v] : f.scalars) {
-    if (contains(entry->scalar_keys, k)) continue;
-    if (contains(entry->vector_keys, k)) {
-      reject(k, fmt::format("expected an array of numbers for {}, got {}", f.family, v));
-    }
-    reject(k, fmt::format("unknown key: not a parameter of {} (its parameters: {})", f.family,
-                          keys_of_family));
-  }
-
   integrand_params params;
   params.dimension = f.dimension;
   for (const auto& [k, v] : f.scalars) params.scalars.emplace(k, v);
   for (const auto& [k, v] : f.vectors) params.vectors.emplace(k, v);
-  const auto genz = genz_family_named(f.family);
-  const bool draws = draws_parameters(f);
+  if (const auto problem = find_key_problem(*entry, params)) {
+    throw scene_error(key_location(f.keys, problem->key, f.table),
+                      fmt::format("{}.{}", prefix, problem->key), problem->message);
+  }
+  const bool draws = draws_parameters(f, dimension_bound(f));
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < f.ensemble; ++k) {
     params.seed = stream_id({sc.seed, index, k});
@@ -306,12 +277,7 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
     try {
       plan_instance inst{index, k, params.seed, params, make_integrand(f.family, params), {}};
       inst.params.dimension = inst.function.dimension();
-      if (genz) {
-        genz_parameters drawn =
-            genz_random_parameters(*genz, inst.function.dimension(), params.seed);
-        if (!f.vectors.contains("a")) inst.drawn.emplace("a", std::move(drawn.a));
-        if (!f.vectors.contains("u")) inst.drawn.emplace("u", std::move(drawn.u));
-      }
+      inst.drawn = drawn_for(f, inst.function.dimension(), params.seed);
       check_reference(f, prefix, inst);
       out.push_back(std::move(inst));
     } catch (const scene_error&) {
@@ -374,12 +340,10 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
                std::vector<plan_cell>& cells, std::vector<plan_skip>& skips) {
   const integrand_spec& f = sc.integrands[fi];
   const method_spec& method = sc.methods[mi];
-  const method_info& info = *find_method(method.name);
-  const auto s = static_cast<unsigned>(f.dimension);
-  const bool rule = info.kind == method_kind::deterministic_rule;
+  const quadmc::method& m = *method.configured;
+  const std::size_t s = f.dimension;
+  const bool rule = method.kind() == method_kind::deterministic;
   const std::uint64_t repetitions = rule ? 1 : method.repetitions;
-  const count_constraint counts =
-      method.point_set.empty() ? info.counts : find_point_set(method.point_set)->counts;
   auto what = [&](std::uint64_t N) {
     return fmt::format("{} × {}, N = {}", method.label, f.name, N);
   };
@@ -412,53 +376,60 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
   plan_cell base;
   base.integrand = fi;
   base.method = mi;
-  base.dimension = f.dimension;
+  base.dimension = s;
   base.repetitions = repetitions;
+  base.control = method.control;
+  auto sized = [&](plan_cell c, const cell_size& size) {
+    c.per_axis = size.per_axis;
+    c.points_per_axis = size.points_per_axis;
+    c.evaluations = size.evaluations;
+    c.order = size.order;
+    return c;
+  };
 
-  if (!method.panels.empty()) {
-    for (std::uint64_t n : method.panels) {
-      const auto grid = tensor_grid_with_panels(info, n, s, method.m);
-      if (!grid) {
-        skips.push_back({fmt::format("{} × {}, n = {}", method.label, f.name, n),
-                         fmt::format("{}^{} evaluations do not fit in 64 bits",
-                                     points_per_axis(info, n, method.m), s)});
+  if (method.control == cell_control::tolerance) {
+    // Each tolerance is a cell that may spend up to the budget per repetition: the scene's
+    // max_evaluations shared by the repetitions, else plan_limits::default_tolerance_budget.
+    const std::uint64_t budget = sc.budget.max_evaluations
+                                     ? *sc.budget.max_evaluations / repetitions
+                                     : plan_limits::default_tolerance_budget;
+    const sizing largest = m.size_for(budget, s);
+    for (const double tolerance : method.tolerances) {
+      const std::string at =
+          fmt::format("{} × {}, tolerance = {}", method.label, f.name, tolerance);
+      if (!largest.size) {
+        skips.push_back(
+            {at, fmt::format("within the budget of {} evaluations: {}", budget, largest.reason)});
         continue;
       }
-      plan_cell c = base;
-      c.nominal_N = grid->evaluations;
-      c.per_axis = grid->panels;
-      c.points_per_axis = grid->points_per_axis;
-      c.evaluations = grid->evaluations;
-      c.order = grid->order;
+      plan_cell c = sized(base, *largest.size);
+      c.tolerance = tolerance;
+      check_cell(sc, f, method, rule, scale, c.evaluations, c);
+      cells.push_back(c);
+    }
+    return;
+  }
+  const std::vector<sizing> explicit_sizes = m.explicit_sizes(s);
+  if (!explicit_sizes.empty()) {
+    for (const sizing& size : explicit_sizes) {
+      if (!size.size) {
+        skips.push_back({fmt::format("{} × {}", method.label, f.name), size.reason});
+        continue;
+      }
+      plan_cell c = sized(base, *size.size);
+      c.nominal_N = c.evaluations;
       consider(c.nominal_N, c);
     }
     return;
   }
   for (std::uint64_t N : sc.budget.N) {
-    plan_cell c = base;
-    c.nominal_N = N;
-    if (counts == count_constraint::tensor_grid) {
-      const auto grid = largest_tensor_grid(info, N, s, method.m);
-      if (!grid) {
-        const std::uint64_t n_min = (method.name == "simpson" || method.name == "romberg") ? 2 : 1;
-        const std::uint64_t p = points_per_axis(info, n_min, method.m);
-        const auto smallest = checked_power(p, s);
-        skips.push_back({what(N), smallest
-                                      ? fmt::format("N is below the smallest grid, {}^{} = "
-                                                    "{} evaluations",
-                                                    p, s, *smallest)
-                                      : fmt::format("N is below the smallest grid, {}^{}", p, s)});
-        continue;
-      }
-      c.per_axis = grid->panels;
-      c.points_per_axis = grid->points_per_axis;
-      c.evaluations = grid->evaluations;
-      c.order = grid->order;
-    } else {
-      const stratified_count sc_count = stratified_count_for(counts, N, s);
-      c.per_axis = sc_count.per_axis;
-      c.evaluations = sc_count.evaluations;
+    const sizing size = m.size_for(N, s);
+    if (!size.size) {
+      skips.push_back({what(N), size.reason});
+      continue;
     }
+    plan_cell c = sized(base, *size.size);
+    c.nominal_N = N;
     consider(N, c);
   }
 }
@@ -521,17 +492,29 @@ plan make_plan(const scene& input) {
   }
 
   for (const auto& method : sc.methods) {
-    const method_info& info = *find_method(method.name);
-    if (info.kind == method_kind::deterministic_rule && method.repetitions_given) {
+    if (method.kind() == method_kind::deterministic && method.repetitions_given) {
       p.notes.push_back(
           fmt::format("{}:{}: method[{}] ({}): repetitions = {} ignored: a "
                       "deterministic rule runs once per N",
                       sc.file, key_location(method.keys, "repetitions", method.table).line,
                       method.table_index, method.label, method.repetitions));
     }
-    if (!method.panels.empty()) {
+    if (!method.configured->explicit_sizes(1).empty()) {
       p.notes.push_back(fmt::format("method[{}] ({}): explicit panels replace budget.N",
                                     method.table_index, method.label));
+    }
+    if (method.control == cell_control::tolerance) {
+      p.notes.push_back(fmt::format(
+          "method[{}] ({}): control = tolerance: one cell per tolerance, each spending at most {} "
+          "evaluations per repetition",
+          method.table_index, method.label,
+          sc.budget.max_evaluations
+              ? fmt::format(
+                    "budget.max_evaluations / repetitions = {}",
+                    *sc.budget.max_evaluations /
+                        (method.kind() == method_kind::deterministic ? 1 : method.repetitions))
+              : fmt::format("{} (no budget.max_evaluations)",
+                            plan_limits::default_tolerance_budget)));
     }
   }
 
@@ -542,7 +525,7 @@ plan make_plan(const scene& input) {
     for (std::size_t mi = 0; mi < sc.methods.size(); ++mi) {
       const method_spec& method = sc.methods[mi];
       if (!restricted_to(restriction[mi], f)) continue;  // not asked for: neither a cell nor a skip
-      if (const auto why = incompatibility(method, *find_method(method.name), f)) {
+      if (const auto why = incompatibility(method, f)) {
         p.skips.push_back({fmt::format("{} × {}", method.label, f.name), *why});
         continue;
       }
@@ -553,7 +536,9 @@ plan make_plan(const scene& input) {
     for (std::size_t k = 0; k < f.ensemble; ++k) {
       for (plan_cell c : pair_cells) {
         c.instance = k;
-        c.stream_parts = {c.integrand, k, c.method, c.nominal_N};
+        c.stream_parts = {
+            c.integrand, k, c.method,
+            std::isnan(c.tolerance) ? c.nominal_N : std::bit_cast<std::uint64_t>(c.tolerance)};
         p.total_evaluations =
             saturating_sum(p.total_evaluations, saturating_product(c.evaluations, c.repetitions));
         repetitions = saturating_sum(repetitions, c.repetitions);
@@ -630,8 +615,10 @@ std::string format_plan(const plan& p) {
     const integrand_spec& f = sc.integrands[c.integrand];
     std::string name = f.name;
     if (f.ensemble > 1) name += fmt::format("#{}", c.instance + 1);
+    const std::string N = std::isnan(c.tolerance) ? fmt::format("{}", c.nominal_N)
+                                                  : fmt::format("tol {:g}", c.tolerance);
     line(fmt::format("  {:<{}} {:>4} {:<{}} {:>16} {:>8} {:>16} {:>6} {:>5}", name, name_width,
-                     c.dimension, sc.methods[c.method].label, label_width, c.nominal_N,
+                     c.dimension, sc.methods[c.method].label, label_width, N,
                      c.per_axis == 0 ? std::string("-") : fmt::format("{}", c.per_axis),
                      c.evaluations, c.repetitions,
                      c.order == 0 ? std::string("-") : fmt::format("{}", c.order)));

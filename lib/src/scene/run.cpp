@@ -1,21 +1,11 @@
-// Executes plan cells by method name. One switch per repetition; below it the rule and estimator
-// kernels are templates over the integrand (any_integrand: one virtual call per batch).
+// Executes plan cells: each repetition is one call of the cell's configured method
+// (methods/method.hpp); below it the rule and estimator kernels are templates over the integrand
+// (any_integrand: one virtual call per batch).
 #include "quadmc/scene/run.hpp"
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
 #include "quadmc/core/rng.hpp"
-#include "quadmc/estimators/sampling_method.hpp"
-#include "quadmc/functions/catalogue.hpp"
-#include "quadmc/rules/gauss_legendre_rule.hpp"
-#include "quadmc/rules/jump_error_envelope.hpp"
-#include "quadmc/rules/midpoint_rule.hpp"
-#include "quadmc/rules/rectangle_rule.hpp"
-#include "quadmc/rules/romberg.hpp"
-#include "quadmc/rules/simpson_rule.hpp"
-#include "quadmc/rules/tensor_product.hpp"
-#include "quadmc/rules/trapezoid_rule.hpp"
-#include "quadmc/scene/methods.hpp"
 
 #include <fmt/format.h>
 
@@ -29,115 +19,12 @@
 
 namespace quadmc {
 
-namespace {
-
-repetition_result from_rule(const rule_result& r) {
-  // A deterministic rule reports no standard error: coverage does not apply (NaN).
-  return repetition_result{r.value, std::numeric_limits<double>::quiet_NaN(), r.evaluations, 0.0};
-}
-
-repetition_result from_estimate(const estimate& e) {
-  return repetition_result{e.value, e.std_error, e.evaluations, 0.0};
-}
-
-repetition_result run_rule(const method_spec& m, const any_integrand& f, const plan_cell& cell,
-                           unsigned threads) {
-  const std::uint64_t n = cell.per_axis;
-  const std::string_view name = m.name;
-  const summation sum = m.accumulator;
-  if (name == "left_rectangle") {
-    return from_rule(integrate(f, rectangle_rule<rectangle_side::left>{}, n, threads, sum));
-  }
-  if (name == "right_rectangle") {
-    return from_rule(integrate(f, rectangle_rule<rectangle_side::right>{}, n, threads, sum));
-  }
-  if (name == "midpoint") return from_rule(integrate(f, midpoint_rule{}, n, threads, sum));
-  if (name == "trapezoid") return from_rule(integrate(f, trapezoid_rule{}, n, threads, sum));
-  if (name == "simpson") return from_rule(integrate(f, simpson_rule{}, n, threads, sum));
-  if (name == "gauss_legendre") {
-    return from_rule(
-        integrate(f, gauss_legendre_rule(static_cast<unsigned>(m.m)), n, threads, sum));
-  }
-  if (name == "romberg") {
-    // The plan chose n = 2^k panels: run exactly k halvings (tolerance 0 disables early stop).
-    require(std::has_single_bit(n), "romberg panels", n, "a power of two");
-    romberg_options options;
-    options.relative_tolerance = 0.0;
-    const auto levels = static_cast<unsigned>(std::countr_zero(n));
-    options.min_levels = levels;
-    options.max_levels = levels;
-    return from_rule(romberg(f, options));
-  }
-  throw invalid_argument("method", std::string(name), "a deterministic rule of methods.hpp");
-}
-
-// The a-priori bound on this rule cell's |error| when the integrand has jumps it can describe
-// (rules/jump_error_envelope.hpp); NaN otherwise, and the series keeps its slope verdict.
-double rule_error_envelope(const method_spec& m, const integrand_info& info,
-                           const plan_cell& cell) {
-  const std::uint64_t n = cell.per_axis;
-  const std::string_view name = m.name;
-  std::optional<double> envelope;
-  if (name == "left_rectangle") {
-    envelope = jump_error_envelope(rectangle_rule<rectangle_side::left>{}, info, n);
-  } else if (name == "right_rectangle") {
-    envelope = jump_error_envelope(rectangle_rule<rectangle_side::right>{}, info, n);
-  } else if (name == "midpoint") {
-    envelope = jump_error_envelope(midpoint_rule{}, info, n);
-  } else if (name == "trapezoid") {
-    envelope = jump_error_envelope(trapezoid_rule{}, info, n);
-  } else if (name == "simpson") {
-    envelope = jump_error_envelope(simpson_rule{}, info, n);
-  } else if (name == "gauss_legendre") {
-    envelope = jump_error_envelope(gauss_legendre_rule(static_cast<unsigned>(m.m)), info, n);
-  } else if (name == "romberg" && std::has_single_bit(n)) {
-    envelope = romberg_jump_error_envelope(info, static_cast<unsigned>(std::countr_zero(n)));
-  }
-  return envelope.value_or(std::numeric_limits<double>::quiet_NaN());
-}
-
-point_set_kind point_set_of(const method_spec& m) {
-  const std::string_view name = m.name;
-  // importance and the irradiance estimators draw their u from a chosen pattern; every other
-  // random method is named after its point set (sampling_method.hpp owns the name table, and
-  // reads "plain" as independent points).
-  if (name == "importance" || name.starts_with("irradiance_")) {
-    return m.point_set.empty() ? point_set_kind::independent : parse_point_set_kind(m.point_set);
-  }
-  return parse_point_set_kind(name == "plain_mc" ? "plain" : name);
-}
-
-repetition_result run_random(const method_spec& m, const plan& p, const plan_cell& cell,
-                             std::uint64_t stream, unsigned threads) {
-  const plan_instance& inst = p.instance_of(cell);
-  const std::uint64_t seed = p.source.seed;
-  const std::uint64_t n = cell.evaluations;
-  const std::string_view name = m.name;
-  const point_set_kind points = point_set_of(m);
-  if (name == "importance") {
-    const unit_warp_kind warp =
-        m.warp == "power" ? unit_warp_kind::power : unit_warp_kind::truncated_exponential;
-    return from_estimate(
-        run_importance(points, inst.function, warp, m.warp_parameter, seed, stream, n, threads));
-  }
-  if (name.starts_with("irradiance_")) {
-    const irradiance_setup setup = make_irradiance_setup(inst.params);
-    const irradiance_sampling technique =
-        name == "irradiance_hemisphere_uniform"  ? irradiance_sampling::uniform_hemisphere
-        : name == "irradiance_hemisphere_cosine" ? irradiance_sampling::cosine_hemisphere
-                                                 : irradiance_sampling::light_area;
-    return from_estimate(run_irradiance(technique, points, setup, seed, stream, n, threads));
-  }
-  return from_estimate(run_monte_carlo(points, inst.function, seed, stream, n, threads));
-}
-
-}  // namespace
-
 run_output run_plan(const plan& p, const run_options& options) {
   using clock = std::chrono::steady_clock;
   const auto run_start = clock::now();
   run_output out;
   out.threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
+  const run_context context{p.source.seed, out.threads_allowed};
   parallel_reduce_peak_threads() = 0;
 
   // One series per (integrand, method), in order of first appearance (the plan's order).
@@ -175,26 +62,29 @@ run_output run_plan(const plan& p, const run_options& options) {
       series.integrand = ispec.name;
       series.s = cell.dimension;
       series.method = mspec.label;
-      series.method_name = mspec.name;
-      series.order = cell.order;
-      series.singularity_exponent = info.singularity_exponent;
-      series.smoothness = to_string(info.regularity);
+      series.regularity = info.regularity;
+      series.theory = mspec.configured->theory(
+          integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
       series.reference = mean_reference[cell.integrand];
       out.series.push_back(std::move(series));
     }
     // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble
     // revisit the same N ladder: find the series' cell for this N, append only a new N.
     convergence_series& series = out.series[it->second];
-    auto same_n = std::find_if(series.cells.begin(), series.cells.end(),
-                               [&](const convergence_cell& c) { return c.n == cell.nominal_N; });
-    const method_info* method = find_method(mspec.name);
-    require(method != nullptr, "method", mspec.name, "a name listed by `quadmc list`");
-    const bool rule = method->kind == method_kind::deterministic_rule;
-    const double envelope =
-        rule ? rule_error_envelope(mspec, info, cell) : std::numeric_limits<double>::quiet_NaN();
+    const bool to_tolerance = !std::isnan(cell.tolerance);
+    auto same_n =
+        std::find_if(series.cells.begin(), series.cells.end(), [&](const convergence_cell& c) {
+          return to_tolerance ? c.tolerance == cell.tolerance : c.n == cell.nominal_N;
+        });
+    const cell_size size = cell.size();
+    // An a-priori bound holds for a cell of fixed size; one that may stop early has none.
+    const double envelope = cell.control == cell_control::fixed_size
+                                ? mspec.configured->error_envelope(info, size)
+                                : std::numeric_limits<double>::quiet_NaN();
     if (same_n == series.cells.end()) {
       convergence_cell fresh;
       fresh.n = cell.nominal_N;
+      fresh.tolerance = cell.tolerance;
       fresh.per_axis = cell.per_axis;
       fresh.error_envelope = envelope;
       series.cells.push_back(std::move(fresh));
@@ -216,14 +106,18 @@ run_output run_plan(const plan& p, const run_options& options) {
       auto where = [&] {
         std::string name = ispec.name;
         if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
-        return fmt::format("{} × {}, N = {} ({} evaluations), repetition {} of {}", mspec.label,
-                           name, cell.nominal_N, cell.evaluations, r + 1, cell.repetitions);
+        const std::string target =
+            to_tolerance ? fmt::format("tolerance = {}", cell.tolerance)
+                         : fmt::format("N = {} ({} evaluations)", cell.nominal_N, cell.evaluations);
+        return fmt::format("{} × {}, {}, repetition {} of {}", mspec.label, name, target, r + 1,
+                           cell.repetitions);
       };
       const auto t0 = clock::now();
       repetition_result result;
       try {
-        result = rule ? run_rule(mspec, inst.function, cell, out.threads_allowed)
-                      : run_random(mspec, p, cell, stream, out.threads_allowed);
+        const method_cell work{inst.function, inst.params,    size,
+                               cell.control,  cell.tolerance, stream};
+        result = mspec.configured->run(work, context);
       } catch (const std::exception& e) {
         throw run_error(fmt::format("{}: {}", where(), e.what()));
       }
@@ -246,7 +140,7 @@ run_output run_plan(const plan& p, const run_options& options) {
       result.value += shift;
       target.repetitions.push_back(result);
       // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
-      progress.evaluations_done += cell.evaluations;
+      progress.evaluations_done += result.evaluations;
       if (options.on_progress && r + 1 < cell.repetitions) options.on_progress(progress);
     }
     ++progress.cells_done;

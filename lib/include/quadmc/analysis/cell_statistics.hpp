@@ -24,6 +24,8 @@
 //                     no std_error (NaN): deterministic rules, methods without a variance estimate.
 //   seconds           total over the R repetitions; evals_per_second = Σevaluations / Σseconds
 //                     (NaN when the clock read 0).
+//   error_estimate    √(Σ ê_r²/R) of the repetitions' own error estimates ê_r, comparable with
+//                     rmse; NaN when any repetition has none.
 // All sums are compensated (Neumaier); the spread of e_r² uses Welford's update.
 #pragma once
 
@@ -41,6 +43,9 @@ struct repetition_result {
   double std_error = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t evaluations = 0;
   double seconds = 0.0;
+  // The method's own estimate of |value − I| (Monte Carlo: its std_error; Romberg: the last
+  // extrapolants' difference; an adaptive method: what it stopped on); NaN when it has none.
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct cell_statistics {
@@ -56,6 +61,7 @@ struct cell_statistics {
   double coverage_95 = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
   double evals_per_second = std::numeric_limits<double>::quiet_NaN();
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();
 
   // Wall time of one estimate (seconds / repetitions): what a user waits for one answer.
   double seconds_per_repetition() const noexcept {

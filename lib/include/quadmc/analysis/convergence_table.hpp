@@ -29,9 +29,13 @@
 
 namespace quadmc {
 
-// Input: one cell of the ladder — the scene's N and the repetitions run at it.
+// Input: one cell of the ladder — the scene's N (or tolerance) and the repetitions run at it.
 struct convergence_cell {
-  std::uint64_t n = 0;  // the N the scene asked for (the plan's ladder value)
+  // The N the scene asked for (the plan's ladder value: an exact size, or the budget an adaptive
+  // method may spend); 0 for a cell run to a tolerance.
+  std::uint64_t n = 0;
+  // The error the method was asked to reach (control = "tolerance"); NaN for a sized cell.
+  double tolerance = std::numeric_limits<double>::quiet_NaN();
   std::vector<repetition_result> repetitions;
   std::uint64_t per_axis = 0;  // rules: panels n per axis (the plan cell's); 0 otherwise
   // An a-priori bound on |error| of every repetition (for an ensemble, the largest of its
@@ -44,16 +48,12 @@ struct convergence_cell {
 struct convergence_series {
   std::string integrand;
   std::size_t s = 1;
-  std::string method;      // display name (the scene's label), e.g. "midpoint"
-  std::string smoothness;  // quadmc::to_string(integrand_info::regularity)
-  double reference = 0.0;  // integrand_info::exact
+  std::string method;  // display name (the scene's label), e.g. "midpoint_naive"
+  smoothness regularity = smoothness::analytic;  // integrand_info::regularity
+  double reference = 0.0;                        // integrand_info::exact
+  // The method's rate on this integrand (its descriptor chose it, methods/method.hpp).
+  theoretical_rate theory;
   std::vector<convergence_cell> cells;
-  // The catalogue name the theory table knows, e.g. "importance" for a label
-  // "importance_exponential"; empty = same as `method`.
-  std::string method_name;
-  int order = 0;  // the rule's order r where the name does not fix it (Gauss: 2m)
-  // integrand_info::singularity_exponent (f ~ x^α at an endpoint; NaN = not given).
-  double singularity_exponent = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct analysis_options {
@@ -65,6 +65,7 @@ struct analysis_options {
 
 struct convergence_row {
   std::uint64_t n = 0;
+  double tolerance = std::numeric_limits<double>::quiet_NaN();  // convergence_cell::tolerance
   cell_statistics stats;
   bool floor = false;  // at the rounding floor: excluded from the fit and the envelope verdict
   std::uint64_t per_axis = 0;                                  // convergence_cell::per_axis
@@ -75,9 +76,10 @@ struct convergence_table {
   std::string integrand;
   std::size_t s = 1;
   std::string method;
-  std::string smoothness;
+  smoothness regularity = smoothness::analytic;
   double reference = 0.0;
-  std::vector<convergence_row> rows;  // in increasing N
+  // In increasing N, or, for cells run to a tolerance, in decreasing tolerance.
+  std::vector<convergence_row> rows;
   rounding_floor floor;
   power_law_fit fit;
   theoretical_rate theory;
@@ -93,14 +95,17 @@ struct convergence_table {
   std::size_t floor_points() const noexcept { return floor.count(); }
 };
 
-// Sorts the cells by N and analyses them. The verdict: with error envelopes, the envelope verdict
+// Sorts the cells by N (tolerance cells by decreasing tolerance) and analyses them. Sized cells
+// must spend more evaluations as N grows. Tolerance cells may spend equal counts (a deterministic
+// method that reached two tolerances at one level made one computation): the floor and the fit
+// then use each count once, its first row. The verdict: with error envelopes, the envelope verdict
 // (slope_verdict.hpp) over the non-floor rows, each judged as error ≤ envelope + ℓ(N), ℓ the
 // rounding level of rounding_floor.hpp at the same scale as the floor rule (the envelope is exact
 // arithmetic; ℓ covers the sums' rounding when the error attains the envelope); without, the
-// slope verdict. Throws invalid_argument for no cells, a cell without repetitions, repeated N,
-// evaluations that do not increase with N, envelopes on some cells but not all, a negative
-// envelope, an unknown smoothness class or s = 0 (and whatever compute_cell_statistics rejects,
-// naming the cell).
+// slope verdict. Throws invalid_argument for no cells, a cell without repetitions, repeated N or
+// tolerance, sized and tolerance cells in one series, evaluations that decrease along the ladder,
+// envelopes on some cells but not all, a negative envelope or s = 0 (and whatever
+// compute_cell_statistics rejects, naming the cell).
 convergence_table analyse_convergence(const convergence_series& series,
                                       const analysis_options& options = {});
 

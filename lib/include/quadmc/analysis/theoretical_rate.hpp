@@ -1,29 +1,28 @@
-// The table of theoretical convergence rates: the slope of RMSE (or |error| for a deterministic
-// rule) against N = total evaluations, for a method × smoothness class × dimension s.
+// The theoretical convergence rates: the slope of RMSE (or |error| for a deterministic rule)
+// against N = total evaluations, for a kind of method on a smoothness class in s dimensions.
 //
 // Use it to put a "theory" column beside every fitted slope and to decide the verdict
-// (slope_verdict.hpp). Every entry carries its source: the row of docs/theory.md#rate-table and
-// its references ([Key] entries of docs/references.md). Not a bound with a constant: only the
-// exponent; pre-asymptotic ladders can show other slopes (docs/theory.md#pre-asymptotic-ladders:
-// fit slopes, never compare with an asymptotic formula such as (log N)^s/N).
+// (slope_verdict.hpp). Each method chooses its rate from these building blocks in its
+// descriptor (methods/ layer): which rate a method has is the method's business, what the rate
+// of a kind of method is on a kind of integrand is this file's. Every rate carries its source:
+// the row of docs/theory.md#rate-table and its references ([Key] entries of docs/references.md).
+// Not a bound with a constant: only the exponent; pre-asymptotic ladders can show other slopes
+// (docs/theory.md#pre-asymptotic-ladders: fit slopes, never compare with an asymptotic formula
+// such as (log N)^s/N).
 //
-// Methods are the scene names: left_rectangle, right_rectangle, midpoint, trapezoid, simpson,
-// gauss_legendre, romberg, plain_mc, jittered, unjittered, padded_jittered, latin_hypercube,
-// importance. Smoothness classes are quadmc::to_string(smoothness): analytic, smooth, C0,
-// discontinuous, singular (taken as a string so this layer needs only core).
 // Deterministic rules are tensor products with n nodes per axis, N = nˢ, so a 1D rate n^−r
-// becomes N^(−r/s). Assumptions the class string cannot carry are stated in the note:
-// "smooth" means smooth enough for the rule's full order; "singular" means an integrable
-// endpoint singularity of the √x kind (docs/theory.md#endpoint-singularities), and plain Monte
-// Carlo needs finite variance (1/√x has none: docs/theory.md#infinite-variance).
+// becomes N^(−r/s). Assumptions the class cannot carry are stated in the note: "smooth" means
+// smooth enough for the rule's full order; "singular" means an integrable endpoint singularity
+// f ~ x^α (the √x kind, α = 1/2, when α is not given: docs/theory.md#endpoint-singularities),
+// and Monte Carlo needs finite variance (1/√x has none: docs/theory.md#infinite-variance).
 #pragma once
+
+#include "quadmc/core/smoothness.hpp"
 
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <span>
 #include <string>
-#include <string_view>
 
 namespace quadmc {
 
@@ -33,19 +32,35 @@ struct theoretical_rate {
   std::string source;           // where the rate comes from
 };
 
-// Throws invalid_argument for an unknown smoothness class or s = 0. An unknown method returns an
-// empty slope with the note "no entry for method …", so a new method never stops a run.
-// `order` is the rule's order r where the method's name does not fix it (gauss_legendre: 2m);
-// 0 when unknown. `singularity_exponent` is α for a "singular" f ~ x^α at an endpoint (α = 0
-// for log x): composite rules then converge as n^−min(r, 1+α), and Monte Carlo has no finite
-// variance for α ≤ −1/2. NaN = not given: the √x case (α = 1/2) is assumed
-// (docs/theory.md#endpoint-singularities).
-theoretical_rate theoretical_slope(
-    std::string_view method, std::string_view smoothness, std::size_t s, int order = 0,
-    double singularity_exponent = std::numeric_limits<double>::quiet_NaN());
+// What a rate depends on besides the method.
+struct integrand_class {
+  smoothness regularity = smoothness::analytic;
+  std::size_t s = 1;
+  // α for a singular f ~ x^α at an endpoint (α = 0 for log x); NaN = not given (√x assumed).
+  double singularity_exponent = std::numeric_limits<double>::quiet_NaN();
+};
 
-// The method names and smoothness classes the table knows, in table order.
-std::span<const std::string_view> tabulated_methods() noexcept;
-std::span<const std::string_view> smoothness_classes() noexcept;
+// A composite rule of algebraic order r (error O(n^−r) on f ∈ C^r), as a tensor product in s
+// dimensions: −r/s on smooth f; a kink caps the order at 2, a jump at 1, an endpoint singularity
+// f ~ x^α at min(r, 1 + α). Throws invalid_argument for s = 0 or r < 1.
+theoretical_rate composite_rule_rate(int order, const integrand_class& f);
+
+// Richardson extrapolation of the trapezoid rule (Romberg): exponential on analytic f, of f's
+// own unknown order on smooth f (no slope for either), the trapezoid rate once a kink, jump or
+// singularity breaks the Euler–Maclaurin expansion.
+theoretical_rate extrapolated_trapezoid_rate(const integrand_class& f);
+
+// Whether f has a finite variance, which every Monte Carlo rate needs: not for f ~ x^α with
+// α ≤ −1/2 (∫x^(2α) diverges). The rate without a slope that says so, or nullopt.
+std::optional<theoretical_rate> infinite_variance_rate(const integrand_class& f);
+
+// σ/√N: −1/2 for a Monte Carlo method of finite variance, with the method's note and source
+// (infinite variance first gives no slope).
+theoretical_rate root_n_rate(const integrand_class& f, std::string note, std::string source);
+
+// One point in each of N = k^s equal strata (jittered sampling and what reduces to it):
+// −1/2 − 1/s for Lipschitz f, −1/2 − 1/(2s) for the indicator of a region with a smooth
+// boundary, no tabulated slope for a singular f.
+theoretical_rate one_point_per_stratum_rate(const integrand_class& f);
 
 }  // namespace quadmc

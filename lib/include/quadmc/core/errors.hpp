@@ -29,6 +29,14 @@ class invalid_argument : public std::invalid_argument {
   // For messages that do not fit the parameter/value/expected shape (e.g. scene files).
   explicit invalid_argument(const std::string& message) : std::invalid_argument(message) {}
 
+  // A message of any shape about one parameter, which parameter() then names (so that a caller
+  // can point at it, e.g. at a scene file's key).
+  static invalid_argument about(std::string_view parameter, const std::string& message) {
+    invalid_argument e(message);
+    e.parameter_ = parameter;
+    return e;
+  }
+
   const std::string& parameter() const noexcept { return parameter_; }
 
  private:

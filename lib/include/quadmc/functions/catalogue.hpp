@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -35,6 +36,11 @@ struct integrand_params {
   std::uint64_t seed = 0;  // for parameters drawn at random (Genz a, u)
 };
 
+// Parameters a family draws from the seed when they are omitted (Genz a and u), by key.
+using drawn_parameters = std::map<std::string, std::vector<double>, std::less<>>;
+
+// One family: its keys, its factory and what the planner needs to know, together (a new family
+// is one header of this layer and one entry of the table in catalogue.cpp).
 struct catalogue_entry {
   std::string_view name;
   std::string_view description;  // formula and domain
@@ -42,13 +48,32 @@ struct catalogue_entry {
   std::span<const std::string_view> vector_keys;
   std::span<const std::string_view> scalar_keys;
   std::string_view parameters;  // what each key means, its default and constraints
+  // Builds the family from parameters whose keys are checked and whose dimension is resolved.
+  any_integrand (*make)(const integrand_params& params);
+  // The values of the parameters drawn from `seed` for dimension s; nullptr: the family draws
+  // none, so every instance of an ensemble is the same integrand.
+  drawn_parameters (*drawn)(std::size_t s, std::uint64_t seed) = nullptr;
+  bool rendering = false;             // an irradiance integrand (make_irradiance_setup)
+  bool vertex_sum_reference = false;  // the reference sums 2^s vertex terms (costly in s)
+  std::size_t fixed_dimension = 0;    // the only s it takes (1D classics 1, irradiance 2); 0 any
 };
 
 // All families, in a fixed order (Genz, classic 1D, geometry, rendering).
 std::span<const catalogue_entry> integrand_catalogue();
 
+// The entry named `name`, or nullptr.
+const catalogue_entry* find_family(std::string_view name) noexcept;
 // The catalogue entry named `name`; throws invalid_argument("integrand", name, list of names).
 const catalogue_entry& find_catalogue_entry(std::string_view name);
+
+// A key the family does not take, or one given as a number where it takes an array (or the
+// reverse): which key and why. The scene planner and make_integrand both ask this one rule.
+struct key_problem {
+  std::string key;
+  std::string message;
+};
+std::optional<key_problem> find_key_problem(const catalogue_entry& entry,
+                                            const integrand_params& params);
 
 // Builds the catalogue member `name` from `params` (validated as described above).
 any_integrand make_integrand(std::string_view name, const integrand_params& params);

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/smoothness.hpp"
 
 #include <array>
 #include <cmath>
@@ -26,31 +27,6 @@
 #include <vector>
 
 namespace quadmc {
-
-// How regular f is on its domain: decides which convergence rate theory predicts.
-enum class smoothness {
-  analytic,       // e.g. Genz oscillatory, Gaussian: every rule reaches its full order
-  smooth,         // C^k for the k in integrand_info::continuous_derivatives (finite)
-  c0,             // continuous with a kink (|x − c|, Genz continuous, Sobol' g)
-  discontinuous,  // jumps (step, indicators, Genz discontinuous, occluded irradiance)
-  singular,       // unbounded derivative or value at the boundary (√x, 1/√x, log x)
-};
-
-constexpr const char* to_string(smoothness s) noexcept {
-  switch (s) {
-    case smoothness::analytic:
-      return "analytic";
-    case smoothness::smooth:
-      return "smooth";
-    case smoothness::c0:
-      return "C0";
-    case smoothness::discontinuous:
-      return "discontinuous";
-    case smoothness::singular:
-      return "singular";
-  }
-  return "?";
-}
 
 // An axis-aligned box Π[lower_j, upper_j].
 struct box {

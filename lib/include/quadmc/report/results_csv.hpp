@@ -3,7 +3,7 @@
 //   convergence.csv  one row per cell (integrand, s, method, N):
 //     scene, integrand, s, method, N, evaluations, repetitions, reference, estimate_mean, rmse,
 //     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
-//     then added columns: floor, smoothness, envelope
+//     then added columns: floor, smoothness, envelope, tolerance, error_estimate
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
 //     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
@@ -17,6 +17,9 @@
 // a rounding-floor point (rounding_floor.hpp). `envelope` is the cell's a-priori bound on |error|
 // (a rule on a jump, rules/jump_error_envelope.hpp), empty where there is none; `envelope_ratio`
 // the largest error/envelope over the series' non-floor cells, empty for a slope-verdict series.
+// `tolerance` is the error a cell was run to (control = "tolerance"; N is then 0), empty for a
+// sized cell; `error_estimate` the root mean square of the repetitions' own error estimates
+// (cell_statistics.hpp), empty where the method has none.
 // `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
 // (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
 //
@@ -42,8 +45,8 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 3> convergence_csv_added_columns = {
-    "floor", "smoothness", "envelope"};
+inline constexpr std::array<std::string_view, 5> convergence_csv_added_columns = {
+    "floor", "smoothness", "envelope", "tolerance", "error_estimate"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
@@ -72,7 +75,9 @@ struct convergence_record {
   double seconds = 0.0;
   double evals_per_second = 0.0;
   bool floor = false;  // false when the column is absent (a file from before it was added)
-  double envelope = std::numeric_limits<double>::quiet_NaN();  // NaN: empty or column absent
+  double envelope = std::numeric_limits<double>::quiet_NaN();        // NaN: empty or column absent
+  double tolerance = std::numeric_limits<double>::quiet_NaN();       // NaN: a sized cell, or absent
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();  // NaN: none, or absent
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.

@@ -37,6 +37,9 @@ struct romberg_options {
   // Stop when error_estimate ≤ relative_tolerance · L1 (L1 = ∫|f|, so an integral near zero does
   // not demand impossible relative accuracy). 0 runs all max_levels levels.
   double relative_tolerance = 1e-12;
+  // Or stop when error_estimate ≤ absolute_tolerance (whichever is reached first, as cubature's
+  // reqAbsError and reqRelError); 0 disables it.
+  double absolute_tolerance = 0.0;
   // Levels (halvings) before the stopping test may fire: an integrand that happens to vanish at
   // the first few nodes would otherwise stop at 0 (the first 2^4 + 1 = 17 nodes must all lie).
   unsigned min_levels = 4;
@@ -62,6 +65,8 @@ romberg_result romberg_table(Evaluate&& evaluate, double a, double b,
                              const romberg_options& options) {
   require(std::isfinite(options.relative_tolerance) && options.relative_tolerance >= 0.0,
           "relative_tolerance", options.relative_tolerance, "a finite number ≥ 0");
+  require(std::isfinite(options.absolute_tolerance) && options.absolute_tolerance >= 0.0,
+          "absolute_tolerance", options.absolute_tolerance, "a finite number ≥ 0");
   require(options.max_levels >= 1 && options.max_levels <= romberg_max_levels, "max_levels",
           options.max_levels, "between 1 and 40 (2^max_levels + 1 evaluations)");
   require(options.min_levels <= options.max_levels, "min_levels", options.min_levels,
@@ -121,7 +126,8 @@ romberg_result romberg_table(Evaluate&& evaluate, double a, double b,
     result.value = current[k];
     result.error_estimate = std::max(std::abs(current[k] - previous[k - 1]), rounding_floor);
     result.levels = k;
-    result.converged = result.error_estimate <= options.relative_tolerance * l1;
+    result.converged = result.error_estimate <=
+                       std::max(options.relative_tolerance * l1, options.absolute_tolerance);
     if (k >= options.min_levels && result.converged) break;
     previous = current;
   }

@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -51,8 +52,11 @@ struct plan_limits {
   static constexpr std::uint64_t max_reference_terms = std::uint64_t{1} << 24;
   // Cells (integrands × methods × N values × ensemble instances), and as many skips at most.
   static constexpr std::uint64_t max_cells = std::uint64_t{1} << 20;
-  // Σ repetitions over the cells: the runner keeps one 32-byte result per repetition (1 GiB).
+  // Σ repetitions over the cells: the runner keeps one 40-byte result per repetition (1.25 GiB).
   static constexpr std::uint64_t max_repetitions = std::uint64_t{1} << 25;
+  // What a cell run to a tolerance may spend per repetition when the scene sets no
+  // budget.max_evaluations: 2^30 evaluations, seconds to minutes of a cheap integrand.
+  static constexpr std::uint64_t default_tolerance_budget = std::uint64_t{1} << 30;
 };
 
 // One instance of one integrand of the scene (an ensemble of K has K of them).
@@ -67,20 +71,27 @@ struct plan_instance {
 };
 
 struct plan_cell {
-  std::size_t integrand = 0;          // index into scene::integrands
-  std::size_t instance = 0;           // ensemble instance k
-  std::size_t method = 0;             // index into scene::methods
-  std::size_t dimension = 1;          // s
-  std::uint64_t nominal_N = 0;        // from budget.N, or p(n)^s for explicit panels
+  std::size_t integrand = 0;    // index into scene::integrands
+  std::size_t instance = 0;     // ensemble instance k
+  std::size_t method = 0;       // index into scene::methods
+  std::size_t dimension = 1;    // s
+  std::uint64_t nominal_N = 0;  // from budget.N, or p(n)^s for explicit panels; 0 for a
+                                // cell run to a tolerance
+  cell_control control = cell_control::fixed_size;
+  double tolerance = std::numeric_limits<double>::quiet_NaN();  // control = tolerance only
   std::uint64_t per_axis = 0;         // rules: panels n per axis; jittered-like: strata k per axis;
                                       // 0 when the points have no grid
   std::uint64_t points_per_axis = 0;  // rules: nodes per axis p(n); 0 otherwise
-  std::uint64_t evaluations = 0;      // per repetition, exact
+  std::uint64_t evaluations = 0;      // per repetition: exact, or the most a budget or
+                                      // tolerance cell may spend
   std::uint64_t repetitions = 1;      // 1 for deterministic rules
   int order = 0;                      // rules: r, |error| = O(n^-r); 0 for random methods
   // Names the cell's random streams: the runner appends (repetition, chunk) and calls
   // quadmc::stream_id with the scene seed as the Philox key.
-  std::array<std::uint64_t, 4> stream_parts{};  // {integrand, instance, method, nominal_N}
+  // {integrand, instance, method, nominal_N}; a tolerance cell has the tolerance's bits for N.
+  std::array<std::uint64_t, 4> stream_parts{};
+
+  cell_size size() const noexcept { return {evaluations, per_axis, points_per_axis, order}; }
 };
 
 struct plan_skip {

@@ -6,13 +6,14 @@
 // line and key. It does not hold defaults the plan derives (drawn parameters, mapped counts).
 #pragma once
 
-#include "quadmc/core/summation.hpp"
+#include "quadmc/methods/method.hpp"
 #include "quadmc/scene/scene_error.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,23 +41,23 @@ struct integrand_spec {
   key_locations keys;
 };
 
+// One [[method]] of the scene: the keys every method has, and the method itself as its
+// descriptor configured it from the table's other keys (methods/method.hpp).
 struct method_spec {
-  std::string name;   // method catalogue name (methods.hpp)
-  std::string label;  // display name, unique in the scene (defaults to name, or name + warp)
-  std::uint64_t repetitions = 32;
+  std::string name;   // a name of methods/registry.hpp
+  std::string label;  // display name, unique in the scene (default: name + label_suffix())
+  std::shared_ptr<const method> configured;
+  std::uint64_t repetitions = 32;  // randomized methods: independent runs per cell
   bool repetitions_given = false;
-  std::uint64_t m = 3;                // gauss_legendre: nodes per panel
-  std::vector<std::uint64_t> panels;  // tensor rules: explicit n per axis (replaces budget.N)
-  summation accumulator = summation::pairwise;  // tensor rules: how the N terms are summed
-  bool accumulator_given = false;
-  std::string point_set;                // importance / irradiance estimators: sampling pattern
-  std::string warp;                     // importance: warp name (methods.hpp warp_catalogue)
-  double warp_parameter = 0.0;          // its parameter (exponent, rate)
+  cell_control control = cell_control::fixed_size;
+  std::vector<double> tolerances;       // control = tolerance: the targets, decreasing
   std::vector<std::string> integrands;  // restriction to these integrand names; empty = all
 
   std::size_t table_index = 1;  // 1-based number of its [[method]] table
   source_location table;
   key_locations keys;
+
+  method_kind kind() const noexcept { return configured->descriptor().kind; }
 };
 
 struct budget_spec {

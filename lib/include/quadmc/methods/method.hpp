@@ -1,0 +1,146 @@
+// A method of the suite as a scene names it: the descriptor (name, kind, options, controls, how
+// to configure one) and the configured method (how a scene's N becomes its size, which integrands
+// it takes, its theoretical rate, how it runs one cell).
+//
+// Use it to add a method: one class deriving from `method`, one descriptor in its family's table
+// (lib/src/methods/<family>.cpp) — nothing else in the library names it. The scene parser, the
+// planner, the runner and `quadmc list` ask these two types and never compare method names
+// (the shape of pbrt-v4's Sampler::Create: look the name up once, let the type read its own
+// parameters). Not for the kernels themselves (rules/, estimators/): a method is the thin layer
+// that chooses a kernel, its size and its theory.
+//
+// Controls (docs/design.md#layers): a cell is run at a fixed size (rules, Monte Carlo: the N
+// ladder mapped to the method's sizes), with an evaluation budget (an adaptive method may spend
+// up to N), or to a tolerance (the method stops when its own error estimate is below it). Every
+// cell records the evaluations it really spent and, where the method has one, its own error
+// estimate.
+#pragma once
+
+#include "quadmc/analysis/cell_statistics.hpp"
+#include "quadmc/analysis/theoretical_rate.hpp"
+#include "quadmc/functions/any_integrand.hpp"
+#include "quadmc/functions/catalogue.hpp"
+#include "quadmc/methods/option_reader.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace quadmc {
+
+enum class method_kind {
+  deterministic,  // one run per cell; repetitions do not apply
+  randomized,     // `repetitions` independent runs per cell, each on its own random stream
+};
+
+enum class cell_control {
+  fixed_size,  // "fixed": N is mapped to a size the method uses exactly
+  budget,      // "budget": N is the most the method may spend; it may stop earlier
+  tolerance,   // "tolerance": the method runs until its error estimate is below the target
+};
+std::string_view to_string(cell_control control) noexcept;
+
+// What the plan decided for one cell. Exact integers throughout: N → grid arithmetic never
+// rounds (core/integer_powers.hpp).
+struct cell_size {
+  std::uint64_t evaluations = 0;      // per repetition (budget, tolerance: the most it may spend)
+  std::uint64_t per_axis = 0;         // rules: panels n; stratified points: strata k; else 0
+  std::uint64_t points_per_axis = 0;  // rules: nodes per axis p(n); else 0
+  int order = 0;                      // rules: r of this grid, |error| = O(n^−r); else 0
+};
+
+// A size for a nominal N, or why none fits (a plan skip, e.g. "N is below the smallest grid").
+struct sizing {
+  std::optional<cell_size> size;
+  std::string reason;
+};
+
+// What a method may ask of an integrand before it is run.
+struct integrand_traits {
+  std::string_view family;  // catalogue name
+  std::size_t s = 1;
+  bool rendering = false;  // an irradiance integrand (catalogue_entry::rendering)
+};
+
+struct run_context {
+  std::uint64_t seed = 0;  // the scene's seed: the key of every random stream
+  unsigned threads = 1;    // as many as may be used; results do not depend on it
+};
+
+// One cell to run: the integrand instance, its size, and the stream of this repetition.
+struct method_cell {
+  const any_integrand& function;
+  const integrand_params& params;  // what the instance was built from (irradiance geometry)
+  const cell_size& size;
+  cell_control control = cell_control::fixed_size;
+  double tolerance = std::numeric_limits<double>::quiet_NaN();  // control = tolerance only
+  std::uint64_t stream = 0;
+};
+
+struct method_descriptor;
+
+// A [[method]] as configured by its table. Immutable after creation, so one object serves every
+// cell and thread.
+class method {
+ public:
+  explicit method(const method_descriptor& descriptor) noexcept : descriptor_(&descriptor) {}
+  method(const method&) = delete;
+  method& operator=(const method&) = delete;
+  virtual ~method() = default;
+
+  const method_descriptor& descriptor() const noexcept { return *descriptor_; }
+
+  // Appended to the name for the default label: "_naive" (an accumulator), "_power" (a warp),
+  // "_jittered" (a point set), so two configurations of one method get two series.
+  virtual std::string label_suffix() const { return {}; }
+
+  // Why the method cannot integrate such an integrand (a plan skip; an error when the scene pairs
+  // them explicitly), or nullopt.
+  virtual std::optional<std::string> incompatibility(const integrand_traits& f) const;
+
+  // The size for nominal N in s dimensions.
+  virtual sizing size_for(std::uint64_t N, std::size_t s) const = 0;
+
+  // Explicit sizes replacing the ladder (the rules' `panels`), each as a size; empty when the
+  // method follows budget.N.
+  virtual std::vector<sizing> explicit_sizes(std::size_t s) const;
+
+  // The convergence rate theory predicts on f (analysis/theoretical_rate.hpp).
+  virtual theoretical_rate theory(const integrand_class& f) const = 0;
+
+  // An a-priori bound on |error| of a fixed-size cell on f (a rule on a jump:
+  // rules/jump_error_envelope.hpp); NaN when the method has none for f.
+  virtual double error_envelope(const integrand_info& f, const cell_size& size) const;
+
+  // One repetition of one cell. Throws what the kernels throw (invalid_argument,
+  // non_finite_value naming the point).
+  virtual repetition_result run(const method_cell& cell, const run_context& context) const = 0;
+
+ private:
+  const method_descriptor* descriptor_;
+};
+
+// One option key of a method, for `quadmc list`, the README and unknown-key messages.
+struct option_doc {
+  std::string_view key;
+  std::string_view meaning;  // values, default and constraints, one line
+};
+
+struct method_descriptor {
+  std::string_view name;
+  std::string_view description;  // one line
+  method_kind kind;
+  std::span<const option_doc> options;     // its own keys, beyond the ones every method has
+  std::span<const cell_control> controls;  // the controls it supports; the first is its default
+  // Reads the method's own options from its [[method]] table (the reader refuses the rest).
+  std::unique_ptr<const method> (*create)(const method_descriptor& self, option_reader& options);
+
+  bool supports(cell_control control) const noexcept;
+};
+
+}  // namespace quadmc

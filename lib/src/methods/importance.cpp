@@ -1,0 +1,154 @@
+// Importance sampling of a 1D integrand with a warp of sampling/inversion_warps.hpp as a method:
+// the warp's uniforms come from any point set (`point_set`, independent by default), so the
+// density and the stratification can be studied apart.
+#include "families.hpp"
+
+#include "quadmc/sampling/inversion_warps.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+
+namespace quadmc::methods {
+namespace {
+
+// A warp a scene may name: its one parameter, the parameter's default and its valid range (the
+// warps' own bounds, sampling/inversion_warps.hpp explains them, checked when the scene is read
+// so that a run never reaches a warp that refuses its parameter).
+struct warp_choice {
+  std::string_view name;
+  unit_warp_kind kind;
+  std::string_view parameter;
+  double default_value;
+};
+constexpr std::array<warp_choice, 2> warps{{
+    {"power", unit_warp_kind::power, "exponent", 1.0},
+    {"exponential", unit_warp_kind::truncated_exponential, "rate", 1.0},
+}};
+
+std::string warp_names() {
+  std::string out;
+  for (const warp_choice& w : warps) out += (out.empty() ? "" : ", ") + std::string(w.name);
+  return out;
+}
+
+const warp_choice* find_warp(std::string_view name) {
+  for (const warp_choice& w : warps) {
+    if (w.name == name) return &w;
+  }
+  return nullptr;
+}
+
+double read_warp_parameter(option_reader& t, const warp_choice& w) {
+  if (w.kind == unit_warp_kind::power) {
+    const std::string what = fmt::format(
+        "an exponent -1 < k <= {:g} (larger k round every sample to 1)", power_warp::max_exponent);
+    const auto k = t.number(w.parameter, what);
+    if (!k) return w.default_value;
+    if (!(*k > -1.0 && *k <= power_warp::max_exponent)) {
+      t.fail(w.parameter, fmt::format("expected {}, got {}", what, *k));
+    }
+    return *k;
+  }
+  const std::string what =
+      fmt::format("a rate 0 < |l| <= {:g} (e^l must stay a finite, normal double)",
+                  truncated_exponential_warp::max_abs_rate);
+  const auto rate = t.number(w.parameter, what);
+  if (!rate) return w.default_value;
+  if (!(*rate != 0.0 && std::abs(*rate) <= truncated_exponential_warp::max_abs_rate)) {
+    t.fail(w.parameter, fmt::format("expected {}, got {}", what, *rate));
+  }
+  return *rate;
+}
+
+// `warp = "power"` or `warp = { name = "power", exponent = 2.0 }`; required.
+std::pair<const warp_choice*, double> read_warp(option_reader& r) {
+  const std::string names = warp_names();
+  if (!r.has("warp")) {
+    r.fail_missing("warp", fmt::format("missing required key for importance (one of: {})", names));
+  }
+  if (r.is_table("warp")) {
+    const std::unique_ptr<option_reader> t =
+        r.table("warp", "a warp name or a table { name = …, <parameter> = … }");
+    const auto name = t->string("name", "a warp name");
+    if (!name) t->fail_missing("name", fmt::format("missing `name` (one of: {})", names));
+    const warp_choice* w = find_warp(*name);
+    if (w == nullptr) t->fail("name", fmt::format("expected one of: {}, got \"{}\"", names, *name));
+    const double parameter = read_warp_parameter(*t, *w);
+    const std::array<std::string_view, 2> accepted{"name", w->parameter};
+    t->reject_unread(fmt::format("warp '{}'", w->name), accepted);
+    return {w, parameter};
+  }
+  const auto name = r.string("warp", "a warp name or a table { name = …, <parameter> = … }");
+  const warp_choice* w = find_warp(*name);
+  if (w == nullptr) r.fail("warp", fmt::format("expected one of: {}, got \"{}\"", names, *name));
+  return {w, w->default_value};
+}
+
+class importance_method final : public method {
+ public:
+  importance_method(const method_descriptor& d, const warp_choice& warp, double parameter,
+                    point_set_option points)
+      : method(d), warp_(&warp), parameter_(parameter), points_(points) {}
+
+  std::string label_suffix() const override {
+    std::string suffix = "_" + std::string(warp_->name);
+    if (points_.given) suffix += "_" + std::string(points_.set->name);
+    return suffix;
+  }
+
+  std::optional<std::string> incompatibility(const integrand_traits& f) const override {
+    if (f.s == 1) return std::nullopt;
+    return fmt::format("the '{}' warp is a 1D density; the integrand has s = {}", warp_->name, f.s);
+  }
+
+  sizing size_for(std::uint64_t N, std::size_t s) const override {
+    return point_set_sizing(*points_.set, N, s);
+  }
+
+  theoretical_rate theory(const integrand_class& f) const override {
+    return root_n_rate(f, "(∫f²/p − I²)/N; zero variance (no slope, rounding floor) iff p ∝ f ≥ 0",
+                       "docs/theory.md#importance; [Ramamoorthi 2009, §4.1]");
+  }
+
+  repetition_result run(const method_cell& cell, const run_context& context) const override {
+    return from_estimate(points_.set->importance(cell.function, {warp_->kind, parameter_},
+                                                 {context.seed, cell.stream}, cell.size.evaluations,
+                                                 context.threads));
+  }
+
+ private:
+  const warp_choice* warp_;
+  double parameter_;
+  point_set_option points_;
+};
+
+constexpr std::array<option_doc, 2> option_docs{{
+    {"warp",
+     "required: \"power\", \"exponential\", or { name = \"power\", exponent = k } (p(x) = (k+1) "
+     "x^k on [0,1], -1 < k <= 1e5, default 1) / { name = \"exponential\", rate = l } (p(x) = l "
+     "e^(l x)/(e^l - 1) on [0,1], 0 < |l| <= 700, default 1); the label gets \"_<warp>\""},
+    {"point_set",
+     "the pattern of the uniforms fed to the warp (independent [default], jittered, unjittered, "
+     "padded_jittered, latin_hypercube); counts are mapped as for that method"},
+}};
+constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+
+const std::array<method_descriptor, 1> descriptors{{
+    {"importance", "importance sampling with a 1D warp (s = 1)", method_kind::randomized,
+     option_docs, fixed_only,
+     [](const method_descriptor& d, option_reader& r) -> std::unique_ptr<const method> {
+       const auto [warp, parameter] = read_warp(r);
+       return std::make_unique<importance_method>(d, *warp, parameter, read_point_set(r));
+     }},
+}};
+
+}  // namespace
+
+std::span<const method_descriptor> importance_methods() noexcept {
+  return descriptors;
+}
+
+}  // namespace quadmc::methods

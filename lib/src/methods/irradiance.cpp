@@ -1,0 +1,82 @@
+// The irradiance estimators as methods: directions uniform or cosine-weighted on the hemisphere,
+// or points uniform on the light (estimators/irradiance_estimators.hpp), for the rendering
+// integrands only, each with its 2D uniforms from any point set (`point_set`).
+#include "families.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <memory>
+
+namespace quadmc::methods {
+namespace {
+
+class irradiance_method final : public method {
+ public:
+  irradiance_method(const method_descriptor& d, irradiance_sampling technique,
+                    point_set_option points)
+      : method(d), technique_(technique), points_(points) {}
+
+  std::string label_suffix() const override {
+    return points_.given ? "_" + std::string(points_.set->name) : std::string();
+  }
+
+  std::optional<std::string> incompatibility(const integrand_traits& f) const override {
+    if (f.rendering) return std::nullopt;
+    return fmt::format("{} estimates irradiance; '{}' is not a rendering integrand",
+                       descriptor().name, f.family);
+  }
+
+  sizing size_for(std::uint64_t N, std::size_t s) const override {
+    return point_set_sizing(*points_.set, N, s);
+  }
+
+  // Uniform-hemisphere, cosine-weighted and light-area sampling are importance sampling with
+  // bounded weights: finite variance, so σ/√N; only the constant σ differs
+  // (docs/theory.md#irradiance-estimators).
+  theoretical_rate theory(const integrand_class& f) const override {
+    return root_n_rate(f, "importance sampling with bounded f/p: finite variance, σ/√N",
+                       "docs/theory.md#irradiance-estimators; [Ramamoorthi 2009, §2.2.3, §4.1]");
+  }
+
+  repetition_result run(const method_cell& cell, const run_context& context) const override {
+    const irradiance_setup setup = make_irradiance_setup(cell.params);
+    return from_estimate(points_.set->irradiance(technique_, setup, {context.seed, cell.stream},
+                                                 cell.size.evaluations, context.threads));
+  }
+
+ private:
+  irradiance_sampling technique_;
+  point_set_option points_;
+};
+
+constexpr std::array<option_doc, 1> option_docs{{
+    {"point_set",
+     "the pattern of the 2D uniforms (independent [default], jittered, unjittered, "
+     "padded_jittered, latin_hypercube); counts are mapped as for that method"},
+}};
+constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+
+template <irradiance_sampling Technique>
+std::unique_ptr<const method> create(const method_descriptor& d, option_reader& r) {
+  return std::make_unique<irradiance_method>(d, Technique, read_point_set(r));
+}
+
+const std::array<method_descriptor, 3> descriptors{{
+    {"irradiance_hemisphere_uniform", "irradiance, directions uniform on the hemisphere",
+     method_kind::randomized, option_docs, fixed_only,
+     create<irradiance_sampling::uniform_hemisphere>},
+    {"irradiance_hemisphere_cosine", "irradiance, cosine-weighted hemisphere directions",
+     method_kind::randomized, option_docs, fixed_only,
+     create<irradiance_sampling::cosine_hemisphere>},
+    {"irradiance_light_area", "irradiance, points uniform on the light's area",
+     method_kind::randomized, option_docs, fixed_only, create<irradiance_sampling::light_area>},
+}};
+
+}  // namespace
+
+std::span<const method_descriptor> irradiance_methods() noexcept {
+  return descriptors;
+}
+
+}  // namespace quadmc::methods

@@ -1,0 +1,36 @@
+// The defaults of method.hpp's interface.
+#include "quadmc/methods/method.hpp"
+
+#include <algorithm>
+
+namespace quadmc {
+
+std::string_view to_string(cell_control control) noexcept {
+  switch (control) {
+    case cell_control::fixed_size:
+      return "fixed";
+    case cell_control::budget:
+      return "budget";
+    case cell_control::tolerance:
+      return "tolerance";
+  }
+  return "?";
+}
+
+std::optional<std::string> method::incompatibility(const integrand_traits&) const {
+  return std::nullopt;
+}
+
+std::vector<sizing> method::explicit_sizes(std::size_t) const {
+  return {};
+}
+
+double method::error_envelope(const integrand_info&, const cell_size&) const {
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+bool method_descriptor::supports(cell_control control) const noexcept {
+  return std::find(controls.begin(), controls.end(), control) != controls.end();
+}
+
+}  // namespace quadmc

@@ -1,0 +1,151 @@
+// Plain Monte Carlo and the stratified patterns as methods: each is the sample mean of f over a
+// point set of estimators/point_set_catalogue.hpp, named after it (plain_mc: independent points).
+// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²).
+#include "families.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <memory>
+
+namespace quadmc::methods {
+
+point_set_option read_point_set(option_reader& options) {
+  point_set_option out;
+  out.set = find_point_set("independent");
+  std::vector<std::string_view> names;
+  for (const point_set_entry& e : point_set_catalogue()) names.push_back(e.name);
+  if (auto name = options.choice("point_set", names)) {
+    out.set = find_point_set(*name);
+    out.given = true;
+  }
+  return out;
+}
+
+sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s) {
+  const point_count_choice count = largest_point_count(set.counts, N, s);
+  return {cell_size{count.points, count.per_axis, 0, 0}, {}};
+}
+
+repetition_result from_estimate(const estimate& e) {
+  repetition_result out;
+  out.value = e.value;
+  out.std_error = e.std_error;
+  out.evaluations = e.evaluations;
+  out.error_estimate = e.std_error;
+  return out;
+}
+
+namespace {
+
+using theory_fn = theoretical_rate (*)(const integrand_class&);
+
+class point_set_method final : public method {
+ public:
+  point_set_method(const method_descriptor& d, const point_set_entry& set, theory_fn theory)
+      : method(d), set_(&set), theory_(theory) {}
+
+  sizing size_for(std::uint64_t N, std::size_t s) const override {
+    return point_set_sizing(*set_, N, s);
+  }
+
+  theoretical_rate theory(const integrand_class& f) const override { return theory_(f); }
+
+  repetition_result run(const method_cell& cell, const run_context& context) const override {
+    return from_estimate(set_->monte_carlo(cell.function, {context.seed, cell.stream},
+                                           cell.size.evaluations, context.threads));
+  }
+
+ private:
+  const point_set_entry* set_;
+  theory_fn theory_;
+};
+
+theoretical_rate plain_theory(const integrand_class& f) {
+  return root_n_rate(f, "σ/√N, finite variance assumed",
+                     "docs/theory.md#plain-monte-carlo; [Ramamoorthi 2009, §2.2.2]");
+}
+
+// pbrt's unjittered stratified sampler puts one point at each cell centre: a midpoint grid
+// (docs/theory.md#unjittered), shifted as a whole at random.
+theoretical_rate unjittered_theory(const integrand_class& f) {
+  theoretical_rate rate = composite_rule_rate(2, f);
+  rate.note = "cell-centre grid = tensor midpoint rule; " + rate.note;
+  return rate;
+}
+
+// In s ≤ 2 padding is one point per 2D stratum, jittered sampling itself.
+theoretical_rate padded_theory(const integrand_class& f) {
+  if (f.s <= 2) return one_point_per_stratum_rate(f);
+  return root_n_rate(
+      f, "padding stratifies only 2D projections: plain MC rate unless f is a sum of 2D parts",
+      "docs/theory.md#padded-jittered; [Pharr et al. 2023, §8.5]; [Veach 1997, eq. 2.26]");
+}
+
+// In one dimension a Latin hypercube is one point per stratum: jittered sampling exactly (its
+// additive part is all of f, so Stein's residual vanishes: docs/theory.md#latin-hypercube).
+theoretical_rate latin_hypercube_theory(const integrand_class& f) {
+  if (f.s == 1) return one_point_per_stratum_rate(f);
+  return root_n_rate(
+      f, "removes the additive part of f; O(N^-1/2) in general",
+      "docs/theory.md#latin-hypercube; [McKay et al. 1979]; [Stein 1987]; [Owen 1992]");
+}
+
+template <theory_fn Theory>
+std::unique_ptr<const method> create_over(const method_descriptor& d, option_reader&,
+                                          std::string_view set) {
+  return std::make_unique<point_set_method>(d, *find_point_set(set), Theory);
+}
+
+constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+
+const std::array<method_descriptor, 5> descriptors{{
+    {"plain_mc",
+     "plain Monte Carlo with independent uniform points",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<plain_theory>(d, r, "independent");
+     }},
+    {"jittered",
+     "jittered (stratified) sampling, one random point per cell, N = k^s",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<one_point_per_stratum_rate>(d, r, "jittered");
+     }},
+    {"unjittered",
+     "one point at the centre of each cell of a randomly shifted k^s grid",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<unjittered_theory>(d, r, "unjittered");
+     }},
+    {"padded_jittered",
+     "k x k jittered 2D strata padded across dimension pairs, N = k^2",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<padded_theory>(d, r, "padded_jittered");
+     }},
+    {"latin_hypercube",
+     "Latin hypercube sampling (McKay et al. 1979)",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<latin_hypercube_theory>(d, r, "latin_hypercube");
+     }},
+}};
+
+}  // namespace
+
+std::span<const method_descriptor> point_set_methods() noexcept {
+  return descriptors;
+}
+
+}  // namespace quadmc::methods

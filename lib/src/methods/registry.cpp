@@ -1,0 +1,64 @@
+// The one table of methods (registry.hpp): the families of lib/src/methods/, in listing order.
+#include "quadmc/methods/registry.hpp"
+
+#include "families.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+namespace quadmc {
+namespace {
+
+// One line per family; a family lists its own methods in its file.
+constexpr std::span<const method_descriptor> (*families[])() noexcept = {
+    methods::tensor_rule_methods, methods::romberg_methods,    methods::point_set_methods,
+    methods::importance_methods,  methods::irradiance_methods,
+};
+
+const std::vector<const method_descriptor*>& all() {
+  static const std::vector<const method_descriptor*> table = [] {
+    std::vector<const method_descriptor*> out;
+    for (const auto family : families) {
+      for (const method_descriptor& d : family()) out.push_back(&d);
+    }
+    return out;
+  }();
+  return table;
+}
+
+}  // namespace
+
+std::span<const method_descriptor* const> method_registry() {
+  return all();
+}
+
+const method_descriptor* find_method(std::string_view name) noexcept {
+  for (const method_descriptor* d : all()) {
+    if (d->name == name) return d;
+  }
+  return nullptr;
+}
+
+std::string method_names() {
+  std::string out;
+  for (const method_descriptor* d : all()) out += (out.empty() ? "" : ", ") + std::string(d->name);
+  return out;
+}
+
+std::unique_ptr<const method> make_method(std::string_view name, const option_table& options) {
+  const method_descriptor* d = find_method(name);
+  if (d == nullptr) {
+    throw invalid_argument("method", std::string(name), fmt::format("one of: {}", method_names()));
+  }
+  option_map reader(options, fmt::format("method '{}'", name));
+  std::unique_ptr<const method> m = d->create(*d, reader);
+  std::vector<std::string_view> accepted;
+  for (const option_doc& o : d->options) accepted.push_back(o.key);
+  reader.reject_unread(fmt::format("a '{}' method", name), accepted);
+  return m;
+}
+
+}  // namespace quadmc
