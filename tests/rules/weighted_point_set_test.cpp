@@ -6,7 +6,7 @@
 #include "hand_built_rules.hpp"
 #include "quadmc/rules/gauss_legendre_rule.hpp"
 #include "quadmc/rules/simpson_rule.hpp"
-#include "quadmc/rules/tensor_grid.hpp"
+#include "quadmc/rules/tensor_product_grid.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
 #include "throws_with.hpp"
 
@@ -25,8 +25,8 @@ using namespace quadmc;
 using quadmc::testing::extrapolated_midpoint;
 using quadmc::testing::fibonacci_lattice;
 
-static_assert(weighted_point_set<tensor_grid<simpson_rule::node_set>>);
-static_assert(box_mapped_point_set<tensor_grid<simpson_rule::node_set>>);
+static_assert(weighted_point_set<tensor_product_grid<simpson_rule::node_set>>);
+static_assert(box_mapped_point_set<tensor_product_grid<simpson_rule::node_set>>);
 static_assert(weighted_point_set<extrapolated_midpoint>);
 static_assert(!box_mapped_point_set<extrapolated_midpoint>);
 static_assert(weighted_point_set<fibonacci_lattice>);
@@ -150,11 +150,11 @@ void expect_contract(const P& points, double weight_sum_tolerance) {
 // Σw = 1 up to the rounding of N weights each off by ≤ ε/2 relative and of the running sum
 // ((N − 1)ε·Σ|w|, Higham §4.2), here bounded by 2Nε·Σ|w|.
 TEST(WeightedPointSetContract, TensorGrids) {
-  const tensor_grid simpson(simpson_rule{}.nodes(6), 3);
+  const tensor_product_grid simpson(simpson_rule{}.nodes(6), 3);
   expect_contract(simpson, 2.0 * 343.0 * eps);
-  const tensor_grid trapezoid(trapezoid_rule{}.nodes(40), 2);
+  const tensor_product_grid trapezoid(trapezoid_rule{}.nodes(40), 2);
   expect_contract(trapezoid, 2.0 * 1681.0 * eps);
-  const tensor_grid gauss(gauss_legendre_rule(5).nodes(3), 2);
+  const tensor_product_grid gauss(gauss_legendre_rule(5).nodes(3), 2);
   expect_contract(gauss, 2.0 * 225.0 * eps);
 }
 

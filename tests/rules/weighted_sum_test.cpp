@@ -8,8 +8,8 @@
 #include "quadmc/rules/gauss_legendre_rule.hpp"
 #include "quadmc/rules/midpoint_rule.hpp"
 #include "quadmc/rules/simpson_rule.hpp"
-#include "quadmc/rules/tensor_grid.hpp"
 #include "quadmc/rules/tensor_product.hpp"
+#include "quadmc/rules/tensor_product_grid.hpp"
 #include "reference_weighted_sum.hpp"
 #include "throws_with.hpp"
 
@@ -80,7 +80,8 @@ struct without_fast_path {
     grid->generate(first, nodes, weights);
   }
 };
-static_assert(!box_mapped_point_set<without_fast_path<tensor_grid<simpson_rule::node_set>>>);
+static_assert(
+    !box_mapped_point_set<without_fast_path<tensor_product_grid<simpson_rule::node_set>>>);
 
 // --- Weights of both signs: one Richardson step on the midpoint rule ---------------------------
 
@@ -154,7 +155,7 @@ TEST(WeightedSum, FastPathAndGenericMapGiveTheSameBits) {
       return std::exp(v);
     });
     const std::uint64_t n = s == 1 ? 20000 : 40;  // 1D: more than 2^14 nodes, not tabulated
-    const tensor_grid grid(simpson_rule{}.nodes(n), s);
+    const tensor_product_grid grid(simpson_rule{}.nodes(n), s);
     const without_fast_path<decltype(grid)> generic{&grid};
     for (const summation accumulate : all_accumulators) {
       const double fast = weighted_sum(f, grid, 2, accumulate).value;
@@ -198,7 +199,7 @@ TEST(WeightedSum, GaussLegendreTensorGridIsExactToDegreeFivePerAxis) {
     return (a * a * a * a * a + a * a) * (b * b * b * b - b + 2.0);
   });
   for (const std::uint64_t n : {1U, 2U, 7U}) {
-    const tensor_grid grid(gauss_legendre_rule(3).nodes(n), 2);
+    const tensor_product_grid grid(gauss_legendre_rule(3).nodes(n), 2);
     EXPECT_NEAR(weighted_sum(f, grid).value, 5.55, 64.0 * eps * 3.0 * 32.0 * 7.0) << "n = " << n;
   }
 }

@@ -9,8 +9,9 @@
 // point set to weighted_sum() instead).
 //
 // It is weighted_sum (weighted_sum.hpp: batches of 256, chunks of 2^14 folded in order, the
-// accumulators of enum summation) over tensor_grid (tensor_grid.hpp: the odometer, the product
-// weights, the tabulated nodes); this file adds only the rule's n and the plain-callable form.
+// accumulators of enum summation) over tensor_product_grid (tensor_product_grid.hpp: the odometer,
+// the product weights, the tabulated nodes); this file adds only the rule's n and the
+// plain-callable form.
 #pragma once
 
 #include "quadmc/core/errors.hpp"
@@ -18,7 +19,7 @@
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/rules/rule.hpp"
 #include "quadmc/rules/rule_result.hpp"
-#include "quadmc/rules/tensor_grid.hpp"
+#include "quadmc/rules/tensor_product_grid.hpp"
 #include "quadmc/rules/weighted_sum.hpp"
 
 #include <fmt/format.h>
@@ -41,7 +42,7 @@ template <integrand F, rule R>
 rule_result integrate(const F& f, const R& rule, std::uint64_t n, unsigned threads = 1,
                       summation accumulate = summation::pairwise) {
   const integrand_info info = detail::checked_integrand_info(f);
-  const tensor_grid grid(rule.nodes(n), f.dimension());
+  const tensor_product_grid grid(rule.nodes(n), f.dimension());
   return detail::checked_weighted_sum(f, info, grid, threads, accumulate);
 }
 

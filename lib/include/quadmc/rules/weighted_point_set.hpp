@@ -1,8 +1,8 @@
 // The weighted-point-set interface: a cubature rule Q(f) = Σ_{i<N} w_i f(t_i) on the unit cube,
 // given as N nodes t_i ∈ [0,1]^s and weights w_i of either sign, generated in batches by index.
 //
-// Use it to add a deterministic rule in s dimensions — a tensor product (tensor_grid.hpp), a
-// sparse grid (Smolyak: s-dimensional nodes, weights of both signs), an extrapolated or
+// Use it to add a deterministic rule in s dimensions — a tensor product (tensor_product_grid.hpp),
+// a sparse grid (Smolyak: s-dimensional nodes, weights of both signs), an extrapolated or
 // combination rule, a lattice or other QMC rule with equal weights 1/N — without a kernel of its
 // own: weighted_sum.hpp maps the nodes to the integrand's box, evaluates f in batches, and sums
 // w_i f_i in parallel with a compensated sum, bitwise the same for any thread count. Not for
@@ -29,7 +29,7 @@
 // a tensor grid reuses each axis's m coordinates m^(s−1) times — may precompute that map once
 // per call: mapped(map) returns a generator whose generate(first, x, weights) writes the box
 // coordinates map(j, t_j) directly, bitwise equal to generating t and mapping it (tested in
-// tests/rules/tensor_grid_test.cpp), so the fast path never changes a result.
+// tests/rules/tensor_product_grid_test.cpp), so the fast path never changes a result.
 //
 // Rounding: the kernel's sum of the terms w_i f_i has an error of about (2 + log2 256)·ε·Σ|w_i f_i|
 // (pairwise within a batch, Neumaier across batches: Higham, "Accuracy and Stability of Numerical

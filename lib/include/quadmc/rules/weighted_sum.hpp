@@ -3,9 +3,9 @@
 // integrand's box.
 //
 // Use it to integrate with any weighted point set — a tensor grid (integrate() in
-// tensor_product.hpp is weighted_sum over tensor_grid), a rule with weights of both signs, a QMC
-// rule with weights 1/N. Not for Monte Carlo estimators, which need an error estimate from the
-// points (estimators/sample_mean.hpp), and not for adaptive rules (romberg.hpp).
+// tensor_product.hpp is weighted_sum over tensor_product_grid), a rule with weights of both signs,
+// a QMC rule with weights 1/N. Not for Monte Carlo estimators, which need an error estimate from
+// the points (estimators/sample_mean.hpp), and not for adaptive rules (romberg.hpp).
 //
 // How it runs (the same chunks and batches as before the kernel was shared, so the same bits):
 //  - points go to the integrand in batches of batch_points = 256 (row-major x[i*s + j]; one

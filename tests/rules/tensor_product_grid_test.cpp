@@ -1,6 +1,6 @@
-// tensor_grid: the product nodes and weights of a 1D rule as a weighted point set, and
+// tensor_product_grid: the product nodes and weights of a 1D rule as a weighted point set, and
 // integrate() over it giving the bits of the summation order it has always had.
-#include "quadmc/rules/tensor_grid.hpp"
+#include "quadmc/rules/tensor_product_grid.hpp"
 
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/rules/gauss_legendre_rule.hpp"
@@ -118,7 +118,7 @@ void expect_reference_bits_for_every_rule(const F& f, std::uint64_t n, const std
 // The sizes cover one point per axis, grids smaller than a batch, partial last batches and
 // chunks, several chunks (s = 1, n = 40 000: 40 001 to 200 000 points), and axes with more than
 // 2^14 nodes, whose nodes are computed per point instead of tabulated (s = 1, n = 40 000).
-TEST(TensorGrid, IntegrateGivesTheBitsOfTheReferenceSummationOrder) {
+TEST(TensorProductGrid, IntegrateGivesTheBitsOfTheReferenceSummationOrder) {
   const std::vector<std::vector<std::uint64_t>> panels = {
       {1, 2, 6, 40000}, {2, 130}, {2, 30}, {4, 12}};
   for (std::size_t s = 1; s <= 4; ++s) {
@@ -136,7 +136,7 @@ TEST(TensorGrid, IntegrateGivesTheBitsOfTheReferenceSummationOrder) {
 
 // m = 1 leaves one point for any s; past s = 64 the grid takes its single-point path. (A box
 // around 0, so that exp(Σ x_j) stays finite in 100 dimensions.)
-TEST(TensorGrid, OneNodePerAxisInManyDimensions) {
+TEST(TensorProductGrid, OneNodePerAxisInManyDimensions) {
   for (const std::size_t s : {63U, 64U, 65U, 100U}) {
     box around_zero;
     for (std::size_t j = 0; j < s; ++j) {
@@ -145,7 +145,7 @@ TEST(TensorGrid, OneNodePerAxisInManyDimensions) {
     }
     const smooth_integrand f{around_zero};
     expect_reference_bits(f, midpoint_rule{}, 1, "smooth");
-    const tensor_grid grid(midpoint_rule{}.nodes(1), s);
+    const tensor_product_grid grid(midpoint_rule{}.nodes(1), s);
     std::vector<double> t(s);
     double w = 0.0;
     grid.generate(0, t, std::span<double>(&w, 1));
@@ -159,7 +159,7 @@ TEST(TensorGrid, OneNodePerAxisInManyDimensions) {
 template <class R>
 void expect_points_of_the_definition(const R& rule, std::uint64_t n, std::size_t s) {
   const auto q = rule.nodes(n);
-  const tensor_grid grid(q, s);
+  const tensor_product_grid grid(q, s);
   ASSERT_EQ(grid.size(), tensor_grid_size(q.size(), s));
   ASSERT_EQ(grid.dimension(), s);
   ASSERT_EQ(grid.nodes_per_axis(), q.size());
@@ -185,7 +185,7 @@ void expect_points_of_the_definition(const R& rule, std::uint64_t n, std::size_t
   }
 }
 
-TEST(TensorGrid, AnyBatchCutGivesThePointsOfTheDefinition) {
+TEST(TensorProductGrid, AnyBatchCutGivesThePointsOfTheDefinition) {
   for (const std::size_t s : {1U, 2U, 3U, 5U}) {
     expect_points_of_the_definition(trapezoid_rule{}, 6, s);
     expect_points_of_the_definition(simpson_rule{}, 4, s);
@@ -201,7 +201,7 @@ TEST(TensorGrid, AnyBatchCutGivesThePointsOfTheDefinition) {
 template <class R>
 void expect_mapped_equals_generate_then_map(const R& rule, std::uint64_t n, std::size_t s,
                                             std::uint64_t first, std::size_t count) {
-  const tensor_grid grid(rule.nodes(n), s);
+  const tensor_product_grid grid(rule.nodes(n), s);
   const cube_to_box map(shifted_box(s));
   const auto on_box = grid.mapped(map);
   std::vector<double> unit(count * s), x(count * s), w_unit(count), w_box(count);
@@ -214,7 +214,7 @@ void expect_mapped_equals_generate_then_map(const R& rule, std::uint64_t n, std:
   for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(bits(w_box[i]), bits(w_unit[i]));
 }
 
-TEST(TensorGrid, MappedGeneratorEqualsGenerateThenMap) {
+TEST(TensorProductGrid, MappedGeneratorEqualsGenerateThenMap) {
   expect_mapped_equals_generate_then_map(simpson_rule{}, 10, 3, 100, 500);
   expect_mapped_equals_generate_then_map(gauss_legendre_rule(4), 3, 2, 5, 100);
   expect_mapped_equals_generate_then_map(trapezoid_rule{}, 4, 1, 0, 5);
@@ -223,14 +223,15 @@ TEST(TensorGrid, MappedGeneratorEqualsGenerateThenMap) {
   expect_mapped_equals_generate_then_map(midpoint_rule{}, 20000, 2, 19990, 300);   // carries
 }
 
-TEST(TensorGrid, RejectsBadInput) {
+TEST(TensorProductGrid, RejectsBadInput) {
   using quadmc::testing::throws_with;
-  const tensor_grid grid(simpson_rule{}.nodes(2), 2);  // 9 points
+  const tensor_product_grid grid(simpson_rule{}.nodes(2), 2);  // 9 points
   EXPECT_TRUE(throws_with<invalid_argument>(
-      [] { (void)tensor_grid(trapezoid_rule{}.nodes(65535), 4); },
+      [] { (void)tensor_product_grid(trapezoid_rule{}.nodes(65535), 4); },
       "invalid nodes per axis = 65536: expected nodes^s ≤ 2^64 − 1 for s = 4"));
-  EXPECT_TRUE(throws_with<invalid_argument>([] { (void)tensor_grid(midpoint_rule{}.nodes(3), 0); },
-                                            "invalid dimension s = 0: expected at least 1"));
+  EXPECT_TRUE(
+      throws_with<invalid_argument>([] { (void)tensor_product_grid(midpoint_rule{}.nodes(3), 0); },
+                                    "invalid dimension s = 0: expected at least 1"));
   std::vector<double> nodes(10);
   std::vector<double> weights(5);
   EXPECT_TRUE(throws_with<invalid_argument>(

@@ -63,10 +63,10 @@ inline std::uint64_t tensor_grid_size(std::uint64_t nodes_per_axis, std::size_t 
 }
 
 template <node_set N>
-class tensor_grid {
+class tensor_product_grid {
  public:
   // Throws invalid_argument if s = 0 or m^s does not fit in 64 bits (tensor_grid_size).
-  tensor_grid(N q, std::size_t s)
+  tensor_product_grid(N q, std::size_t s)
       : q_(std::move(q)), s_(s), m_(q_.size()), total_(tensor_grid_size(m_, s)) {
     const std::size_t table_size = m_ <= rule_chunk_points ? static_cast<std::size_t>(m_) : 0;
     node_table_.resize(table_size);
@@ -96,7 +96,7 @@ class tensor_grid {
   // map.apply() gives. Refers to this grid, which must outlive it.
   class on_box {
    public:
-    on_box(const tensor_grid& grid, const cube_to_box& map) : grid_(&grid), map_(map) {
+    on_box(const tensor_product_grid& grid, const cube_to_box& map) : grid_(&grid), map_(map) {
       require(map_.dimension() == grid.s_, "box dimension", map_.dimension(),
               fmt::format("the grid's dimension {}", grid.s_));
       const std::size_t last = grid.s_ - 1;
@@ -107,7 +107,7 @@ class tensor_grid {
     }
 
     void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {
-      const tensor_grid& g = *grid_;
+      const tensor_product_grid& g = *grid_;
       if (g.tabulated()) {
         const auto coordinate = [this, &g](std::size_t j, std::uint64_t k) {
           return map_(j, g.node_table_[k]);
@@ -126,7 +126,7 @@ class tensor_grid {
     }
 
    private:
-    const tensor_grid* grid_;
+    const tensor_product_grid* grid_;
     cube_to_box map_;
     std::vector<double> last_coordinate_;
   };
