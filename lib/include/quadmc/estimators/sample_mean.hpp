@@ -6,10 +6,12 @@
 // sampling, a radiance estimate for rendering). Not for deterministic rules (rules/).
 //
 // Why it looks like this (docs/design.md#hot-path-contract):
-//  - Chunks of chunk_points = 12288 points (48 batches of 256), boundaries a function of N and the
-//    point set only, folded in chunk order by quadmc::parallel_reduce: bitwise identical results
-//    for any thread count. 12288 is a multiple of 3 so the triples of stratum_differences never
-//    straddle a chunk; for m points per stratum a chunk is a whole number of strata.
+//  - Chunks of sample_chunk_points = 12288 points (48 batches of 256, core/batching.hpp),
+//    boundaries a function of N and the point set only, folded in chunk order by
+//    quadmc::parallel_reduce: bitwise identical results for any thread count. 12288 is a multiple
+//    of 3 so the triples of stratum_differences never straddle a chunk; for m points per stratum
+//    a chunk is a whole number of strata (m·⌊12288/m⌋ points). The chunk-and-batch loop is the
+//    one the rule kernel runs (for_each_batch); the statistics are this kernel's own.
 //  - Statistics per batch of 256 values, then merged: the batch sum and the batch's Σ(y − ȳ)² by
 //    two passes (each with four interleaved partial sums, a fixed order the compiler can keep in
 //    vector registers), merged into the chunk by the formula of [Chan, Golub & LeVeque]
@@ -21,6 +23,7 @@
 //  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
 #pragma once
 
+#include "quadmc/core/batching.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/core/welford.hpp"
@@ -36,9 +39,6 @@
 #include <vector>
 
 namespace quadmc {
-
-inline constexpr std::uint64_t chunk_points = 12288;
-inline constexpr std::size_t batch_points = 256;
 
 // Running statistics of the values Y of one chunk (or of several chunks merged in order).
 class sample_statistics {
@@ -183,25 +183,20 @@ estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_valu
   const std::size_t s = points.dimension();
   const variance_structure structure = points.variance();
   const std::uint64_t group = structure.points_per_group();
-  const std::uint64_t chunk = group * std::max<std::uint64_t>(1, chunk_points / group);
-  const std::uint64_t chunks = (n + chunk - 1) / chunk;
+  const chunking layout{n, group * std::max<std::uint64_t>(1, sample_chunk_points / group)};
   const sample_statistics total = parallel_reduce(
-      static_cast<std::size_t>(chunks), threads, sample_statistics(structure),
+      layout.chunks(), threads, sample_statistics(structure),
       [&](std::size_t c) {
         sample_statistics stats(structure);
         std::vector<double> u(batch_points * s);
         std::vector<double> y(batch_points);
-        const std::uint64_t begin = c * chunk;
-        const std::uint64_t end = std::min(n, begin + chunk);
-        for (std::uint64_t first = begin; first < end; first += batch_points) {
-          const auto count =
-              static_cast<std::size_t>(std::min<std::uint64_t>(batch_points, end - first));
+        for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
           const std::span<double> ub(u.data(), count * s);
           const std::span<double> yb(y.data(), count);
           points.generate(first, ub);
           batch_values(first, ub, yb);
           stats.add_batch(first, yb);
-        }
+        });
         return stats;
       },
       [](sample_statistics& acc, const sample_statistics& part) { acc.merge(part); });

@@ -17,6 +17,7 @@
 // Π_j (4^j + 1)/(4^j − 1) < 2, so below that floor the difference of two entries measures noise.
 #pragma once
 
+#include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/functions/integrand.hpp"
@@ -74,8 +75,8 @@ romberg_result romberg_table(Evaluate&& evaluate, double a, double b,
   const double width = b - a;
   constexpr double eps = std::numeric_limits<double>::epsilon();
 
-  std::vector<double> x(rule_batch_size);  // once per call, not per level or point
-  std::vector<double> y(rule_batch_size);
+  std::vector<double> x(batch_points);  // once per call, not per level or point
+  std::vector<double> y(batch_points);
   x[0] = a;
   x[1] = b;
   evaluate(std::span<const double>(x.data(), 2), std::span<double>(y.data(), 2));
@@ -99,7 +100,7 @@ romberg_result romberg_table(Evaluate&& evaluate, double a, double b,
     const double scale = std::ldexp(1.0, -static_cast<int>(k));
     for (std::uint64_t i = 0; i < fresh;) {
       const std::size_t count =
-          static_cast<std::size_t>(std::min<std::uint64_t>(rule_batch_size, fresh - i));
+          static_cast<std::size_t>(std::min<std::uint64_t>(batch_points, fresh - i));
       for (std::size_t t = 0; t < count; ++t) {
         x[t] = a + width * (static_cast<double>(2 * (i + t) + 1) * scale);
       }

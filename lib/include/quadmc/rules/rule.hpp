@@ -1,7 +1,9 @@
 // The `rule` concept: a composite 1D quadrature rule described by its nodes and weights.
 //
-// Use it to write one kernel for every rule: the tensor product (tensor_product.hpp) asks a rule
-// for the node set of n panels and never needs to know which rule it is. Not for adaptive rules
+// Use it to write one kernel for every rule: the tensor product (tensor_product_grid.hpp,
+// integrated by tensor_product.hpp) asks a rule for the node set of n panels and never needs to
+// know which rule it is. A rule that is not a product of 1D rules is a weighted point set instead
+// (weighted_point_set.hpp). Not for adaptive rules
 // whose nodes depend on f (Romberg stops when converged, so it has its own entry point in
 // romberg.hpp).
 //

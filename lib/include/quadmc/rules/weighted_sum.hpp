@@ -1,0 +1,221 @@
+// The one kernel of every deterministic rule of this layer: Q(f) = vol(box)·Σ_{i<N} w_i f(x_i)
+// over a weighted point set (weighted_point_set.hpp), x_i its unit-cube nodes mapped to the
+// integrand's box.
+//
+// Use it to integrate with any weighted point set — a tensor grid (integrate() in
+// tensor_product.hpp is weighted_sum over tensor_product_grid), a rule with weights of both signs,
+// a QMC rule with weights 1/N. Not for Monte Carlo estimators, which need an error estimate from
+// the points (estimators/sample_mean.hpp), and not for adaptive rules (romberg.hpp).
+//
+// How it runs (the same chunks and batches as before the kernel was shared, so the same bits):
+//  - points go to the integrand in batches of batch_points = 256 (row-major x[i*s + j]; one
+//    virtual call per batch through any_integrand); each batch's terms w_i·f_i are summed
+//    pairwise and batches are added with Neumaier's compensated sum, so the rounding error stays
+//    O(ε·Σ|w f|) for any N (core/summation.hpp);
+//  - chunks of rule_chunk_points = 2^14 points are the unit of parallel work; their boundaries
+//    depend only on N, and parallel_reduce folds them in chunk order, so any thread count gives
+//    the same bits (core/batching.hpp);
+//  - every batch is checked for NaN/±inf (check_finite_batch), the error naming the point in box
+//    coordinates;
+//  - the sum can instead be naive, all-Neumaier or long double (enum summation), so the stress
+//    scene can show what each accumulator's rounding floor is on the same terms;
+//  - no allocation or virtual call per point: buffers once per chunk, the set's generate() once
+//    per batch (a template call, inlined).
+#pragma once
+
+#include "quadmc/core/batching.hpp"
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/summation.hpp"
+#include "quadmc/functions/integrand.hpp"
+#include "quadmc/rules/rule_result.hpp"
+#include "quadmc/rules/weighted_point_set.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace quadmc {
+
+// Checks a box for a rule: finite bounds, lower ≤ upper (a reversed axis is rejected, not read
+// as a sign flip), finite widths.
+inline void require_integration_box(const box& domain) {
+  require(domain.upper.size() == domain.lower.size(), "domain.upper size", domain.upper.size(),
+          fmt::format("the size of domain.lower, {}", domain.lower.size()));
+  for (std::size_t j = 0; j < domain.lower.size(); ++j) {
+    const double a = domain.lower[j];
+    const double b = domain.upper[j];
+    require_finite(a, fmt::format("domain.lower[{}]", j));
+    require_finite(b, fmt::format("domain.upper[{}]", j));
+    require(a <= b, fmt::format("domain.upper[{}]", j), b,
+            fmt::format("≥ domain.lower[{}] = {} (a reversed interval is not integrated with a "
+                        "minus sign; swap the bounds)",
+                        j, quote(a)));
+    require(std::isfinite(b - a), fmt::format("domain width upper[{0}] − lower[{0}]", j), b - a,
+            "a finite number (the bounds are too far apart for double)");
+  }
+}
+
+namespace detail {
+
+// The accumulators of enum summation (core/summation.hpp), each a value type with the same three
+// operations, so the kernel below is one template and the default path compiles to the same code
+// as before the option existed.
+struct pairwise_accumulator {
+  neumaier_sum sum;
+  void add_batch(std::span<const double> terms) noexcept { sum.add(pairwise_sum(terms)); }
+  void merge(const pairwise_accumulator& other) noexcept { sum.merge(other.sum); }
+  double value() const noexcept { return sum.value(); }
+};
+
+struct neumaier_accumulator {
+  neumaier_sum sum;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum.add(t);
+  }
+  void merge(const neumaier_accumulator& other) noexcept { sum.merge(other.sum); }
+  double value() const noexcept { return sum.value(); }
+};
+
+struct long_double_accumulator {
+  long double sum = 0.0L;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum += static_cast<long double>(t);
+  }
+  void merge(const long_double_accumulator& other) noexcept { sum += other.sum; }
+  double value() const noexcept { return static_cast<double>(sum); }
+};
+
+// One double carried through every term in index order: the kernel runs its chunks serially and
+// hands each chunk the running sum, so this is exactly Σ left to right, never re-associated.
+struct naive_accumulator {
+  double sum = 0.0;
+  void add_batch(std::span<const double> terms) noexcept {
+    for (double t : terms) sum += t;
+  }
+  double value() const noexcept { return sum; }
+};
+
+// The integrand's info after the checks every rule needs: s ≥ 1, a domain of dimension s, a
+// finite box with lower ≤ upper.
+template <integrand F>
+integrand_info checked_integrand_info(const F& f) {
+  integrand_info info = f.info();
+  const std::size_t s = f.dimension();
+  require(s >= 1, "integrand dimension s", s, "at least 1");
+  require(info.domain.dimension() == s, "integrand domain dimension", info.domain.dimension(),
+          fmt::format("the integrand's dimension {}", s));
+  require_integration_box(info.domain);
+  return info;
+}
+
+// The kernel proper, on a checked integrand and a set of its dimension: generate(first, x, w)
+// writes a batch of box coordinates and weights.
+template <integrand F, class Generate>
+rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std::uint64_t total,
+                                    const Generate& generate, unsigned threads,
+                                    summation accumulate) {
+  const std::size_t s = info.dimension();
+  const chunking layout{total, rule_chunk_points};
+
+  // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
+  auto chunk_sum = [&](std::size_t c, auto sum) {
+    // Buffers once per chunk (2^14 points), never per point.
+    std::vector<double> x(batch_points * s);
+    std::vector<double> y(batch_points);
+    std::vector<double> terms(batch_points);  // the weights, then w·f in place
+    for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
+      const std::span<double> xs(x.data(), count * s);
+      const std::span<double> ys(y.data(), count);
+      generate(first, xs, std::span<double>(terms.data(), count));
+      f.evaluate(std::span<const double>(xs), ys);
+      check_finite_batch(info.name, xs, ys, s);
+      for (std::size_t i = 0; i < count; ++i) terms[i] *= y[i];
+      sum.add_batch(std::span<const double>(terms.data(), count));
+    });
+    return sum;
+  };
+
+  auto reduce = [&]<class Accumulator>(Accumulator init) {
+    return parallel_reduce(
+        layout.chunks(), threads, init, [&](std::size_t c) { return chunk_sum(c, Accumulator{}); },
+        [](Accumulator& acc, const Accumulator& part) { acc.merge(part); });
+  };
+
+  double sum = 0.0;
+  switch (accumulate) {
+    case summation::pairwise:
+      sum = reduce(pairwise_accumulator{}).value();
+      break;
+    case summation::neumaier:
+      sum = reduce(neumaier_accumulator{}).value();
+      break;
+    case summation::long_double:
+      sum = reduce(long_double_accumulator{}).value();
+      break;
+    case summation::naive: {
+      naive_accumulator running;
+      for (std::size_t c = 0; c < layout.chunks(); ++c) running = chunk_sum(c, running);
+      sum = running.value();
+      break;
+    }
+  }
+
+  rule_result result;
+  result.value = info.domain.volume() * sum;
+  result.evaluations = total;
+  return result;
+}
+
+// weighted_sum after the integrand's checks: checks the set against it and picks the set's own
+// map to the box where it has one (box_mapped_point_set), else maps each batch here.
+template <integrand F, weighted_point_set P>
+rule_result checked_weighted_sum(const F& f, const integrand_info& info, const P& points,
+                                 unsigned threads, summation accumulate) {
+  const std::size_t s = info.dimension();
+  require(points.dimension() == s, "weighted point set dimension", points.dimension(),
+          fmt::format("the integrand's dimension {}", s));
+  const std::uint64_t total = points.size();
+  require(total >= 1, "weighted point set size N", total, "at least 1 point");
+  const cube_to_box map(info.domain);
+  if constexpr (box_mapped_point_set<P>) {
+    const auto on_box = points.mapped(map);
+    return weighted_sum_of_batches(
+        f, info, total,
+        [&on_box](std::uint64_t first, std::span<double> x, std::span<double> w) {
+          on_box.generate(first, x, w);
+        },
+        threads, accumulate);
+  } else {
+    return weighted_sum_of_batches(
+        f, info, total,
+        [&points, &map](std::uint64_t first, std::span<double> x, std::span<double> w) {
+          points.generate(first, x, w);
+          map.apply(x);
+        },
+        threads, accumulate);
+  }
+}
+
+}  // namespace detail
+
+// ∫ f over f.info().domain by the rule `points`: vol(box)·Σ w_i f(x_i), x_i the set's nodes
+// mapped to the box. threads = 0 uses every core; the result is bitwise the same for every thread
+// count. `accumulate` chooses how the N terms w·f are summed (core/summation.hpp, enum
+// summation); the default is pairwise per batch, Neumaier across batches. summation::naive runs
+// on one thread whatever `threads` says (a left-to-right sum cannot be split).
+// Throws invalid_argument for a bad integrand dimension or domain, a set of another dimension or
+// with no points; non_finite_value if f returns NaN/±inf (the message names the point).
+// error_estimate is NaN: a fixed rule has no a-posteriori estimate.
+template <integrand F, weighted_point_set P>
+rule_result weighted_sum(const F& f, const P& points, unsigned threads = 1,
+                         summation accumulate = summation::pairwise) {
+  const integrand_info info = detail::checked_integrand_info(f);
+  return detail::checked_weighted_sum(f, info, points, threads, accumulate);
+}
+
+}  // namespace quadmc
