@@ -194,6 +194,10 @@ TEST(ConvergenceTable, RejectsBrokenSeriesNamingTheCell) {
   no_dimension.s = 0;
   EXPECT_THROW(analyse_convergence(no_dimension), invalid_argument);
 
+  convergence_series fewer = midpoint_series();
+  fewer.cells[0].repetitions[0].evaluations = 3;  // N = 2^28 spent 3: fewer than N = 2^27's
+  EXPECT_THROW(analyse_convergence(fewer), invalid_argument);
+
   convergence_series mixed = midpoint_series();
   mixed.cells[2].tolerance = 1e-6;  // one cell run to a tolerance among sized cells
   EXPECT_THROW(analyse_convergence(mixed), invalid_argument);

@@ -685,3 +685,51 @@ TEST(SceneLimits, PanelListsAndIntegrandListsAreBounded) {
 
 }  // namespace
 }  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// `control` and `tolerances` (methods/method.hpp): a method supports some controls; tolerances
+// come with control = "tolerance" only, positive and decreasing.
+constexpr std::string_view romberg_scene = R"(name = "t"
+[[integrand]]
+family = "exp"
+[[method]]
+name = "romberg"
+control = "tolerance"
+tolerances = [1e-3, 1e-6, 1e-9]
+[budget]
+N = [16, 64]
+)";
+
+TEST(ParseScene, ControlAndTolerances) {
+  const scene sc = parse(romberg_scene);
+  EXPECT_EQ(sc.methods[0].control, cell_control::tolerance);
+  EXPECT_EQ(sc.methods[0].tolerances, (std::vector<double>{1e-3, 1e-6, 1e-9}));
+  const scene budget =
+      parse(replace(replace(romberg_scene, "\"tolerance\"", "\"budget\""), "tolerances = [1e-3, 1e-6, 1e-9]\n", ""));
+  EXPECT_EQ(budget.methods[0].control, cell_control::budget);
+  EXPECT_TRUE(budget.methods[0].tolerances.empty());
+}
+
+TEST(SceneErrors, ControlsAMethodDoesNotSupportAndBadTolerances) {
+  std::string t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\ncontrol = \"budget\"");
+  std::string m = expect_error(t, line_of(t, "control"), "method[1].control");
+  EXPECT_NE(m.find("expected one of: fixed (simpson supports these), got \"budget\""),
+            std::string::npos)
+      << m;
+  t = replace(romberg_scene, "tolerances = [1e-3, 1e-6, 1e-9]", "tolerances = [1e-3, 1e-2]");
+  m = expect_error(t, line_of(t, "tolerances"), "method[1].tolerances[2]");
+  EXPECT_NE(m.find("tolerances must decrease, got 0.01 after 0.001"), std::string::npos) << m;
+  t = replace(romberg_scene, "tolerances = [1e-3, 1e-6, 1e-9]", "tolerances = [0.0]");
+  expect_error(t, line_of(t, "tolerances"), "method[1].tolerances[1]");
+  t = replace(romberg_scene, "tolerances = [1e-3, 1e-6, 1e-9]\n", "");
+  m = expect_error(t, line_of(t, "[[method]]"), "method[1].tolerances");
+  EXPECT_NE(m.find("missing required key for control = \"tolerance\""), std::string::npos) << m;
+  t = replace(romberg_scene, "control = \"tolerance\"\n", "");
+  m = expect_error(t, line_of(t, "tolerances"), "method[1].tolerances");
+  EXPECT_NE(m.find("only with control = \"tolerance\""), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace quadmc

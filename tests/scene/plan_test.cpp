@@ -598,3 +598,44 @@ N = [64]
 
 }  // namespace
 }  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// control = "tolerance": one cell per tolerance, spending at most the budget per repetition
+// (budget.max_evaluations, else plan_limits::default_tolerance_budget), each on its own stream.
+TEST(PlanTolerance, OneCellPerToleranceWithinTheBudget) {
+  const std::string text = R"(name = "t"
+[[integrand]]
+family = "exp"
+[[method]]
+name = "romberg"
+control = "tolerance"
+tolerances = [1e-3, 1e-6]
+[budget]
+N = [16, 64]
+max_evaluations = 1000
+)";
+  const plan p = make_plan(parse_scene(text, "scene.toml"));
+  ASSERT_EQ(p.cells.size(), 2u);
+  for (const plan_cell& c : p.cells) {
+    EXPECT_EQ(c.control, cell_control::tolerance);
+    EXPECT_EQ(c.nominal_N, 0u);
+    EXPECT_EQ(c.evaluations, 513u) << "the largest 2^k + 1 ≤ 1000";
+  }
+  EXPECT_EQ(p.cells[0].tolerance, 1e-3);
+  EXPECT_EQ(p.cells[1].tolerance, 1e-6);
+  EXPECT_NE(p.cells[0].stream_parts, p.cells[1].stream_parts);
+  const std::string listing = format_plan(p);
+  EXPECT_NE(listing.find("tol 1e-06"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("control = tolerance: one cell per tolerance"), std::string::npos)
+      << listing;
+  // Without max_evaluations the default budget applies: 2^29 + 1 ≤ 2^30.
+  const plan unbounded = make_plan(
+      parse_scene(std::string(text).replace(text.find("max_evaluations = 1000\n"), 23, ""),
+                  "scene.toml"));
+  EXPECT_EQ(unbounded.cells[0].evaluations, (std::uint64_t{1} << 29) + 1);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -341,3 +341,58 @@ N = [8]
 
 }  // namespace
 }  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// Cells run to a tolerance through the runner: each records the evaluations it spent and its own
+// error estimate, tighter tolerances spend more, and the series analyses against evaluations
+// spent (budget control likewise spends at most its N).
+TEST(RunPlan, ToleranceAndBudgetCellsRecordWhatTheySpent) {
+  constexpr std::string_view text = R"(name = "tol"
+threads = 1
+[[integrand]]
+family = "exp"
+[[method]]
+name = "romberg"
+control = "tolerance"
+tolerances = [1e-4, 1e-8, 1e-12]
+[[method]]
+name = "romberg"
+label = "romberg_budget"
+control = "budget"
+[budget]
+N = [33, 1025, 1048577]
+)";
+  const plan p = make_plan(parse_scene(text, "tol.toml"));
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 2u);
+  const convergence_series& tol = out.series[0];
+  ASSERT_EQ(tol.cells.size(), 3u);
+  std::uint64_t spent = 0;
+  for (const convergence_cell& cell : tol.cells) {
+    ASSERT_EQ(cell.repetitions.size(), 1u);
+    const repetition_result& r = cell.repetitions[0];
+    EXPECT_LE(r.error_estimate, cell.tolerance);
+    EXPECT_GE(r.evaluations, spent);
+    spent = r.evaluations;
+    EXPECT_TRUE(std::isnan(cell.error_envelope)) << "no a-priori envelope for a cell stopping early";
+  }
+  const convergence_table table = analyse_convergence(tol);
+  EXPECT_EQ(table.rows.size(), 3u);
+  EXPECT_EQ(table.rows.front().tolerance, 1e-4);
+  EXPECT_FALSE(std::isnan(table.rows.front().stats.error_estimate));
+  // The budget cells: never more than N, and the largest stops well short of 2^20 + 1.
+  const convergence_series& budget = out.series[1];
+  for (const convergence_cell& cell : budget.cells) {
+    EXPECT_LE(cell.repetitions[0].evaluations, cell.n);
+  }
+  EXPECT_LT(budget.cells.back().repetitions[0].evaluations, 1048577u);
+  // Two budgets that both converge early spend the same: one point of the fit, not two.
+  const convergence_table spent_budget = analyse_convergence(budget);
+  EXPECT_EQ(spent_budget.rows.size(), 3u);
+  EXPECT_EQ(spent_budget.rows[1].stats.evaluations, spent_budget.rows[2].stats.evaluations);
+}
+
+}  // namespace
+}  // namespace quadmc

@@ -68,21 +68,18 @@ convergence_table analyse_convergence(const convergence_series& series,
     } catch (const invalid_argument& e) {
       throw invalid_argument(fmt::format("{}: {}", where, e.what()));
     }
-    if (to_tolerance) {
-      require(table.rows.empty() || row.stats.evaluations >= table.rows.back().stats.evaluations,
-              "evaluations", row.stats.evaluations,
-              "at least the evaluations of the previous, looser tolerance (" + where + ")");
-    } else {
-      require(table.rows.empty() || row.stats.evaluations > table.rows.back().stats.evaluations,
-              "evaluations", row.stats.evaluations,
-              "more evaluations than the previous N of the ladder (" + where + ")");
-    }
+    // Equal counts are one computation reached twice (a tolerance met at the same level, a
+    // budget not spent); fewer is a ladder out of order.
+    require(table.rows.empty() || row.stats.evaluations >= table.rows.back().stats.evaluations,
+            "evaluations", row.stats.evaluations,
+            fmt::format("at least the evaluations of the previous {} ({})",
+                        to_tolerance ? "(looser) tolerance" : "N of the ladder", where));
     table.rows.push_back(row);
   }
 
   // The ladder the floor rule, the fit and the work-precision table see: one point per distinct
-  // evaluation count (for tolerance cells, the first row that spent it; sized cells are
-  // distinct already).
+  // evaluation count, the first row that spent it (fixed-size cells are distinct already: the
+  // plan skips a repeated grid; a budget or tolerance cell may stop where a smaller one did).
   std::vector<std::size_t> ladder;
   for (std::size_t k = 0; k < table.rows.size(); ++k) {
     if (ladder.empty() ||

@@ -95,10 +95,10 @@ struct convergence_table {
   std::size_t floor_points() const noexcept { return floor.count(); }
 };
 
-// Sorts the cells by N (tolerance cells by decreasing tolerance) and analyses them. Sized cells
-// must spend more evaluations as N grows. Tolerance cells may spend equal counts (a deterministic
-// method that reached two tolerances at one level made one computation): the floor and the fit
-// then use each count once, its first row. The verdict: with error envelopes, the envelope verdict
+// Sorts the cells by N (tolerance cells by decreasing tolerance) and analyses them. Cells must not
+// spend fewer evaluations as N grows (or the tolerance tightens); equal counts (a budget not
+// spent, two tolerances met at one level) are one computation, so the floor and the fit use each
+// count once, at its first row. The verdict: with error envelopes, the envelope verdict
 // (slope_verdict.hpp) over the non-floor rows, each judged as error ≤ envelope + ℓ(N), ℓ the
 // rounding level of rounding_floor.hpp at the same scale as the floor rule (the envelope is exact
 // arithmetic; ℓ covers the sums' rounding when the error attains the envelope); without, the

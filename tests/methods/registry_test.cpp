@@ -1,0 +1,125 @@
+// Tests of registry.hpp and option_map.hpp: the one table of methods, configured from C++.
+#include "quadmc/methods/registry.hpp"
+
+#include "quadmc/core/errors.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace quadmc {
+namespace {
+
+TEST(MethodRegistry, NamesEveryMethodOnceWithAKindAndAControl) {
+  // The methods scenes have always named (scene/parse.hpp's reference), in listing order.
+  const std::vector<std::string> expected{
+      "left_rectangle",  "right_rectangle", "midpoint",   "trapezoid",
+      "simpson",         "gauss_legendre",  "romberg",    "plain_mc",
+      "jittered",        "unjittered",      "padded_jittered", "latin_hypercube",
+      "importance",      "irradiance_hemisphere_uniform", "irradiance_hemisphere_cosine",
+      "irradiance_light_area"};
+  std::vector<std::string> names;
+  for (const method_descriptor* d : method_registry()) {
+    names.emplace_back(d->name);
+    EXPECT_EQ(find_method(d->name), d);
+    EXPECT_FALSE(d->description.empty()) << d->name;
+    ASSERT_FALSE(d->controls.empty()) << d->name;
+    EXPECT_TRUE(d->supports(d->controls.front())) << d->name;
+    std::set<std::string_view> keys;
+    for (const option_doc& o : d->options) {
+      EXPECT_TRUE(keys.insert(o.key).second) << d->name << " documents " << o.key << " twice";
+      EXPECT_FALSE(o.meaning.empty()) << d->name << "." << o.key;
+    }
+  }
+  EXPECT_EQ(names, expected);
+  EXPECT_EQ(find_method("simpsons"), nullptr);
+  EXPECT_NE(method_names().find("irradiance_light_area"), std::string::npos);
+}
+
+TEST(MethodRegistry, DeterministicMethodsAreTheRules) {
+  for (const method_descriptor* d : method_registry()) {
+    const bool rule = std::string_view(d->name).find("rectangle") != std::string_view::npos ||
+                      d->name == "midpoint" || d->name == "trapezoid" || d->name == "simpson" ||
+                      d->name == "gauss_legendre" || d->name == "romberg";
+    EXPECT_EQ(d->kind == method_kind::deterministic, rule) << d->name;
+  }
+}
+
+std::string error_of(std::string_view method, const option_table& options) {
+  try {
+    make_method(method, options);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MethodRegistry, MakeMethodChecksNameAndKeys) {
+  EXPECT_NE(error_of("simpsons", {}).find("invalid method = simpsons: expected one of: "),
+            std::string::npos);
+  EXPECT_NE(error_of("plain_mc", {{"panels", 3}}).find("unknown key in a 'plain_mc' method"),
+            std::string::npos);
+  EXPECT_NE(error_of("importance", {}).find("missing required key for importance"),
+            std::string::npos);
+  EXPECT_NE(error_of("importance", {{"warp", "gaussian"}}).find("one of: power, exponential"),
+            std::string::npos);
+  EXPECT_NE(error_of("importance", {{"warp", option_table{{"name", "power"}, {"rate", 2.0}}}})
+                .find("unknown key in warp 'power'; expected one of: name, exponent"),
+            std::string::npos);
+  EXPECT_NE(error_of("importance", {{"warp", option_table{{"name", "exponential"}, {"rate", 1e308}}}})
+                .find("expected a rate 0 < |l| <= 700"),
+            std::string::npos);
+  EXPECT_NE(error_of("jittered", {{"point_set", "sobol"}}).find("unknown key"), std::string::npos)
+      << "a method named after its point set takes no point_set";
+  EXPECT_NE(error_of("importance", {{"warp", "power"}, {"point_set", "sobol"}})
+                .find("one of: independent, jittered"),
+            std::string::npos);
+}
+
+TEST(MethodRegistry, LabelSuffixesSayWhatWasConfigured) {
+  EXPECT_EQ(make_method("simpson")->label_suffix(), "");
+  EXPECT_EQ(make_method("simpson", {{"accumulator", "naive"}})->label_suffix(), "_naive");
+  EXPECT_EQ(make_method("importance", {{"warp", "exponential"}})->label_suffix(), "_exponential");
+  EXPECT_EQ(make_method("importance", {{"warp", "power"}, {"point_set", "jittered"}})
+                ->label_suffix(),
+            "_power_jittered");
+  EXPECT_EQ(make_method("irradiance_light_area", {{"point_set", "latin_hypercube"}})
+                ->label_suffix(),
+            "_latin_hypercube");
+}
+
+TEST(MethodRegistry, PairingsAreTheMethodsOwn) {
+  const integrand_traits disk{"disk_indicator", 2, false};
+  const integrand_traits light{"irradiance_area", 2, true};
+  EXPECT_FALSE(make_method("plain_mc")->incompatibility(disk));
+  EXPECT_TRUE(make_method("irradiance_light_area")->incompatibility(disk));
+  EXPECT_FALSE(make_method("irradiance_light_area")->incompatibility(light));
+  const auto why = make_method("importance", {{"warp", "power"}})->incompatibility(disk);
+  ASSERT_TRUE(why);
+  EXPECT_EQ(*why, "the 'power' warp is a 1D density; the integrand has s = 2");
+}
+
+TEST(OptionMap, TypesAndRangesAreCheckedAtTheirKey) {
+  option_map options({{"n", 2.5}, {"s", "text"}, {"b", true}, {"list", std::vector<double>{1, -2}}},
+                     "test");
+  EXPECT_THROW(options.count("n", 1, 10, "a count"), invalid_argument);
+  EXPECT_EQ(options.number("n", "a number"), 2.5);
+  EXPECT_THROW(options.number("s", "a number"), invalid_argument);
+  EXPECT_EQ(options.string("s", "a string"), "text");
+  EXPECT_EQ(options.boolean("b"), true);
+  EXPECT_EQ(options.count("absent", 1, 10, "a count"), std::nullopt);
+  try {
+    options.counts("list", 0, 10, 8, "a count");
+    FAIL() << "−2 is not a count";
+  } catch (const invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "test.list[2]: expected a count, got -2");
+    EXPECT_EQ(e.parameter(), "test.list[2]");
+  }
+  option_map unread({{"typo", 1}}, "t");
+  const std::array<std::string_view, 1> accepted{"m"};
+  EXPECT_THROW(unread.reject_unread("a 'x' method", accepted), invalid_argument);
+}
+
+}  // namespace
+}  // namespace quadmc
