@@ -5,9 +5,11 @@
 #include "quadmc/methods/registry.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <iterator>
+#include <vector>
 
 namespace quadmc_cli {
 
@@ -24,15 +26,14 @@ std::string catalogue_listing() {
                  "\nmethods ([[method]] name = …; every method also takes label, integrands, "
                  "repetitions, control, tolerances):\n");
   for (const quadmc::method_descriptor* m : quadmc::method_registry()) {
-    std::string controls;
-    for (const quadmc::cell_control c : m->controls) {
-      controls += (controls.empty() ? "" : "|") + std::string(quadmc::to_string(c));
-    }
-    fmt::format_to(line, "  {:<30} {:<13} {:<24} {}\n", m->name,
+    std::vector<std::string_view> controls;
+    for (const quadmc::cell_control c : m->controls) controls.push_back(quadmc::to_string(c));
+    fmt::format_to(line, "  {:<30} {:<13} {}\n", m->name,
                    m->kind == quadmc::method_kind::deterministic ? "deterministic" : "randomized",
-                   "control " + controls, m->description);
+                   m->description);
+    fmt::format_to(line, "      control = {}\n", fmt::join(controls, " | "));
     for (const quadmc::option_doc& o : m->options) {
-      fmt::format_to(line, "  {:<30} {:<13} {:<24} {} = {}\n", "", "", "", o.key, o.meaning);
+      fmt::format_to(line, "      {} = {}\n", o.key, o.meaning);
     }
   }
   fmt::format_to(line, "\npoint sets ([[method]] point_set = …, for importance/irradiance):\n");

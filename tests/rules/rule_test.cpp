@@ -75,8 +75,10 @@ TEST(Rule, OrdersAndNames) {
   EXPECT_EQ(quadmc::trapezoid_rule{}.order(), 2);
   EXPECT_EQ(quadmc::simpson_rule{}.order(), 4);
   EXPECT_EQ(quadmc::gauss_legendre_rule(5).order(), 10);
-  EXPECT_EQ(std::string(quadmc::gauss_legendre_rule(5).name()), "gauss_legendre_5");
-  EXPECT_EQ(std::string(quadmc::left_rectangle_rule{}.name()), "left_rectangle");
+  // Display names for messages (the scene names of the methods are the registry's).
+  EXPECT_EQ(std::string(quadmc::gauss_legendre_rule(5).name()), "composite Gauss–Legendre m = 5");
+  EXPECT_EQ(std::string(quadmc::left_rectangle_rule{}.name()), "composite left rectangle");
+  EXPECT_EQ(std::string(quadmc::simpson_rule{}.name()), "composite Simpson");
 }
 
 }  // namespace

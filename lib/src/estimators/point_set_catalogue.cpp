@@ -15,10 +15,14 @@
 #include "quadmc/sampling/stratum_grid.hpp"
 #include "quadmc/sampling/unjittered_points.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <array>
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace quadmc {
 
@@ -140,9 +144,9 @@ const point_set_entry* find_point_set(std::string_view name) noexcept {
 }
 
 std::string point_set_names() {
-  std::string out;
-  for (const point_set_entry& e : entries) out += (out.empty() ? "" : ", ") + std::string(e.name);
-  return out;
+  std::vector<std::string_view> names;
+  for (const point_set_entry& e : entries) names.push_back(e.name);
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n) {

@@ -91,10 +91,14 @@ drawn_parameters draw_genz(std::size_t s, std::uint64_t seed) {
   return {{"a", std::move(drawn.a)}, {"u", std::move(drawn.u)}};
 }
 
-// 1D families on an interval [lower, upper] with a default.
-template <class Family, double Lower, double Upper>
+// 1D families on an interval [lower, upper], by default [0, 1] ([0, π] for sin).
+template <class Family>
 any_integrand make_interval(const integrand_params& p) {
-  return any_integrand(Family(scalar_or(p, "lower", Lower), scalar_or(p, "upper", Upper)));
+  return any_integrand(Family(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", 1.0)));
+}
+
+any_integrand make_sin(const integrand_params& p) {
+  return any_integrand(sin_1d(scalar_or(p, "lower", 0.0), scalar_or(p, "upper", std::numbers::pi)));
 }
 
 // 1D families without parameters.
@@ -168,13 +172,13 @@ const std::array<catalogue_entry, 26> entries = {{
      draw_genz<genz_family::discontinuous>, false, false, 0},
     {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
      "lower, upper: the interval (default 0, 1), |lower|, |upper| ≤ 1e51; dimension 1",
-     make_interval<poly_1d, 0.0, 1.0>, nullptr, false, false, 1},
+     make_interval<poly_1d>, nullptr, false, false, 1},
     {"exp", "eˣ on [lower, upper]", "analytic", no_keys, interval_keys,
      "lower, upper: the interval (default 0, 1), upper ≤ 709.78; dimension 1",
-     make_interval<exp_1d, 0.0, 1.0>, nullptr, false, false, 1},
+     make_interval<exp_1d>, nullptr, false, false, 1},
     {"sin", "sin x on [lower, upper]", "analytic", no_keys, interval_keys,
-     "lower, upper: the interval (default 0, π), of finite width; dimension 1",
-     make_interval<sin_1d, 0.0, std::numbers::pi>, nullptr, false, false, 1},
+     "lower, upper: the interval (default 0, π), of finite width; dimension 1", make_sin, nullptr,
+     false, false, 1},
     {"inverse_quadratic", "1/(1 + x²) on [0, 1]", "analytic", no_keys, no_keys,
      "no parameters; dimension 1", make_fixed<inverse_quadratic_1d>, nullptr, false, false, 1},
     {"sqrt", "√x on [0, 1]", "singular", no_keys, no_keys, "no parameters; dimension 1",
@@ -212,7 +216,7 @@ const std::array<catalogue_entry, 26> entries = {{
      "analytic", no_keys, interval_keys,
      "lower, upper: the interval (default 0, 1), any finite box with a finite width ≥ 2.2e-308; "
      "dimension 1",
-     make_interval<shifted_exp_1d, 0.0, 1.0>, nullptr, false, false, 1},
+     make_interval<shifted_exp_1d>, nullptr, false, false, 1},
     {"cosc_naive", "(1 − cos x)/x² on [0, 1], computed as written (cancellation near 0)",
      "analytic", no_keys, no_keys, "no parameters; dimension 1", make_fixed<cosc_naive_1d>, nullptr,
      false, false, 1},
@@ -225,7 +229,7 @@ const std::array<catalogue_entry, 26> entries = {{
      "no parameters; dimension 1", make_fixed<log_1d>, nullptr, false, false, 1},
     {"exp_float", "eˣ on [lower, upper] evaluated in float", "analytic", no_keys, interval_keys,
      "lower, upper: the interval (default 0, 1), upper ≤ 88.72; dimension 1",
-     make_interval<exp_float_1d, 0.0, 1.0>, nullptr, false, false, 1},
+     make_interval<exp_float_1d>, nullptr, false, false, 1},
     {"inverse_quadratic_float", "1/(1 + x²) on [0, 1] evaluated in float", "analytic", no_keys,
      no_keys, "no parameters; dimension 1", make_fixed<inverse_quadratic_float_1d>, nullptr, false,
      false, 1},

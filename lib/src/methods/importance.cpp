@@ -6,6 +6,7 @@
 #include "quadmc/sampling/inversion_warps.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <array>
 #include <cmath>
@@ -29,9 +30,9 @@ constexpr std::array<warp_choice, 2> warps{{
 }};
 
 std::string warp_names() {
-  std::string out;
-  for (const warp_choice& w : warps) out += (out.empty() ? "" : ", ") + std::string(w.name);
-  return out;
+  std::vector<std::string_view> names;
+  for (const warp_choice& w : warps) names.push_back(w.name);
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 const warp_choice* find_warp(std::string_view name) {
@@ -94,9 +95,8 @@ class importance_method final : public method {
       : method(d), warp_(&warp), parameter_(parameter), points_(points) {}
 
   std::string label_suffix() const override {
-    std::string suffix = "_" + std::string(warp_->name);
-    if (points_.given) suffix += "_" + std::string(points_.set->name);
-    return suffix;
+    return points_.given ? fmt::format("_{}_{}", warp_->name, points_.set->name)
+                         : fmt::format("_{}", warp_->name);
   }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {

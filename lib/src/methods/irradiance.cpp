@@ -18,7 +18,7 @@ class irradiance_method final : public method {
       : method(d), technique_(technique), points_(points) {}
 
   std::string label_suffix() const override {
-    return points_.given ? "_" + std::string(points_.set->name) : std::string();
+    return points_.given ? fmt::format("_{}", points_.set->name) : std::string();
   }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {

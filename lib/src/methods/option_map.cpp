@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -146,17 +147,17 @@ std::exception_ptr option_map::error(where at, std::string_view key, std::size_t
   const std::string path = at == where::element && array
                                ? fmt::format("{}.{}[{}]", path_, key, index + 1)
                                : fmt::format("{}.{}", path_, key);
-  return std::make_exception_ptr(invalid_argument::about(path, path + ": " + std::string(message)));
+  return std::make_exception_ptr(
+      invalid_argument::about(path, fmt::format("{}: {}", path, message)));
 }
 
 void option_map::reject_unread(std::string_view what, std::span<const std::string_view> accepted) {
   for (const auto& [key, value] : table_) {
     if (read_.contains(key)) continue;
     if (std::find(accepted.begin(), accepted.end(), key) != accepted.end()) continue;
-    std::string list;
-    for (std::string_view a : accepted) list += (list.empty() ? "" : ", ") + std::string(a);
     fail(key, fmt::format("unknown key in {}; expected one of: {}", what,
-                          list.empty() ? std::string("none") : list));
+                          accepted.empty() ? std::string("none")
+                                           : fmt::format("{}", fmt::join(accepted, ", "))));
   }
 }
 

@@ -6,6 +6,7 @@
 #include "quadmc/core/errors.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <vector>
 
@@ -43,9 +44,9 @@ const method_descriptor* find_method(std::string_view name) noexcept {
 }
 
 std::string method_names() {
-  std::string out;
-  for (const method_descriptor* d : all()) out += (out.empty() ? "" : ", ") + std::string(d->name);
-  return out;
+  std::vector<std::string_view> names;
+  for (const method_descriptor* d : all()) names.push_back(d->name);
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 std::unique_ptr<const method> make_method(std::string_view name, const option_table& options) {

@@ -101,7 +101,7 @@ class tensor_rule_method final : public method {
 
   std::string label_suffix() const override {
     // One series per accumulator: midpoint_naive beside midpoint_neumaier.
-    return options_.accumulator_given ? "_" + std::string(to_string(options_.accumulator))
+    return options_.accumulator_given ? fmt::format("_{}", to_string(options_.accumulator))
                                       : std::string();
   }
 

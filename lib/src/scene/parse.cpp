@@ -9,6 +9,7 @@
 #include "quadmc/scene/toml_text.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -371,10 +372,9 @@ class toml_option_reader final : public option_reader {
     for (auto&& [key, value] : *t_) {
       if (read_.contains(key.str())) continue;
       if (std::find(accepted.begin(), accepted.end(), key.str()) != accepted.end()) continue;
-      std::string list;
-      for (std::string_view a : accepted) list += (list.empty() ? "" : ", ") + std::string(a);
-      r_->fail(r_->at(key.source()), scene_reader::path(prefix_, key.str()),
-               fmt::format("unknown key in {}; expected one of: {}", what, list));
+      r_->fail(
+          r_->at(key.source()), scene_reader::path(prefix_, key.str()),
+          fmt::format("unknown key in {}; expected one of: {}", what, fmt::join(accepted, ", ")));
     }
   }
 
@@ -412,10 +412,9 @@ class toml_option_reader final : public option_reader {
 void parse_control(const scene_reader& r, const toml::table& t, const std::string& prefix,
                    const method_descriptor& descriptor, method_spec& m) {
   m.control = descriptor.controls.front();
-  std::string supported;
-  for (const cell_control c : descriptor.controls) {
-    supported += (supported.empty() ? "" : ", ") + std::string(to_string(c));
-  }
+  std::vector<std::string_view> names;
+  for (const cell_control c : descriptor.controls) names.push_back(to_string(c));
+  const std::string supported = fmt::format("{}", fmt::join(names, ", "));
   if (const auto e = r.find(t, "control", prefix)) {
     const std::string what = fmt::format("one of: {} ({} supports these)", supported, m.name);
     const std::string given = r.string(*e, what);

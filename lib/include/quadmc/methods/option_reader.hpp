@@ -76,14 +76,22 @@ class option_reader {
   std::optional<std::string> choice(std::string_view key,
                                     std::span<const std::string_view> choices) {
     std::string list;
-    for (std::string_view c : choices) list += (list.empty() ? "" : ", ") + std::string(c);
+    for (std::string_view c : choices) {
+      if (!list.empty()) list += ", ";
+      list += c;
+    }
     const std::string what = "one of: " + list;
     std::optional<std::string> value = string(key, what);
     if (!value) return value;
     for (std::string_view c : choices) {
       if (*value == c) return value;
     }
-    fail(key, "expected " + what + ", got \"" + *value + "\"");
+    std::string message = "expected ";
+    message += what;
+    message += ", got \"";
+    message += *value;
+    message += '"';
+    fail(key, message);
   }
 };
 

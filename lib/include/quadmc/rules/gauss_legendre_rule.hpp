@@ -96,7 +96,7 @@ class gauss_legendre_rule {
       default:
         break;  // unreachable: rejected above
     }
-    name_ = "gauss_legendre_" + std::to_string(m);
+    name_ = fmt::format("composite Gauss–Legendre m = {}", m);
   }
 
   unsigned points() const noexcept { return m_; }

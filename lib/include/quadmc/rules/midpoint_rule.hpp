@@ -32,7 +32,7 @@ class midpoint_rule {
     double weight_;
   };
 
-  std::string_view name() const noexcept { return "midpoint"; }
+  std::string_view name() const noexcept { return "composite midpoint"; }
   int order() const noexcept { return 2; }
   node_set nodes(std::uint64_t n) const {
     require(n >= 1, "n", n, "at least 1 panel");

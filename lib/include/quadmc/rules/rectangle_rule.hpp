@@ -36,7 +36,7 @@ class rectangle_rule {
   };
 
   std::string_view name() const noexcept {
-    return Side == rectangle_side::left ? "left_rectangle" : "right_rectangle";
+    return Side == rectangle_side::left ? "composite left rectangle" : "composite right rectangle";
   }
   int order() const noexcept { return 1; }
   node_set nodes(std::uint64_t n) const {

@@ -40,7 +40,8 @@ class simpson_rule {
     double end_weight_, odd_weight_, even_weight_;
   };
 
-  std::string_view name() const noexcept { return "simpson"; }
+  // A display name for messages; scenes name the method in methods/tensor_rules.cpp.
+  std::string_view name() const noexcept { return "composite Simpson"; }
   int order() const noexcept { return 4; }
   node_set nodes(std::uint64_t n) const {
     require(n >= 2 && n % 2 == 0, "n", n, "an even number of panels ≥ 2 (Simpson pairs panels)");

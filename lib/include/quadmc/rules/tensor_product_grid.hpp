@@ -27,6 +27,7 @@
 
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/integer_powers.hpp"
 #include "quadmc/rules/rule.hpp"
 #include "quadmc/rules/weighted_point_set.hpp"
 
@@ -49,19 +50,15 @@ namespace quadmc {
 inline std::uint64_t tensor_grid_size(std::uint64_t nodes_per_axis, std::size_t s) {
   require(s >= 1, "dimension s", s, "at least 1");
   require(nodes_per_axis >= 1, "nodes per axis", nodes_per_axis, "at least 1");
-  constexpr std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
-  std::uint64_t points = 1;
-  for (std::size_t j = 0; j < s; ++j) {
-    if (points > limit / nodes_per_axis) {
-      throw invalid_argument(
-          "nodes per axis", quote(nodes_per_axis),
-          fmt::format("nodes^s ≤ 2^64 − 1 for s = {}: the grid has too many points to count in "
-                      "64 bits (use fewer panels or a Monte Carlo method)",
-                      s));
-    }
-    points *= nodes_per_axis;
+  const std::optional<std::uint64_t> points = checked_power(nodes_per_axis, s);
+  if (!points) {
+    throw invalid_argument(
+        "nodes per axis", quote(nodes_per_axis),
+        fmt::format("nodes^s ≤ 2^64 − 1 for s = {}: the grid has too many points to count in "
+                    "64 bits (use fewer panels or a Monte Carlo method)",
+                    s));
   }
-  return points;
+  return *points;
 }
 
 template <node_set N>

@@ -39,7 +39,7 @@ class trapezoid_rule {
     double end_weight_, inner_weight_;
   };
 
-  std::string_view name() const noexcept { return "trapezoid"; }
+  std::string_view name() const noexcept { return "composite trapezoid"; }
   int order() const noexcept { return 2; }
   node_set nodes(std::uint64_t n) const {
     require(n >= 1, "n", n, "at least 1 panel");

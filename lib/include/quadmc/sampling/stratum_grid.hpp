@@ -11,8 +11,8 @@
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/integer_powers.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -26,23 +26,15 @@ class stratum_grid {
   // and cell coordinate is exact in double precision, and N·s stays inside a random stream.
   static constexpr std::uint64_t max_strata = std::uint64_t{1} << 53;
 
-  // k^s, or nothing when it exceeds `limit`.
+  // k^s, or nothing when it exceeds `limit` (core/integer_powers.hpp: exact, never rounded).
   static constexpr std::optional<std::uint64_t> checked_power(std::uint64_t k, std::size_t s,
                                                               std::uint64_t limit = max_strata) {
-    std::uint64_t p = 1;
-    for (std::size_t j = 0; j < s; ++j) {
-      if (k != 0 && p > limit / k) return std::nullopt;
-      p *= k;
-    }
-    return p <= limit ? std::optional<std::uint64_t>(p) : std::nullopt;
+    return quadmc::checked_power(k, s, limit);
   }
 
-  // Largest k with k^s ≤ n (n ≥ 1, s ≥ 1).
+  // Largest k ≥ 1 with k^s ≤ n (n ≥ 1, s ≥ 1).
   static std::uint64_t root_floor(std::uint64_t n, std::size_t s) {
-    auto k = static_cast<std::uint64_t>(std::pow(static_cast<double>(n), 1.0 / double(s)));
-    // pow is not exact: fix the guess by integer powers in both directions.
-    while (k > 1 && !checked_power(k, s, n)) --k;
-    while (checked_power(k + 1, s, n)) ++k;
+    const std::uint64_t k = integer_root(n, s);
     return k < 1 ? 1 : k;
   }
 

@@ -36,30 +36,34 @@
 //   cut = [1, 2]              the family says so). Omitted ones are drawn from the seed and the
 //                             plan prints the values drawn. The catalogue rejects unknown ones.
 //
-// [[method]]              one table per method (at least one)
-//   name = "simpson"      required; one of the names in methods.hpp (`quadmc list`):
-//                         left_rectangle, right_rectangle, midpoint, trapezoid, simpson,
-//                         gauss_legendre, romberg, plain_mc, jittered, unjittered,
-//                         padded_jittered, latin_hypercube, importance,
-//                         irradiance_hemisphere_uniform, irradiance_hemisphere_cosine,
-//                         irradiance_light_area.
-//   label = "simpson_a"   display name (unique, ≤ 128 characters); needed when one method
-//                         appears twice.
-//                         Default: the name, plus "_<warp>" / "_<point_set>" when set.
+// [[method]]              one table per method (at least one). The keys every method has:
+//   name = "midpoint"     required; a method of methods/registry.hpp (`quadmc list` prints them
+//                         with their own keys, which their descriptors read and check).
+//   label = "midpoint_a"  display name (unique, ≤ 128 characters); needed when one method
+//                         appears twice. Default: the name plus what the options add, e.g.
+//                         "_<accumulator>", "_<warp>", "_<point_set>" (method::label_suffix).
 //   integrands = ["g"]    restrict the method to these integrands (display names, or the
 //                         `name` of a `dimensions` table for all its expansions). Default: all.
-//   repetitions = 64      random methods: independent runs per N, 1…10^9 (default 32), at
-//                         most 2^25 over all cells (the runner keeps each result). A
-//                         deterministic rule runs once per N; the plan notes the key is ignored.
-//   panels = [2, 4, 8]    tensor rules except romberg: explicit n per axis (an integer or an
-//                         increasing list of ≤ 256), replacing budget.N for this method.
-//                         Simpson: even.
-//   m = 3                 gauss_legendre: nodes per panel, one of 2 3 4 5 7 10 15 20 25 30
-//                         (default 3).
-//   point_set = "jittered"  importance and irradiance_*: the pattern of the uniform points fed
-//                         to the warp (independent [default], jittered, unjittered,
-//                         padded_jittered, latin_hypercube). Counts are mapped as for the
-//                         method of the same name (jittered: N → k^s).
+//   repetitions = 64      randomized methods: independent runs per cell, 1…10^9 (default 32),
+//                         at most 2^25 over all cells (the runner keeps each result). A
+//                         deterministic method runs once per cell; the plan notes the key is
+//                         ignored.
+//   control = "fixed"     how its cells run, one the method supports (`quadmc list`): "fixed"
+//                         (N mapped to a size used exactly; the default of every method so
+//                         far), "budget" (N is the most it may spend), "tolerance" (until its own
+//                         error estimate is at most each of `tolerances`).
+//   tolerances = [1e-3, 1e-6]   control = "tolerance" only, required there: absolute errors,
+//                         positive and decreasing, ≤ 256. Each is a cell that may spend
+//                         budget.max_evaluations (shared by the repetitions), else 2^30
+//                         evaluations per repetition.
+// The methods' own keys, e.g. `panels` and `accumulator` of the tensor rules, `m` of
+// gauss_legendre, `warp` and `point_set` of importance, `point_set` of the irradiance estimators:
+//   panels = [2, 4, 8]    explicit n per axis (an integer or an increasing list of ≤ 256),
+//                         replacing budget.N for this method; even for Simpson.
+//   m = 3                 Gauss–Legendre nodes per panel, one of 2 3 4 5 7 10 15 20 25 30.
+//   point_set = "jittered"  the pattern of the uniform points fed to the warp (independent
+//                         [default], jittered, unjittered, padded_jittered, latin_hypercube);
+//                         counts are mapped as for the method of the same name (N → k^s).
 //   warp = "power"        importance (required): a 1D density on [0,1], so s = 1 only;
 //   warp = { name = "power", exponent = 2.0 }      p(x) = (k+1) x^k, −1 < k ≤ 1e5 (default 1)
 //   warp = { name = "exponential", rate = 1.0 }    p(x) = λ e^{λx}/(e^λ − 1), 0 < |λ| ≤ 700
