@@ -1,5 +1,6 @@
-// The method families of lib/src/methods/, one file each, and the pieces they share. Private to
-// the methods layer: the rest of the library reaches methods through registry.hpp only.
+// The pieces the method families of lib/src/methods/ share (one family per file; registry.cpp
+// declares and lists them). Private to the methods layer: the rest of the library reaches
+// methods through registry.hpp only.
 #pragma once
 
 #include "quadmc/estimators/point_set_catalogue.hpp"
@@ -8,13 +9,6 @@
 #include <span>
 
 namespace quadmc::methods {
-
-// Each family's descriptors, in listing order (registry.cpp lists the families).
-std::span<const method_descriptor> tensor_rule_methods() noexcept;
-std::span<const method_descriptor> romberg_methods() noexcept;
-std::span<const method_descriptor> point_set_methods() noexcept;
-std::span<const method_descriptor> importance_methods() noexcept;
-std::span<const method_descriptor> irradiance_methods() noexcept;
 
 // The `point_set` option of the methods that draw their u from a chosen pattern; `independent`
 // when absent. `given` says whether the table set it (it then joins the default label).

@@ -10,10 +10,19 @@
 
 #include <vector>
 
+// Each family's descriptors, in listing order, defined in its own file of lib/src/methods/.
+namespace quadmc::methods {
+std::span<const method_descriptor> tensor_rule_methods() noexcept;
+std::span<const method_descriptor> romberg_methods() noexcept;
+std::span<const method_descriptor> point_set_methods() noexcept;
+std::span<const method_descriptor> importance_methods() noexcept;
+std::span<const method_descriptor> irradiance_methods() noexcept;
+}  // namespace quadmc::methods
+
 namespace quadmc {
 namespace {
 
-// One line per family; a family lists its own methods in its file.
+// One entry per family; a family lists its own methods in its file.
 constexpr std::span<const method_descriptor> (*families[])() noexcept = {
     methods::tensor_rule_methods, methods::romberg_methods,    methods::point_set_methods,
     methods::importance_methods,  methods::irradiance_methods,
