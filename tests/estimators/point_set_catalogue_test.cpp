@@ -113,9 +113,9 @@ TEST(PointSetCatalogue, ImportanceMapsTheWarpToTheInterval) {
   const any_integrand f(
       test_support::make_integrand("e^x on [1,2]", box{{1.0}, {2.0}}, std::exp(2.0) - std::exp(1.0),
                                    [](std::span<const double> x) { return std::exp(x[0]); }));
-  const estimate e = find_point_set("latin_hypercube")
-                         ->importance(f, {unit_warp_kind::truncated_exponential, 1.0}, {3, 4},
-                                      1000, 2);
+  const estimate e =
+      find_point_set("latin_hypercube")
+          ->importance(f, {unit_warp_kind::truncated_exponential, 1.0}, {3, 4}, 1000, 2);
   EXPECT_NEAR(e.value, f.info().exact, 16 * std::numeric_limits<double>::epsilon() * e.value);
   // Within 5 standard errors: a false alarm of 6e-7 under the CLT.
   const estimate p =

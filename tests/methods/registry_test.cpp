@@ -13,12 +13,22 @@ namespace {
 
 TEST(MethodRegistry, NamesEveryMethodOnceWithAKindAndAControl) {
   // The methods scenes have always named (scene/parse.hpp's reference), in listing order.
-  const std::vector<std::string> expected{
-      "left_rectangle",  "right_rectangle", "midpoint",   "trapezoid",
-      "simpson",         "gauss_legendre",  "romberg",    "plain_mc",
-      "jittered",        "unjittered",      "padded_jittered", "latin_hypercube",
-      "importance",      "irradiance_hemisphere_uniform", "irradiance_hemisphere_cosine",
-      "irradiance_light_area"};
+  const std::vector<std::string> expected{"left_rectangle",
+                                          "right_rectangle",
+                                          "midpoint",
+                                          "trapezoid",
+                                          "simpson",
+                                          "gauss_legendre",
+                                          "romberg",
+                                          "plain_mc",
+                                          "jittered",
+                                          "unjittered",
+                                          "padded_jittered",
+                                          "latin_hypercube",
+                                          "importance",
+                                          "irradiance_hemisphere_uniform",
+                                          "irradiance_hemisphere_cosine",
+                                          "irradiance_light_area"};
   std::vector<std::string> names;
   for (const method_descriptor* d : method_registry()) {
     names.emplace_back(d->name);
@@ -67,9 +77,10 @@ TEST(MethodRegistry, MakeMethodChecksNameAndKeys) {
   EXPECT_NE(error_of("importance", {{"warp", option_table{{"name", "power"}, {"rate", 2.0}}}})
                 .find("unknown key in warp 'power'; expected one of: name, exponent"),
             std::string::npos);
-  EXPECT_NE(error_of("importance", {{"warp", option_table{{"name", "exponential"}, {"rate", 1e308}}}})
-                .find("expected a rate 0 < |l| <= 700"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("importance", {{"warp", option_table{{"name", "exponential"}, {"rate", 1e308}}}})
+          .find("expected a rate 0 < |l| <= 700"),
+      std::string::npos);
   EXPECT_NE(error_of("jittered", {{"point_set", "sobol"}}).find("unknown key"), std::string::npos)
       << "a method named after its point set takes no point_set";
   EXPECT_NE(error_of("importance", {{"warp", "power"}, {"point_set", "sobol"}})
@@ -81,12 +92,12 @@ TEST(MethodRegistry, LabelSuffixesSayWhatWasConfigured) {
   EXPECT_EQ(make_method("simpson")->label_suffix(), "");
   EXPECT_EQ(make_method("simpson", {{"accumulator", "naive"}})->label_suffix(), "_naive");
   EXPECT_EQ(make_method("importance", {{"warp", "exponential"}})->label_suffix(), "_exponential");
-  EXPECT_EQ(make_method("importance", {{"warp", "power"}, {"point_set", "jittered"}})
-                ->label_suffix(),
-            "_power_jittered");
-  EXPECT_EQ(make_method("irradiance_light_area", {{"point_set", "latin_hypercube"}})
-                ->label_suffix(),
-            "_latin_hypercube");
+  EXPECT_EQ(
+      make_method("importance", {{"warp", "power"}, {"point_set", "jittered"}})->label_suffix(),
+      "_power_jittered");
+  EXPECT_EQ(
+      make_method("irradiance_light_area", {{"point_set", "latin_hypercube"}})->label_suffix(),
+      "_latin_hypercube");
 }
 
 TEST(MethodRegistry, PairingsAreTheMethodsOwn) {

@@ -706,8 +706,8 @@ TEST(ParseScene, ControlAndTolerances) {
   const scene sc = parse(romberg_scene);
   EXPECT_EQ(sc.methods[0].control, cell_control::tolerance);
   EXPECT_EQ(sc.methods[0].tolerances, (std::vector<double>{1e-3, 1e-6, 1e-9}));
-  const scene budget =
-      parse(replace(replace(romberg_scene, "\"tolerance\"", "\"budget\""), "tolerances = [1e-3, 1e-6, 1e-9]\n", ""));
+  const scene budget = parse(replace(replace(romberg_scene, "\"tolerance\"", "\"budget\""),
+                                     "tolerances = [1e-3, 1e-6, 1e-9]\n", ""));
   EXPECT_EQ(budget.methods[0].control, cell_control::budget);
   EXPECT_TRUE(budget.methods[0].tolerances.empty());
 }

@@ -631,9 +631,8 @@ max_evaluations = 1000
   EXPECT_NE(listing.find("control = tolerance: one cell per tolerance"), std::string::npos)
       << listing;
   // Without max_evaluations the default budget applies: 2^29 + 1 ≤ 2^30.
-  const plan unbounded = make_plan(
-      parse_scene(std::string(text).replace(text.find("max_evaluations = 1000\n"), 23, ""),
-                  "scene.toml"));
+  const plan unbounded = make_plan(parse_scene(
+      std::string(text).replace(text.find("max_evaluations = 1000\n"), 23, ""), "scene.toml"));
   EXPECT_EQ(unbounded.cells[0].evaluations, (std::uint64_t{1} << 29) + 1);
 }
 

@@ -376,7 +376,8 @@ N = [33, 1025, 1048577]
     EXPECT_LE(r.error_estimate, cell.tolerance);
     EXPECT_GE(r.evaluations, spent);
     spent = r.evaluations;
-    EXPECT_TRUE(std::isnan(cell.error_envelope)) << "no a-priori envelope for a cell stopping early";
+    EXPECT_TRUE(std::isnan(cell.error_envelope))
+        << "no a-priori envelope for a cell stopping early";
   }
   const convergence_table table = analyse_convergence(tol);
   EXPECT_EQ(table.rows.size(), 3u);

@@ -50,11 +50,10 @@ TEST(TomlText, NestingIsBoundedBeforeTomlxxRecurses) {
     EXPECT_NE(std::string(e.what()).find("nesting deeper than"), std::string::npos) << e.what();
   }
   // Dots, brackets and braces inside strings and comments are not levels.
-  const std::string quoted = "a = \"" + std::string(1000, '[') + "\"  # " +
-                             std::string(1000, '{') + "\n";
+  const std::string quoted =
+      "a = \"" + std::string(1000, '[') + "\"  # " + std::string(1000, '{') + "\n";
   EXPECT_NO_THROW(toml_safe_text(quoted, "f.toml"));
-  EXPECT_THROW(toml_safe_text("a = " + std::string(limit + 1, '[') + "\n", "f.toml"),
-               scene_error);
+  EXPECT_THROW(toml_safe_text("a = " + std::string(limit + 1, '[') + "\n", "f.toml"), scene_error);
 }
 
 }  // namespace
