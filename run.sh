@@ -26,7 +26,8 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libfmt-dev                      # fmt
               libcli11-dev                    # CLI11 (command-line flags)
               libtomlplusplus-dev             # toml++ (scene files)
-              librandom123-dev)               # Random123 (Philox counter-based RNG)
+              librandom123-dev                # Random123 (Philox counter-based RNG)
+              libquadrule-dev)                # quadrule (Gauss–Patterson tables of the sparse grids)
 # Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
 # end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
 PLOT_PACKAGES=(python3 python3-matplotlib)
