@@ -40,6 +40,10 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
     require(std::isnan(rep.error_estimate) ||
                 (std::isfinite(rep.error_estimate) && rep.error_estimate >= 0.0),
             where + ".error_estimate", rep.error_estimate, "NaN (none) or a finite value >= 0");
+    require(std::isnan(rep.absolute_weight_sum) ||
+                (std::isfinite(rep.absolute_weight_sum) && rep.absolute_weight_sum >= 0.0),
+            where + ".absolute_weight_sum", rep.absolute_weight_sum,
+            "NaN (none) or a finite value >= 0");
   }
 
   // Large errors are divided by a power of two c before they are squared: e² overflows above
@@ -118,6 +122,14 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   }
   if (every_rep_has_estimate) {
     out.error_estimate = std::sqrt(estimate_square_sum.value() / count) * estimate_scale;
+  }
+  for (const repetition_result& rep : repetitions) {
+    // std::max keeps its first argument when the second is NaN: start from NaN, take any value.
+    if (!std::isnan(rep.absolute_weight_sum)) {
+      out.absolute_weight_sum = std::isnan(out.absolute_weight_sum)
+                                    ? rep.absolute_weight_sum
+                                    : std::max(out.absolute_weight_sum, rep.absolute_weight_sum);
+    }
   }
   out.seconds = seconds_sum.value();
   if (out.seconds > 0.0) out.evals_per_second = static_cast<double>(evaluations) / out.seconds;

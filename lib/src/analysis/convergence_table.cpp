@@ -87,7 +87,7 @@ convergence_table analyse_convergence(const convergence_series& series,
       ladder.push_back(k);
     }
   }
-  std::vector<double> evaluations, errors, seconds;
+  std::vector<double> evaluations, errors, seconds, amplification;
   double largest_error = 0.0;
   for (const std::size_t k : ladder) {
     const convergence_row& row = table.rows[k];
@@ -95,8 +95,13 @@ convergence_table analyse_convergence(const convergence_series& series,
     errors.push_back(row.stats.rmse);
     seconds.push_back(row.stats.seconds_per_repetition());
     largest_error = std::max(largest_error, row.stats.rmse);
+    // A rule with weights of both signs amplifies rounding by Σ|w| (cell_statistics.hpp).
+    const double w = row.stats.absolute_weight_sum;
+    amplification.push_back(std::isnan(w) ? 1.0 : std::max(1.0, w));
   }
   const double scale = series.reference != 0.0 ? std::abs(series.reference) : largest_error;
+  std::vector<double> scales;
+  for (const double a : amplification) scales.push_back(scale * a);
   // The floor, fit and work-precision steps name their inputs by position ("error[0]"); the
   // series they came from goes in front, so a failure says which integrand and method.
   const auto in_series = [&](auto&& step) {
@@ -108,7 +113,7 @@ convergence_table analyse_convergence(const convergence_series& series,
     }
   };
   table.floor =
-      in_series([&] { return detect_rounding_floor(evaluations, errors, scale, options.floor); });
+      in_series([&] { return detect_rounding_floor(evaluations, errors, scales, options.floor); });
 
   // A row shares the floor flag of the ladder point that spent its evaluations; the table's
   // floor is then stated per row, like everything else in it.
@@ -135,7 +140,10 @@ convergence_table analyse_convergence(const convergence_series& series,
       const double error = row.stats.rmse;
       const auto n = static_cast<double>(row.stats.evaluations);
       judged_error.push_back(error);
-      allowed.push_back(row.envelope + rounding_level(n, scale, options.floor));
+      const double w = row.stats.absolute_weight_sum;
+      allowed.push_back(
+          row.envelope +
+          rounding_level(n, scale * (std::isnan(w) ? 1.0 : std::max(1.0, w)), options.floor));
       const double ratio =
           row.envelope > 0.0 ? error / row.envelope : std::numeric_limits<double>::infinity();
       table.envelope_ratio =

@@ -15,9 +15,22 @@ double rounding_level(double n, double scale, const rounding_floor_options& opti
 
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      double scale, const rounding_floor_options& options) {
+  require(std::isfinite(scale) && scale >= 0.0, "scale", scale, "finite and >= 0");
+  const std::vector<double> scales(n.size(), scale);
+  return detect_rounding_floor(n, error, scales, options);
+}
+
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     std::span<const double> scales,
+                                     const rounding_floor_options& options) {
   require(n.size() == error.size(), "error.size()", error.size(),
           fmt::format("the size of n ({})", n.size()));
-  require(std::isfinite(scale) && scale >= 0.0, "scale", scale, "finite and >= 0");
+  require(scales.size() == n.size(), "scales.size()", scales.size(),
+          fmt::format("the size of n ({})", n.size()));
+  for (std::size_t k = 0; k < scales.size(); ++k) {
+    require(std::isfinite(scales[k]) && scales[k] >= 0.0, fmt::format("scales[{}]", k), scales[k],
+            "finite and >= 0");
+  }
   require(std::isfinite(options.kappa) && options.kappa > 0.0, "kappa", options.kappa,
           "finite and > 0");
   require(std::isfinite(options.band) && options.band >= 1.0, "band", options.band,
@@ -37,7 +50,7 @@ rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const 
   const std::size_t count = n.size();
   out.flags.assign(count, false);
   for (std::size_t k = 0; k < count && !out.first; ++k) {
-    const double level = rounding_level(n[k], scale, options);
+    const double level = rounding_level(n[k], scales[k], options);
     const bool at_floor = error[k] <= level;
     const std::size_t window_end = std::min(count, k + 1 + options.stall_window);
     const double next_best =

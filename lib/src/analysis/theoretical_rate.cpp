@@ -91,6 +91,36 @@ theoretical_rate root_n_rate(const integrand_class& f, std::string note, std::st
   return {-0.5, std::move(note), std::move(source)};
 }
 
+theoretical_rate sparse_grid_rate(const integrand_class& f) {
+  (void)dimension_of(f);
+  constexpr const char* source = "docs/theory.md#sparse-grid-rates; [Novak & Ritter 1996]";
+  switch (f.regularity) {
+    case smoothness::analytic:
+      return {std::nullopt,
+              "analytic f: faster than any power of N (no finite slope); compared at equal N",
+              source};
+    case smoothness::smooth:
+      return {std::nullopt,
+              "O(N^-r (log N)^((s-1)(r+1))) for mixed smoothness r, unknown from the class",
+              source};
+    case smoothness::c0:
+      // Bounded mixed first derivatives (the catalogue's kinks lie along coordinate planes):
+      // r = 1. A kink costs Clenshaw–Curtis O(n^-2) in 1D, so a steeper measured slope is no
+      // contradiction; the (log N)^(2(s-1)) factor flattens it in high s.
+      return {-1.0,
+              "bounded mixed first derivatives (kinks along coordinate planes): "
+              "O(N^-1 (log N)^(2(s-1))), a bound",
+              source};
+    case smoothness::discontinuous:
+      return {std::nullopt, "a jump has no mixed smoothness: no proven rate",
+              "docs/theory.md#sparse-grid-rates"};
+    case smoothness::singular:
+      break;
+  }
+  return {std::nullopt, "a singular f has no mixed smoothness: no proven rate",
+          "docs/theory.md#sparse-grid-rates"};
+}
+
 theoretical_rate one_point_per_stratum_rate(const integrand_class& f) {
   const double s = dimension_of(f);
   if (auto none = infinite_variance_rate(f)) return *none;

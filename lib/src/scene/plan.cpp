@@ -294,6 +294,7 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
 }
 
 std::string describe_grid(const plan_cell& c) {
+  if (c.level >= 0) return fmt::format("level {}, {} evaluations", c.level, c.evaluations);
   if (c.points_per_axis != 0) {
     return fmt::format("n = {} per axis, {} evaluations", c.per_axis, c.evaluations);
   }
@@ -351,7 +352,7 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
   std::vector<std::pair<std::uint64_t, plan_cell>> kept;  // (nominal N, cell) for duplicates
   auto consider = [&](std::uint64_t N, plan_cell c) {
     for (const auto& [earlier, k] : kept) {
-      if (k.evaluations == c.evaluations && k.per_axis == c.per_axis) {
+      if (k.evaluations == c.evaluations && k.per_axis == c.per_axis && k.level == c.level) {
         skips.push_back({what(N), fmt::format("same {} as N = {} ({})", rule ? "grid" : "strata",
                                               earlier, describe_grid(c))});
         return;
@@ -384,6 +385,7 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
     c.points_per_axis = size.points_per_axis;
     c.evaluations = size.evaluations;
     c.order = size.order;
+    c.level = size.level;
     return c;
   };
 
@@ -619,7 +621,10 @@ std::string format_plan(const plan& p) {
                                                   : fmt::format("tol {:g}", c.tolerance);
     line(fmt::format("  {:<{}} {:>4} {:<{}} {:>16} {:>8} {:>16} {:>6} {:>5}", name, name_width,
                      c.dimension, sc.methods[c.method].label, label_width, N,
-                     c.per_axis == 0 ? std::string("-") : fmt::format("{}", c.per_axis),
+                     // A sparse grid has no n per axis; its level stands there instead.
+                     c.level >= 0      ? fmt::format("L={}", c.level)
+                     : c.per_axis == 0 ? std::string("-")
+                                       : fmt::format("{}", c.per_axis),
                      c.evaluations, c.repetitions,
                      c.order == 0 ? std::string("-") : fmt::format("{}", c.order)));
   }

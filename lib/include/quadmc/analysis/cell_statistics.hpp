@@ -46,6 +46,11 @@ struct repetition_result {
   // The method's own estimate of |value − I| (Monte Carlo: its std_error; Romberg: the last
   // extrapolants' difference; an adaptive method: what it stopped on); NaN when it has none.
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
+  // Σ|w_i| of the rule that ran (unit-cube weights, Σw = 1), where it has weights of both signs
+  // (a sparse grid); NaN otherwise (positive weights, or a Monte Carlo estimate: Σ|w| = 1). It
+  // scales the rounding floor (rounding_floor.hpp): an error δ in every f moves the sum by up to
+  // Σ|w|·δ (rules/weighted_point_set.hpp).
+  double absolute_weight_sum = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct cell_statistics {
@@ -62,6 +67,8 @@ struct cell_statistics {
   double seconds = 0.0;
   double evals_per_second = std::numeric_limits<double>::quiet_NaN();
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
+  // The largest Σ|w| of the repetitions (NaN when none reports one).
+  double absolute_weight_sum = std::numeric_limits<double>::quiet_NaN();
 
   // Wall time of one estimate (seconds / repetitions): what a user waits for one answer.
   double seconds_per_repetition() const noexcept {

@@ -10,7 +10,9 @@
 // evaluations per repetition (docs/theory.md#conventions: N = evaluations). Floor points, flagged
 // by rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
 // fitted error is > 0). The floor scale is |reference|; when the reference is 0 it falls back to
-// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table).
+// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table). A cell
+// whose rule reports Σ|w| > 1 (weights of both signs: a sparse grid) has its floor scale
+// multiplied by Σ|w|, the factor by which its sum amplifies rounding (rounding_floor.hpp).
 #pragma once
 
 #include "quadmc/analysis/cell_statistics.hpp"

@@ -65,4 +65,12 @@ double rounding_level(double n, double scale, const rounding_floor_options& opti
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      double scale, const rounding_floor_options& options = {});
 
+// The same with a scale per point, S_k: for a ladder whose rules amplify rounding differently at
+// each N (a sparse grid's weights of both signs: S_k = |I|·Σ|w| at point k, since its sum errs by
+// ≈ 2ε·Σ|w_i f_i| and an error δ in f by Σ|w|·δ; rules/weighted_point_set.hpp). Throws as above,
+// and for scales of another size than n or not finite and ≥ 0.
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     std::span<const double> scales,
+                                     const rounding_floor_options& options = {});
+
 }  // namespace quadmc

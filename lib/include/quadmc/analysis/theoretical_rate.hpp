@@ -58,6 +58,14 @@ std::optional<theoretical_rate> infinite_variance_rate(const integrand_class& f)
 // (infinite variance first gives no slope).
 theoretical_rate root_n_rate(const integrand_class& f, std::string note, std::string source);
 
+// A Smolyak sparse grid on nested rules (docs/theory.md#sparse-grid-rates): for bounded mixed
+// derivatives of order r the error is O(N^−r·(log N)^((s−1)(r+1))) [Novak & Ritter 1996], so the
+// slope is −r up to the logarithm: −1 on a C0 f with bounded mixed first derivatives (the kinks
+// of the catalogue lie along coordinate planes); no finite slope on analytic f (faster than any
+// power: compared at equal N instead) or smooth f (r unknown from the class); none on a jump or a
+// singularity (no mixed smoothness: the jump of Genz's discontinuous family and the disk's).
+theoretical_rate sparse_grid_rate(const integrand_class& f);
+
 // One point in each of N = k^s equal strata (jittered sampling and what reduces to it):
 // −1/2 − 1/s for Lipschitz f, −1/2 − 1/(2s) for the indicator of a region with a smooth
 // boundary, no tabulated slope for a singular f.

@@ -52,6 +52,7 @@ struct cell_size {
   std::uint64_t per_axis = 0;         // rules: panels n; stratified points: strata k; else 0
   std::uint64_t points_per_axis = 0;  // rules: nodes per axis p(n); else 0
   int order = 0;                      // rules: r of this grid, |error| = O(n^−r); else 0
+  int level = -1;                     // sparse grids: the Smolyak level L; −1 otherwise
 };
 
 // A size for a nominal N, or why none fits (a plan skip, e.g. "N is below the smallest grid").

@@ -86,12 +86,13 @@ struct plan_cell {
                                       // tolerance cell may spend
   std::uint64_t repetitions = 1;      // 1 for deterministic rules
   int order = 0;                      // rules: r, |error| = O(n^-r); 0 for random methods
+  int level = -1;                     // sparse grids: the Smolyak level L; −1 otherwise
   // Names the cell's random streams: the runner appends (repetition, chunk) and calls
   // quadmc::stream_id with the scene seed as the Philox key.
   // {integrand, instance, method, nominal_N}; a tolerance cell has the tolerance's bits for N.
   std::array<std::uint64_t, 4> stream_parts{};
 
-  cell_size size() const noexcept { return {evaluations, per_axis, points_per_axis, order}; }
+  cell_size size() const noexcept { return {evaluations, per_axis, points_per_axis, order, level}; }
 };
 
 struct plan_skip {
