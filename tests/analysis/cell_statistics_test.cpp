@@ -39,6 +39,20 @@ TEST(CellStatistics, HandComputedFourRepetitions) {
   EXPECT_NEAR(c.seconds_per_repetition(), 0.5, 4 * eps);
 }
 
+TEST(CellStatistics, AbsoluteWeightSumIsTheLargestReported) {
+  std::vector<repetition_result> reps(3);
+  for (auto& r : reps) {
+    r.value = 1.0;
+    r.evaluations = 10;
+  }
+  EXPECT_TRUE(std::isnan(compute_cell_statistics(reps, 1.0).absolute_weight_sum));
+  reps[1].absolute_weight_sum = 3.5;
+  reps[2].absolute_weight_sum = 2.0;
+  EXPECT_EQ(compute_cell_statistics(reps, 1.0).absolute_weight_sum, 3.5);
+  reps[0].absolute_weight_sum = -1.0;
+  EXPECT_THROW(compute_cell_statistics(reps, 1.0), invalid_argument);
+}
+
 TEST(CellStatistics, DeterministicRuleHasNoSpreadAndNoCoverage) {
   const std::vector<repetition_result> reps = {{0.75, nan, 17, 0.0}};
   const cell_statistics c = compute_cell_statistics(reps, 1.0);

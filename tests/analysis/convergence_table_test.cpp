@@ -74,6 +74,32 @@ TEST(ConvergenceTable, DeterministicSeriesWithFloor) {
   EXPECT_NEAR(*table.work_precision[0].seconds, 1e-9 * std::sqrt(10.0), 1e-20);
 }
 
+// A sparse-grid-like ladder: errors fall as N^-3 to 2e-12 (relative to I = 1) and stay there,
+// the level a rule with Σ|w| = 2000 reaches by rounding (2ε·2000·log₂N ≈ 1.8e-11 at N = 2^20).
+// Without Σ|w| the floor rule sees errors far above 2ε·log₂N and no stall within 10⁴ of it …
+// with it, the flat points are at the floor and are kept out of the fit.
+TEST(ConvergenceTable, FloorScalesWithTheAbsoluteWeightSumARuleReports) {
+  auto ladder = [](double weight_sum) {
+    convergence_series series = series_of("g", 8, "smolyak", smoothness::analytic, 1.0,
+                                          sparse_grid_rate({smoothness::analytic, 8}));
+    for (int k = 10; k <= 20; k += 2) {
+      const auto n = std::uint64_t{1} << k;
+      const double error = std::max(std::pow(static_cast<double>(n), -3.0) * 1e6, 2e-12);
+      repetition_result r = repetition(1.0 + error, nan, n, 1e-6);
+      r.absolute_weight_sum = weight_sum;
+      series.cells.push_back(cell_at(n, {r}));
+    }
+    return analyse_convergence(series);
+  };
+  const convergence_table unscaled = ladder(nan);
+  const convergence_table scaled = ladder(2000.0);
+  EXPECT_FALSE(unscaled.floor.reached());
+  ASSERT_TRUE(scaled.floor.reached());
+  EXPECT_TRUE(scaled.rows.back().floor);
+  EXPECT_FALSE(scaled.rows.front().floor);
+  EXPECT_EQ(scaled.rows.back().stats.absolute_weight_sum, 2000.0);
+}
+
 TEST(ConvergenceTable, MonteCarloSeriesUsesRmseAndCoverage) {
   // Four repetitions per N with errors ±c/√N (two each sign) and std_error c/√N: RMSE = c/√N
   // exactly, coverage 1 (|e| = se ≤ 1.96·se), slope −1/2 exactly.

@@ -178,6 +178,30 @@ TEST(RoundingFloor, RoundingLevelFollowsTheFormula) {
   EXPECT_DOUBLE_EQ(rounding_level(1.0, 1.0), 2.0 * eps) << "log₂ clamps at 1";
 }
 
+TEST(RoundingFloor, APerPointScaleRaisesTheLevelWhereARuleAmplifiesRounding) {
+  // A ladder that flattens at 1e-13 (S = 1). With S = 1 everywhere the flat points are 17× above
+  // ℓ(N) and only the stall rule (within 10⁴·ℓ, no later improvement by 2×) flags them; with the
+  // scales of a rule whose Σ|w| is 1000 there, ℓ = 2ε·1000·log₂N is above them: at the floor.
+  const std::vector<double> n = {1e2, 1e3, 1e4, 1e5, 1e6};
+  const std::vector<double> error = {1e-4, 1e-6, 1e-13, 1.1e-13, 0.9e-13};
+  const rounding_floor plain = detect_rounding_floor(n, error, 1.0);
+  const std::vector<double> scales = {1.0, 1.0, 1000.0, 1000.0, 1000.0};
+  const rounding_floor scaled = detect_rounding_floor(n, error, scales);
+  ASSERT_TRUE(scaled.reached());
+  EXPECT_EQ(*scaled.first, 2u);
+  // Every point above is at the floor with the scales: e_k ≤ ℓ(N_k).
+  for (std::size_t k = 2; k < n.size(); ++k) {
+    EXPECT_LE(error[k], rounding_level(n[k], scales[k])) << k;
+    EXPECT_GT(error[k], rounding_level(n[k], 1.0)) << k;
+  }
+  // One scale for all gives the same as the scalar form, bit for bit.
+  const rounding_floor same = detect_rounding_floor(n, error, std::vector<double>(5, 1.0));
+  EXPECT_EQ(same.flags, plain.flags);
+  EXPECT_THROW(detect_rounding_floor(n, error, std::vector<double>{1.0, 1.0}), invalid_argument);
+  EXPECT_THROW(detect_rounding_floor(n, error, std::vector<double>{1, 1, -1, 1, 1}),
+               invalid_argument);
+}
+
 TEST(RoundingFloor, RejectsBadLadders) {
   const std::vector<double> e = {1e-2, 1e-3, 1e-4};
   EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 4.0, 2.0}, e, 1.0), invalid_argument);

@@ -42,6 +42,24 @@ TEST(ExtrapolatedTrapezoidRate, NoSlopeOnSmoothFTrapezoidRateOtherwise) {
   EXPECT_EQ(*extrapolated_trapezoid_rate(of(smoothness::discontinuous, 1)).slope, -1.0);
 }
 
+TEST(SparseGridRate, MixedSmoothnessBoundOnC0AndNoSlopeElsewhere) {
+  // docs/theory.md#sparse-grid-rates: −1 for bounded mixed first derivatives whatever s;
+  // analytic, smooth, jumps and singularities have none.
+  for (const std::size_t s : {1u, 4u, 16u}) {
+    const theoretical_rate c0 = sparse_grid_rate({smoothness::c0, s});
+    ASSERT_TRUE(c0.slope.has_value());
+    EXPECT_EQ(*c0.slope, -1.0);
+    for (const smoothness other : {smoothness::analytic, smoothness::smooth,
+                                   smoothness::discontinuous, smoothness::singular}) {
+      const theoretical_rate r = sparse_grid_rate({other, s});
+      EXPECT_FALSE(r.slope.has_value()) << to_string(other);
+      EXPECT_NE(r.source.find("docs/theory.md#sparse-grid-rates"), std::string::npos);
+    }
+  }
+  EXPECT_NE(sparse_grid_rate({smoothness::analytic, 8}).note.find("equal N"), std::string::npos);
+  EXPECT_THROW(sparse_grid_rate({smoothness::c0, 0}), invalid_argument);
+}
+
 TEST(MonteCarloRates, RootNUnlessTheVarianceIsInfinite) {
   // ∫x^(2α) diverges for α ≤ −1/2 (docs/theory.md#infinite-variance): exactly at the boundary.
   EXPECT_FALSE(infinite_variance_rate(of(smoothness::singular, 1, -0.4)));

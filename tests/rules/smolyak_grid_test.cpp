@@ -43,8 +43,8 @@ grid_points all_points(const smolyak_grid& g) {
 }
 
 // The combination technique, independently of the grid's surplus form: A(L, s) =
-// Σ_{L−s+1 ≤ |l| ≤ L} (−1)^(L−|l|)·C(s − 1, L − |l|)·U^(l_1) ⊗ … ⊗ U^(l_s) [Wasilkowski &
-// Woźniakowski's form, as in Gerstner & Griebel 1998, eq. 3.5], weights merged per node.
+// Σ_{L−s+1 ≤ |l| ≤ L} (−1)^(L−|l|)·C(s − 1, L − |l|)·U^(l_1) ⊗ … ⊗ U^(l_s) (the combination
+// form of the Smolyak rule, docs/theory.md#smolyak-construction), weights merged per node.
 std::map<std::vector<std::size_t>, double> combination_technique(const nested_rule& rule,
                                                                  std::size_t s, unsigned L) {
   std::map<std::vector<std::size_t>, double> weight;
@@ -84,7 +84,8 @@ std::map<std::vector<std::size_t>, double> combination_technique(const nested_ru
 }
 
 TEST(SmolyakGrid, ClenshawCurtisCountsInTwoDimensionsAreThePublishedOnes) {
-  // [Gerstner & Griebel 1998, Table 1] and [Novak & Ritter 1996]: 1, 5, 13, 29, 65, 145.
+  // The Clenshaw–Curtis counts of [Gerstner & Griebel 1998] and [Novak & Ritter 1996]: 1, 5,
+  // 13, 29, 65, 145.
   const std::uint64_t published[] = {1, 5, 13, 29, 65, 145, 321, 705, 1537};
   for (unsigned L = 0; L < std::size(published); ++L) {
     EXPECT_EQ(smolyak_point_count(cc(), 2, L), published[L]) << "L = " << L;

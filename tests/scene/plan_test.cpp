@@ -174,6 +174,31 @@ TEST(MakePlan, DuplicateGridsAreSkippedWithTheReason) {
   ASSERT_NE(find_skip(p, "midpoint × genz_gaussian_s8, N = 65535"), nullptr);
 }
 
+TEST(MakePlan, SparseGridCellsCarryTheirLevelAndRepeatedLevelsAreSkipped) {
+  // Clenshaw–Curtis Smolyak in s = 2 has 1, 5, 13, 29 nodes at L = 0 … 3: N = 13 and 20 give L = 2,
+  // N = 29 gives L = 3; the listing shows the level where a rule shows its n per axis.
+  const plan p = plan_of(R"(
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "smolyak"
+[budget]
+N = [13, 20, 29]
+)");
+  ASSERT_EQ(p.cells.size(), 2u);
+  EXPECT_EQ(p.cells[0].level, 2);
+  EXPECT_EQ(p.cells[0].evaluations, 13u);
+  EXPECT_EQ(p.cells[1].level, 3);
+  EXPECT_EQ(p.cells[1].size().level, 3);
+  const plan_skip* s = find_skip(p, "smolyak × genz_gaussian_s2, N = 20");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason, "same grid as N = 13 (level 2, 13 evaluations)");
+  const std::string listing = format_plan(p);
+  EXPECT_NE(listing.find("L=2"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("L=3"), std::string::npos) << listing;
+}
+
 TEST(MakePlan, CellsOverTheBudgetAreSkippedWithTheReason) {
   // plain_mc: N × 100 repetitions; 6561·100 = 656100 ≤ 1e6 < 65535·100.
   const plan p = plan_of(base);
