@@ -100,6 +100,50 @@ TEST(MarkdownReport, EnvelopeSeriesShowsItsVerdictRatioAndEnvelopeColumn) {
   expect_rectangular_tables(page);
 }
 
+// Two methods on one family in s = 2 and 4 (a `dimensions` list: names end in _s<s>): the table
+// names at each N the method of smaller error, with that error; an N only one method ran is "—",
+// and a family with one method has no table.
+TEST(MarkdownReport, WhoLeadsAtEqualNPerFamilyAndDimension) {
+  std::vector<convergence_table> tables;
+  for (const std::size_t s : {2u, 4u}) {
+    const std::string name = s == 2 ? "fam_s2" : "fam_s4";
+    convergence_series a = series_of(name, s, "rule_a", smoothness::analytic, 1.0,
+                                     rule_theory(2, smoothness::analytic, s));
+    convergence_series b = series_of(name, s, "rule_b", smoothness::analytic, 1.0,
+                                     rule_theory(4, smoothness::analytic, s));
+    for (const std::uint64_t n : {16u, 64u, 256u}) {
+      const double x = static_cast<double>(n);
+      // rule_a leads at N = 16 in s = 2 (1/N vs 2/N), rule_b everywhere else.
+      const double ea = s == 2 && n == 16 ? 1.0 / x : 4.0 / x;
+      a.cells.push_back(cell_at(n, {repetition(1.0 + ea, nan, n, 1e-6)}));
+      if (n != 256 || s == 4)
+        b.cells.push_back(cell_at(n, {repetition(1.0 + 2.0 / x, nan, n, 1e-6)}));
+    }
+    tables.push_back(analyse_convergence(a));
+    tables.push_back(analyse_convergence(b));
+  }
+  convergence_series alone = series_of("solo", 1, "rule_a", smoothness::analytic, 1.0,
+                                       rule_theory(2, smoothness::analytic));
+  for (const std::uint64_t n : {16u, 64u, 256u}) {
+    alone.cells.push_back(
+        cell_at(n, {repetition(1.0 + 1.0 / static_cast<double>(n), nan, n, 1e-6)}));
+  }
+  tables.push_back(analyse_convergence(alone));
+  const std::string page = render_results_markdown(run_info{}, tables);
+  const auto at = page.find("## Who leads at equal N");
+  ASSERT_NE(at, std::string::npos) << page;
+  const std::string section = page.substr(at, page.find("\n## ", at + 1) - at);
+  EXPECT_NE(section.find("### fam\n"), std::string::npos) << section;
+  EXPECT_EQ(section.find("### solo"), std::string::npos) << section;
+  EXPECT_NE(section.find("| s | N = 16 | N = 64 | N = 256 |"), std::string::npos) << section;
+  EXPECT_NE(section.find("| 2 | rule_a (6.250e-02) | rule_b (3.125e-02) | — |"), std::string::npos)
+      << section;
+  EXPECT_NE(section.find("| 4 | rule_b (1.250e-01) | rule_b (3.125e-02) | rule_b (7.812e-03) |"),
+            std::string::npos)
+      << section;
+  expect_rectangular_tables(page);
+}
+
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
   // A name that already ends in "_s<s>" (a default name, a `dimensions` expansion) is used as it
   // is; any other gets "_s=<s>".

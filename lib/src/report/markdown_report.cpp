@@ -102,6 +102,98 @@ void append_method_table(std::string& out, const convergence_table& t) {
   out += '\n';
 }
 
+// The name of an integrand's family across dimensions: the name without the "_s<s>" that a
+// `dimensions` list appends (scene/parse.hpp), so dim_gaussian_s2 … _s16 form one family.
+std::string family_stem(std::string_view integrand, std::size_t s) {
+  const std::string suffix = fmt::format("_s{}", s);
+  if (integrand.size() > suffix.size() && integrand.ends_with(suffix)) {
+    return std::string(integrand.substr(0, integrand.size() - suffix.size()));
+  }
+  return std::string(integrand);
+}
+
+// "Who leads at equal N": per integrand family (family_stem), a table of s × the ladder's N with
+// the method of smallest error at that N — RMSE for a random method, |error| for a rule, each
+// spending at most N evaluations (a rule's grid is the largest that fits). Only ladder cells
+// (N > 0) and only N where two or more methods have a cell; a family run by one method has no
+// table. The same rule for every scene, no integrand named.
+void append_leaders(std::string& out, std::span<const convergence_table> tables) {
+  std::vector<std::string> families;
+  for (const convergence_table& t : tables) {
+    const std::string f = family_stem(t.integrand, t.s);
+    if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
+  }
+  std::string body;
+  for (const std::string& family : families) {
+    // (s, N) → the (error, method) of every series that ran it.
+    std::vector<std::size_t> dimensions;
+    std::vector<std::uint64_t> ladder;
+    struct entry {
+      std::size_t s;
+      std::uint64_t n;
+      double error;
+      std::string method;
+    };
+    std::vector<entry> entries;
+    for (const convergence_table& t : tables) {
+      if (family_stem(t.integrand, t.s) != family) continue;
+      for (const convergence_row& row : t.rows) {
+        if (row.n == 0) continue;  // a cell run to a tolerance has no N
+        entries.push_back({t.s, row.n, row.stats.rmse, t.method});
+      }
+    }
+    auto methods_at = [&](std::size_t s, std::uint64_t n) {
+      std::vector<const entry*> at;
+      for (const entry& e : entries) {
+        if (e.s == s && e.n == n) at.push_back(&e);
+      }
+      return at;
+    };
+    for (const entry& e : entries) {
+      if (methods_at(e.s, e.n).size() < 2) continue;
+      if (std::find(dimensions.begin(), dimensions.end(), e.s) == dimensions.end()) {
+        dimensions.push_back(e.s);
+      }
+      if (std::find(ladder.begin(), ladder.end(), e.n) == ladder.end()) ladder.push_back(e.n);
+    }
+    if (ladder.empty()) continue;
+    std::sort(dimensions.begin(), dimensions.end());
+    std::sort(ladder.begin(), ladder.end());
+    body += fmt::format("### {}\n\n| s |", cell(family));
+    for (const std::uint64_t n : ladder) body += fmt::format(" N = {} |", n);
+    body += "\n|---:|";
+    for (std::size_t k = 0; k < ladder.size(); ++k) body += "---|";
+    body += '\n';
+    for (const std::size_t s : dimensions) {
+      body += fmt::format("| {} |", s);
+      for (const std::uint64_t n : ladder) {
+        const auto at = methods_at(s, n);
+        if (at.size() < 2) {
+          body += " — |";
+          continue;
+        }
+        // The smallest error; a tie goes to the series listed first.
+        const entry* best = at.front();
+        for (const entry* e : at) {
+          if (e->error < best->error) best = e;
+        }
+        body += fmt::format(" {} ({}) |", cell(best->method), sci(best->error));
+      }
+      body += '\n';
+    }
+    body += '\n';
+  }
+  if (body.empty()) return;
+  out += "## Who leads at equal N\n\n";
+  out +=
+      "Per integrand family (its name without the `_s<s>` of a `dimensions` list) and dimension: "
+      "at each N of the ladder, the method with the smallest error (RMSE over the repetitions, "
+      "|error| for a rule) among those that ran there, with that error; every method spends at "
+      "most N evaluations (a rule uses its largest grid that fits). — where fewer than two "
+      "methods ran.\n\n";
+  out += body;
+}
+
 }  // namespace
 
 std::string plot_stem(std::string_view integrand) {
@@ -199,6 +291,8 @@ std::string render_results_markdown(const run_info& info,
         t.floor.reached() ? sci(t.floor.floor_level) : std::string("–"));
   }
   out += '\n';
+
+  append_leaders(out, tables);
 
   // Groups in order of first appearance.
   std::vector<std::pair<std::string, std::size_t>> groups;
