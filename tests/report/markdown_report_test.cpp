@@ -101,8 +101,9 @@ TEST(MarkdownReport, EnvelopeSeriesShowsItsVerdictRatioAndEnvelopeColumn) {
 }
 
 // Two methods on one family in s = 2 and 4 (a `dimensions` list: names end in _s<s>): the table
-// names at each N the method of smaller error, with that error; an N only one method ran is "—",
-// and a family with one method has no table.
+// names at each N the method of smaller error, with that error; a method without a cell at N
+// competes with its cell of the largest N' < N ("at N = N'"), an N where only one method
+// competes is "—", and a family with one method has no table.
 TEST(MarkdownReport, WhoLeadsAtEqualNPerFamilyAndDimension) {
   std::vector<convergence_table> tables;
   for (const std::size_t s : {2u, 4u}) {
@@ -113,11 +114,13 @@ TEST(MarkdownReport, WhoLeadsAtEqualNPerFamilyAndDimension) {
                                      rule_theory(4, smoothness::analytic, s));
     for (const std::uint64_t n : {16u, 64u, 256u}) {
       const double x = static_cast<double>(n);
-      // rule_a leads at N = 16 in s = 2 (1/N vs 2/N), rule_b everywhere else.
-      const double ea = s == 2 && n == 16 ? 1.0 / x : 4.0 / x;
+      // rule_a: 4/N, but 1/N at (s = 2, N = 16) and 16/N at (s = 2, N = 256); rule_b: 2/N, run
+      // at N = 16, 64 in s = 2 and at N = 64, 256 in s = 4.
+      const double ea = s == 2 && n == 16 ? 1.0 / x : s == 2 && n == 256 ? 16.0 / x : 4.0 / x;
       a.cells.push_back(cell_at(n, {repetition(1.0 + ea, nan, n, 1e-6)}));
-      if (n != 256 || s == 4)
+      if ((s == 2 && n != 256) || (s == 4 && n != 16)) {
         b.cells.push_back(cell_at(n, {repetition(1.0 + 2.0 / x, nan, n, 1e-6)}));
+      }
     }
     tables.push_back(analyse_convergence(a));
     tables.push_back(analyse_convergence(b));
@@ -136,10 +139,11 @@ TEST(MarkdownReport, WhoLeadsAtEqualNPerFamilyAndDimension) {
   EXPECT_NE(section.find("### fam\n"), std::string::npos) << section;
   EXPECT_EQ(section.find("### solo"), std::string::npos) << section;
   EXPECT_NE(section.find("| s | N = 16 | N = 64 | N = 256 |"), std::string::npos) << section;
-  EXPECT_NE(section.find("| 2 | rule_a (6.250e-02) | rule_b (3.125e-02) | — |"), std::string::npos)
-      << section;
-  EXPECT_NE(section.find("| 4 | rule_b (1.250e-01) | rule_b (3.125e-02) | rule_b (7.812e-03) |"),
+  EXPECT_NE(section.find("| 2 | rule_a (6.250e-02) | rule_b (3.125e-02) | rule_b (3.125e-02 at N "
+                         "= 64) |"),
             std::string::npos)
+      << section;
+  EXPECT_NE(section.find("| 4 | — | rule_b (3.125e-02) | rule_b (7.812e-03) |"), std::string::npos)
       << section;
   expect_rectangular_tables(page);
 }

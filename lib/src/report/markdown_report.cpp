@@ -113,48 +113,59 @@ std::string family_stem(std::string_view integrand, std::size_t s) {
 }
 
 // "Who leads at equal N": per integrand family (family_stem), a table of s × the ladder's N with
-// the method of smallest error at that N — RMSE for a random method, |error| for a rule, each
-// spending at most N evaluations (a rule's grid is the largest that fits). Only ladder cells
-// (N > 0) and only N where two or more methods have a cell; a family run by one method has no
-// table. The same rule for every scene, no integrand named.
+// the method of smallest error at that N — RMSE for a random method, |error| for a rule — among
+// the methods that spend at most N evaluations there: each method enters with its cell of the
+// largest ladder N' ≤ N, so a rule whose grid for N is the one it already ran for N' (a plan
+// "same grid" skip) still competes, and the cell says "at N = N'". Only ladder cells (N > 0),
+// only N where some method ran exactly N and two or more compete; a family run by one method has
+// no table. The same rule for every scene, no integrand named.
 void append_leaders(std::string& out, std::span<const convergence_table> tables) {
   std::vector<std::string> families;
   for (const convergence_table& t : tables) {
     const std::string f = family_stem(t.integrand, t.s);
     if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
   }
+  struct entry {
+    std::uint64_t n;  // the cell's ladder N
+    double error;
+    const std::string* method;
+  };
   std::string body;
   for (const std::string& family : families) {
-    // (s, N) → the (error, method) of every series that ran it.
-    std::vector<std::size_t> dimensions;
-    std::vector<std::uint64_t> ladder;
-    struct entry {
-      std::size_t s;
-      std::uint64_t n;
-      double error;
-      std::string method;
-    };
-    std::vector<entry> entries;
+    std::vector<const convergence_table*> members;
     for (const convergence_table& t : tables) {
-      if (family_stem(t.integrand, t.s) != family) continue;
-      for (const convergence_row& row : t.rows) {
-        if (row.n == 0) continue;  // a cell run to a tolerance has no N
-        entries.push_back({t.s, row.n, row.stats.rmse, t.method});
-      }
+      if (family_stem(t.integrand, t.s) == family) members.push_back(&t);
     }
-    auto methods_at = [&](std::size_t s, std::uint64_t n) {
-      std::vector<const entry*> at;
-      for (const entry& e : entries) {
-        if (e.s == s && e.n == n) at.push_back(&e);
+    // Each series' cell with the largest ladder N' ≤ n (rows are in increasing N).
+    auto competitors = [&](std::size_t s, std::uint64_t n) {
+      std::vector<entry> at;
+      for (const convergence_table* t : members) {
+        if (t->s != s) continue;
+        const convergence_row* best = nullptr;
+        for (const convergence_row& row : t->rows) {
+          if (row.n > 0 && row.n <= n && (best == nullptr || row.n > best->n)) best = &row;
+        }
+        if (best != nullptr) at.push_back({best->n, best->stats.rmse, &t->method});
       }
       return at;
     };
-    for (const entry& e : entries) {
-      if (methods_at(e.s, e.n).size() < 2) continue;
-      if (std::find(dimensions.begin(), dimensions.end(), e.s) == dimensions.end()) {
-        dimensions.push_back(e.s);
+    auto ran_exactly = [](const std::vector<entry>& at, std::uint64_t n) {
+      return std::any_of(at.begin(), at.end(), [n](const entry& e) { return e.n == n; });
+    };
+    std::vector<std::size_t> dimensions;
+    std::vector<std::uint64_t> ladder;
+    for (const convergence_table* t : members) {
+      for (const convergence_row& row : t->rows) {
+        if (row.n == 0) continue;  // a cell run to a tolerance has no N
+        const auto at = competitors(t->s, row.n);
+        if (at.size() < 2) continue;
+        if (std::find(dimensions.begin(), dimensions.end(), t->s) == dimensions.end()) {
+          dimensions.push_back(t->s);
+        }
+        if (std::find(ladder.begin(), ladder.end(), row.n) == ladder.end()) {
+          ladder.push_back(row.n);
+        }
       }
-      if (std::find(ladder.begin(), ladder.end(), e.n) == ladder.end()) ladder.push_back(e.n);
     }
     if (ladder.empty()) continue;
     std::sort(dimensions.begin(), dimensions.end());
@@ -167,17 +178,19 @@ void append_leaders(std::string& out, std::span<const convergence_table> tables)
     for (const std::size_t s : dimensions) {
       body += fmt::format("| {} |", s);
       for (const std::uint64_t n : ladder) {
-        const auto at = methods_at(s, n);
-        if (at.size() < 2) {
+        const auto at = competitors(s, n);
+        if (at.size() < 2 || !ran_exactly(at, n)) {
           body += " — |";
           continue;
         }
         // The smallest error; a tie goes to the series listed first.
-        const entry* best = at.front();
-        for (const entry* e : at) {
-          if (e->error < best->error) best = e;
+        const entry* best = &at.front();
+        for (const entry& e : at) {
+          if (e.error < best->error) best = &e;
         }
-        body += fmt::format(" {} ({}) |", cell(best->method), sci(best->error));
+        body += fmt::format(" {} ({}", cell(*best->method), sci(best->error));
+        if (best->n != n) body += fmt::format(" at N = {}", best->n);
+        body += ") |";
       }
       body += '\n';
     }
@@ -188,9 +201,10 @@ void append_leaders(std::string& out, std::span<const convergence_table> tables)
   out +=
       "Per integrand family (its name without the `_s<s>` of a `dimensions` list) and dimension: "
       "at each N of the ladder, the method with the smallest error (RMSE over the repetitions, "
-      "|error| for a rule) among those that ran there, with that error; every method spends at "
-      "most N evaluations (a rule uses its largest grid that fits). — where fewer than two "
-      "methods ran.\n\n";
+      "|error| for a rule) among those that spend at most N evaluations, with that error. Each "
+      "method competes with its cell of the largest N' ≤ N (\"at N = N'\" when N' < N: a rule "
+      "whose grid for N is the one it ran for N', or a method skipped at N). — where fewer than "
+      "two methods compete or none ran N itself.\n\n";
   out += body;
 }
 
