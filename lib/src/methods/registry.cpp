@@ -17,6 +17,7 @@ std::span<const method_descriptor> romberg_methods() noexcept;
 std::span<const method_descriptor> point_set_methods() noexcept;
 std::span<const method_descriptor> importance_methods() noexcept;
 std::span<const method_descriptor> irradiance_methods() noexcept;
+std::span<const method_descriptor> adaptive_methods() noexcept;
 }  // namespace quadmc::methods
 
 namespace quadmc {
@@ -25,7 +26,7 @@ namespace {
 // One entry per family; a family lists its own methods in its file.
 constexpr std::span<const method_descriptor> (*families[])() noexcept = {
     methods::tensor_rule_methods, methods::romberg_methods,    methods::point_set_methods,
-    methods::importance_methods,  methods::irradiance_methods,
+    methods::importance_methods,  methods::irradiance_methods, methods::adaptive_methods,
 };
 
 const std::vector<const method_descriptor*>& all() {
