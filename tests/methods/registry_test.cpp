@@ -28,7 +28,9 @@ TEST(MethodRegistry, NamesEveryMethodOnceWithAKindAndAControl) {
                                           "importance",
                                           "irradiance_hemisphere_uniform",
                                           "irradiance_hemisphere_cosine",
-                                          "irradiance_light_area"};
+                                          "irradiance_light_area",
+                                          "genz_malik",
+                                          "vegas"};
   std::vector<std::string> names;
   for (const method_descriptor* d : method_registry()) {
     names.emplace_back(d->name);
@@ -51,7 +53,8 @@ TEST(MethodRegistry, DeterministicMethodsAreTheRules) {
   for (const method_descriptor* d : method_registry()) {
     const bool rule = std::string_view(d->name).find("rectangle") != std::string_view::npos ||
                       d->name == "midpoint" || d->name == "trapezoid" || d->name == "simpson" ||
-                      d->name == "gauss_legendre" || d->name == "romberg";
+                      d->name == "gauss_legendre" || d->name == "romberg" ||
+                      d->name == "genz_malik";
     EXPECT_EQ(d->kind == method_kind::deterministic, rule) << d->name;
   }
 }
