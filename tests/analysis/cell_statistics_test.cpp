@@ -53,6 +53,52 @@ TEST(CellStatistics, AbsoluteWeightSumIsTheLargestReported) {
   EXPECT_THROW(compute_cell_statistics(reps, 1.0), invalid_argument);
 }
 
+// The same errors 0.1, −0.2, 0, 0.3 with an own error estimate of 0.15 each (0.45 at 3×): |e| ≤
+// 0.15 holds for 0.1 and 0 (2 of 4), |e| ≤ 0.45 for all four. χ²/dof 0.5, 1, 1.5, 3 and Q 0.8,
+// 0.4, 0.2, 0.1 average to 1.5 and 0.375.
+TEST(CellStatistics, OwnErrorEstimateCoverageAndChiSquared) {
+  std::vector<repetition_result> reps = {
+      {1.1, 0.1, 100, 0.5}, {0.8, 0.1, 100, 0.5}, {1.0, 0.1, 100, 0.5}, {1.3, 0.1, 100, 0.5}};
+  const double chi2[] = {0.5, 1.0, 1.5, 3.0};
+  const double q[] = {0.8, 0.4, 0.2, 0.1};
+  for (std::size_t r = 0; r < reps.size(); ++r) {
+    reps[r].error_estimate = 0.15;
+    reps[r].chi2_per_dof = chi2[r];
+    reps[r].q_value = q[r];
+  }
+  const cell_statistics c = compute_cell_statistics(reps, 1.0);
+  EXPECT_DOUBLE_EQ(c.estimate_covers, 0.5);
+  EXPECT_DOUBLE_EQ(c.estimate_covers_3x, 1.0);
+  EXPECT_DOUBLE_EQ(c.chi2_per_dof, 1.5);
+  EXPECT_DOUBLE_EQ(c.q_value, 0.375);
+
+  // One repetition without an estimate (or without χ²) leaves the cell's column empty, never a
+  // fraction over the others.
+  reps[2].error_estimate = nan;
+  reps[3].q_value = nan;
+  const cell_statistics partial = compute_cell_statistics(reps, 1.0);
+  EXPECT_TRUE(std::isnan(partial.estimate_covers));
+  EXPECT_TRUE(std::isnan(partial.estimate_covers_3x));
+  EXPECT_TRUE(std::isnan(partial.chi2_per_dof));
+  EXPECT_TRUE(std::isnan(partial.q_value));
+}
+
+TEST(CellStatistics, RejectsANegativeChiSquaredOrAQOutsideTheUnitInterval) {
+  std::vector<repetition_result> reps = {{1.0, 0.1, 1, 0.1}, {1.0, 0.1, 1, 0.1}};
+  reps[1].chi2_per_dof = -1.0;
+  reps[1].q_value = 0.5;
+  try {
+    compute_cell_statistics(reps, 1.0);
+    FAIL() << "a negative chi2 must be rejected";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("repetitions[1].chi2_per_dof"), std::string::npos)
+        << e.what();
+  }
+  reps[1].chi2_per_dof = 1.0;
+  reps[1].q_value = 1.5;
+  EXPECT_THROW(compute_cell_statistics(reps, 1.0), invalid_argument);
+}
+
 TEST(CellStatistics, DeterministicRuleHasNoSpreadAndNoCoverage) {
   const std::vector<repetition_result> reps = {{0.75, nan, 17, 0.0}};
   const cell_statistics c = compute_cell_statistics(reps, 1.0);

@@ -259,5 +259,29 @@ TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   expect_rectangular_tables(page);
 }
 
+// A method with its own error estimate gets a reliability row: errors of ±0.5ê and 2ê in every
+// cell of plain_mc (1 of 2 within ê, both within 3ê); a page whose methods have none has no
+// such section.
+TEST(MarkdownReport, ReliabilityTableWhereAMethodHasAnEstimate) {
+  convergence_series mc = series_of("gauss", 2, "plain_mc", smoothness::analytic, 1.0,
+                                    monte_carlo_theory(smoothness::analytic, 2));
+  for (int k = 2; k <= 6; ++k) {
+    const auto n = std::uint64_t{1} << (2 * k);
+    const double e = 1.0 / std::sqrt(static_cast<double>(n));
+    repetition_result a = repetition(1.0 + 0.5 * e, e, n, 1e-6);
+    repetition_result b = repetition(1.0 - 2.0 * e, e, n, 1e-6);
+    a.error_estimate = b.error_estimate = e;
+    mc.cells.push_back(cell_at(n, {a, b}));
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(mc)};
+  const std::string page = render_results_markdown({}, tables);
+  EXPECT_NE(page.find("## Error-estimate reliability"), std::string::npos) << page;
+  EXPECT_NE(page.find("| plain_mc | analytic | 1 | 5 | 10 | 0.500 | 1.000 |"), std::string::npos)
+      << page;
+  expect_rectangular_tables(page);
+  EXPECT_EQ(render_results_markdown({}, sample_tables()).find("Error-estimate reliability"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace quadmc

@@ -73,7 +73,8 @@ TEST(ResultsCsv, ExactHeaderLines) {
   EXPECT_EQ(conv.substr(0, conv.find('\n')),
             "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
-            "smoothness,envelope,tolerance,error_estimate");
+            "smoothness,envelope,tolerance,error_estimate,estimate_covers,estimate_covers_3x,"
+            "chi2_per_dof,q_value");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
@@ -153,6 +154,42 @@ TEST(ResultsCsv, RoundTripThroughFiles) {
   EXPECT_TRUE(std::isnan(slopes[1].envelope_ratio));
 }
 
+// A VEGAS-like series: every repetition with its own error estimate and χ²/dof and Q; the cell's
+// coverage of its own estimate and the means reach the file and read back bit for bit.
+TEST(ResultsCsv, OwnEstimateCoverageAndChiSquaredRoundTrip) {
+  const temporary_directory dir;
+  convergence_series s = series_of("genz_gaussian", 2, "vegas", smoothness::analytic, 0.7,
+                                   monte_carlo_theory(smoothness::analytic, 2));
+  for (int k = 6; k <= 9; ++k) {
+    const auto n = std::uint64_t{1} << k;
+    const double se = 1.0 / static_cast<double>(n);
+    repetition_result inside = repetition(0.7 + 0.5 * se, se, n, 1e-6);
+    repetition_result outside = repetition(0.7 - 2.0 * se, se, n, 1e-6);
+    inside.error_estimate = outside.error_estimate = se;
+    inside.chi2_per_dof = 0.75;
+    outside.chi2_per_dof = 1.25;
+    inside.q_value = 0.625;
+    outside.q_value = 0.25;
+    s.cells.push_back(cell_at(n, {inside, outside}));
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(s)};
+  write(dir.path / "convergence.csv", convergence_csv_text("v", tables));
+  const auto rows = read_convergence_csv(dir.path / "convergence.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  for (const convergence_record& r : rows) {
+    EXPECT_EQ(r.estimate_covers, 0.5);     // |e| = 0.5·se ≤ se; 2·se > se
+    EXPECT_EQ(r.estimate_covers_3x, 1.0);  // both ≤ 3·se
+    EXPECT_EQ(r.chi2_per_dof, 1.0);
+    EXPECT_EQ(r.q_value, 0.4375);
+  }
+  // A series without them (sample_tables) leaves the four fields empty.
+  write(dir.path / "convergence.csv", convergence_csv_text("default", sample_tables()));
+  for (const convergence_record& r : read_convergence_csv(dir.path / "convergence.csv")) {
+    EXPECT_TRUE(std::isnan(r.estimate_covers));
+    EXPECT_TRUE(std::isnan(r.chi2_per_dof));
+  }
+}
+
 TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   const temporary_directory dir;
   write(dir.path / "slopes.csv",
@@ -165,8 +202,8 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   EXPECT_TRUE(std::isnan(slopes[0].theory));
   EXPECT_EQ(slopes[0].points_used, 7u);
 
-  // A convergence.csv without the added `floor` and `envelope` columns (an older folder) reads
-  // with floor = false and no envelope.
+  // A convergence.csv without any of the added columns (an older folder) reads with floor =
+  // false and no envelope, tolerance, error estimate, coverage of it or χ².
   const auto tables = sample_tables();
   std::string text = convergence_csv_text("default", tables);
   std::string old;
@@ -174,8 +211,10 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   while (start < text.size()) {
     const std::size_t end = text.find('\n', start);
     std::string line = text.substr(start, end - start);
-    // Drop the last three columns (floor, smoothness, envelope): none has a comma here.
-    for (int column = 0; column < 3; ++column) line = line.substr(0, line.rfind(','));
+    // Drop every added column (floor, smoothness, envelope, …): none has a comma here.
+    for (std::size_t column = 0; column < convergence_csv_added_columns.size(); ++column) {
+      line = line.substr(0, line.rfind(','));
+    }
     old += line + '\n';
     start = end + 1;
   }
@@ -185,6 +224,9 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
   for (const auto& r : rows) {
     EXPECT_FALSE(r.floor);
     EXPECT_TRUE(std::isnan(r.envelope));
+    EXPECT_TRUE(std::isnan(r.tolerance));
+    EXPECT_TRUE(std::isnan(r.estimate_covers));
+    EXPECT_TRUE(std::isnan(r.q_value));
   }
 }
 

@@ -44,6 +44,11 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
                 (std::isfinite(rep.absolute_weight_sum) && rep.absolute_weight_sum >= 0.0),
             where + ".absolute_weight_sum", rep.absolute_weight_sum,
             "NaN (none) or a finite value >= 0");
+    require(std::isnan(rep.chi2_per_dof) ||
+                (std::isfinite(rep.chi2_per_dof) && rep.chi2_per_dof >= 0.0),
+            where + ".chi2_per_dof", rep.chi2_per_dof, "NaN (none) or a finite value >= 0");
+    require(std::isnan(rep.q_value) || (rep.q_value >= 0.0 && rep.q_value <= 1.0),
+            where + ".q_value", rep.q_value, "NaN (none) or a probability in [0, 1]");
   }
 
   // Large errors are divided by a power of two c before they are squared: e² overflows above
@@ -122,6 +127,29 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   }
   if (every_rep_has_estimate) {
     out.error_estimate = std::sqrt(estimate_square_sum.value() / count) * estimate_scale;
+    std::size_t within = 0, within_3x = 0;
+    for (const repetition_result& rep : repetitions) {
+      const double error = std::abs(rep.value - reference);
+      if (error <= rep.error_estimate) ++within;
+      if (error <= 3.0 * rep.error_estimate) ++within_3x;
+    }
+    out.estimate_covers = static_cast<double>(within) / count;
+    out.estimate_covers_3x = static_cast<double>(within_3x) / count;
+  }
+  // Means of the iterations' consistency, over repetitions that all report one.
+  neumaier_sum chi2_sum, q_sum;
+  bool every_rep_has_chi2 = true;
+  for (const repetition_result& rep : repetitions) {
+    if (std::isnan(rep.chi2_per_dof) || std::isnan(rep.q_value)) {
+      every_rep_has_chi2 = false;
+      break;
+    }
+    chi2_sum += rep.chi2_per_dof;
+    q_sum += rep.q_value;
+  }
+  if (every_rep_has_chi2) {
+    out.chi2_per_dof = chi2_sum.value() / count;
+    out.q_value = q_sum.value() / count;
   }
   for (const repetition_result& rep : repetitions) {
     // std::max keeps its first argument when the second is NaN: start from NaN, take any value.

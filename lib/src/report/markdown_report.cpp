@@ -1,6 +1,8 @@
 // The results README page; layout and file-name contract in markdown_report.hpp.
 #include "quadmc/report/markdown_report.hpp"
 
+#include "quadmc/analysis/estimate_reliability.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -305,6 +307,30 @@ std::string render_results_markdown(const run_info& info,
         t.floor.reached() ? sci(t.floor.floor_level) : std::string("–"));
   }
   out += '\n';
+
+  // How often each method's own error estimate held (estimate_reliability.hpp), where any has one.
+  const std::vector<estimate_reliability> reliability = summarise_estimate_reliability(tables);
+  if (!reliability.empty()) {
+    out += "## Error-estimate reliability\n\n";
+    out +=
+        "For every method that reports its own error estimate ê, per smoothness class and pooled "
+        "over integrands and cells: the fraction of estimates (cells × repetitions) whose true "
+        "|error| was at most ê and at most 3ê, the largest RMSE/ê of a cell (ê as the root mean "
+        "square over its repetitions) and the mean χ²/dof of the iterations (VEGAS). A 1σ "
+        "estimate (Monte Carlo's σ̂/√N, VEGAS's σ̂) that is honest covers ≈ 0.68 at 1× and ≈ 0.997 "
+        "at 3×; a bound (Romberg's last difference, Genz–Malik's |Q₇ − Q₅|) should cover every "
+        "estimate. Column `estimate_covers` (`_3x`) of `convergence.csv` holds it per cell.\n\n";
+    out +=
+        "| method | class | series | cells | estimates | \\|error\\| ≤ ê | ≤ 3ê | worst RMSE/ê | "
+        "χ²/dof |\n";
+    out += "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const estimate_reliability& r : reliability) {
+      out += fmt::format("| {} | {} | {} | {} | {} | {:.3f} | {:.3f} | {} | {} |\n", cell(r.method),
+                         to_string(r.regularity), r.series, r.cells, r.estimates, r.covered,
+                         r.covered_3x, short_number(r.worst_ratio), short_number(r.chi2_per_dof));
+    }
+    out += '\n';
+  }
 
   append_leaders(out, tables);
 

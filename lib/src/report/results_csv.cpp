@@ -91,7 +91,11 @@ std::string convergence_csv_text(std::string_view scene,
                                                to_string(t.regularity),
                                                number(row.envelope),
                                                number(row.tolerance),
-                                               number(c.error_estimate)};
+                                               number(c.error_estimate),
+                                               number(c.estimate_covers),
+                                               number(c.estimate_covers_3x),
+                                               number(c.chi2_per_dof),
+                                               number(c.q_value)};
       out += csv_line(fields);
     }
   }
@@ -130,6 +134,10 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
   const bool has_envelope = table.has_column("envelope");
   const bool has_tolerance = table.has_column("tolerance");
   const bool has_error_estimate = table.has_column("error_estimate");
+  // Columns added after error_estimate: read when present, NaN for an older file.
+  auto optional_real = [&](const record_reader& f, std::string_view column) {
+    return table.has_column(column) ? f.real(column) : std::numeric_limits<double>::quiet_NaN();
+  };
   std::vector<convergence_record> out;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const record_reader f(table, r);
@@ -153,6 +161,10 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     if (has_envelope) rec.envelope = f.real("envelope");
     if (has_tolerance) rec.tolerance = f.real("tolerance");
     if (has_error_estimate) rec.error_estimate = f.real("error_estimate");
+    rec.estimate_covers = optional_real(f, "estimate_covers");
+    rec.estimate_covers_3x = optional_real(f, "estimate_covers_3x");
+    rec.chi2_per_dof = optional_real(f, "chi2_per_dof");
+    rec.q_value = optional_real(f, "q_value");
     out.push_back(std::move(rec));
   }
   return out;

@@ -26,6 +26,14 @@
 //                     (NaN when the clock read 0).
 //   error_estimate    √(Σ ê_r²/R) of the repetitions' own error estimates ê_r, comparable with
 //                     rmse; NaN when any repetition has none.
+//   estimate_covers   fraction of r with |e_r| ≤ ê_r (and estimate_covers_3x: ≤ 3·ê_r): how often
+//                     the method's own claim held. An honest 1σ claim (Monte Carlo's σ̂/√N, VEGAS's
+//                     σ̂) covers ≈ 68% at 1× and ≈ 99.7% at 3×; a deterministic bound (a-priori,
+//                     an embedded rule's difference) should cover every cell. NaN when any
+//                     repetition has no estimate.
+//   chi2_per_dof, q_value  means over the repetitions of VEGAS's χ²/dof of its combined iterations
+//                     and of its Q = P(χ²_{K−1} ≥ χ²) (≈ 1 and ≈ 0.5 when the iterations agree
+//                     within their σ̂); NaN when any repetition has none.
 // All sums are compensated (Neumaier); the spread of e_r² uses Welford's update.
 #pragma once
 
@@ -51,6 +59,10 @@ struct repetition_result {
   // scales the rounding floor (rounding_floor.hpp): an error δ in every f moves the sum by up to
   // Σ|w|·δ (rules/weighted_point_set.hpp).
   double absolute_weight_sum = std::numeric_limits<double>::quiet_NaN();
+  // An iterative Monte Carlo method's consistency of its iterations (VEGAS: χ²/dof and its Q);
+  // NaN when it has none.
+  double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();
+  double q_value = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct cell_statistics {
@@ -69,6 +81,10 @@ struct cell_statistics {
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
   // The largest Σ|w| of the repetitions (NaN when none reports one).
   double absolute_weight_sum = std::numeric_limits<double>::quiet_NaN();
+  double estimate_covers = std::numeric_limits<double>::quiet_NaN();
+  double estimate_covers_3x = std::numeric_limits<double>::quiet_NaN();
+  double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();
+  double q_value = std::numeric_limits<double>::quiet_NaN();
 
   // Wall time of one estimate (seconds / repetitions): what a user waits for one answer.
   double seconds_per_repetition() const noexcept {
@@ -77,7 +93,8 @@ struct cell_statistics {
 };
 
 // Throws invalid_argument for no repetitions, a non-finite reference or value, a negative or
-// non-finite time, or a negative std_error (NaN std_error is allowed and means "none").
+// non-finite time, a negative std_error or error_estimate, a negative χ²/dof or a Q outside [0, 1]
+// (NaN is allowed for each of these and means "none").
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference);
 

@@ -1,0 +1,292 @@
+// h-adaptive cubature with the Genz–Malik rule (genz_malik_rule.hpp): integrate the box, then
+// repeatedly bisect the regions of largest error estimate along their axis of largest fourth
+// difference, until the summed error estimate is below a tolerance or the evaluation budget is
+// spent ([Genz & Malik 1980]; [Berntsen, Espelid & Genz 1991]).
+//
+// Use it for smooth integrands in 2 ≤ s ≲ 10 when an error estimate is wanted with the value:
+// it is the algorithm of [cubature]'s hcubature and Cuba's Cuhre. Not for s = 1 (the rule needs
+// s ≥ 2), not for s ≳ 12 (2^s + 2s² + 2s + 1 evaluations per region: Monte Carlo wins), and not
+// where the error estimate matters on discontinuous or sharply peaked integrands: |Q₇ − Q₅| sees
+// only what falls between its nodes (the reliability scene measures how often it is wrong).
+//
+// Which regions a round splits (the parallel variant of [Gladwell 1987] that hcubature_v uses, so
+// that evaluation counts are comparable with it):
+//  - tolerance τ > 0: pop regions in decreasing error until the errors of those not popped sum to
+//    at most τ — the fewest splits that could meet τ if the children were exact;
+//  - budget only (τ = 0): pop until the rest carry at most half the total estimate, so each round
+//    aims to halve the error (hcubature_v with τ = 0 would split every region each round, which
+//    refines uniformly and wastes the budget on regions already accurate).
+// A split costs 2·points() evaluations and is made only while the budget holds both children, so
+// a run never spends more than max_evaluations (hcubature checks before a split and can end up to
+// 2·points() − 1 above its maxEval).
+//
+// Batches and threads: the children of a round are evaluated together, their nodes generated
+// region after region in batches of batch_points = 256 (one integrand call per batch, one virtual
+// call through any_integrand), in chunks of whole regions (⌈2^14 / points()⌉ regions, at least
+// one) that quadmc::parallel_reduce runs on the threads. Each region's estimate depends only on
+// its own values, summed in node order, and every decision (which regions to split, the running
+// totals, the final sums over the regions in creation order, Neumaier-compensated) is made on
+// one thread in a fixed order: the result is bitwise the same for any thread count.
+//
+// Memory: 8·(2s + 6) bytes per region (its box, estimate, volume and heap entry); the store is
+// capped at 512 MiB of regions, after which the run stops refining and says it did not converge
+// (a budget of 2^30 evaluations in s = 2 would otherwise hold 3·10^7 regions, 3 GiB).
+#pragma once
+
+#include "quadmc/core/batching.hpp"
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/summation.hpp"
+#include "quadmc/functions/integrand.hpp"
+#include "quadmc/rules/genz_malik_rule.hpp"
+#include "quadmc/rules/rule_result.hpp"
+#include "quadmc/rules/weighted_sum.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <queue>
+#include <span>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace quadmc {
+
+struct adaptive_cubature_options {
+  std::uint64_t max_evaluations = 0;  // at least one region's points(); never exceeded
+  double absolute_tolerance = 0.0;    // > 0: stop once the error estimate is ≤ it; 0: the budget
+  unsigned threads = 1;               // 0 = all cores; the result does not depend on it
+};
+
+struct adaptive_cubature_result : rule_result {
+  std::uint64_t regions = 0;
+  // The estimate reached the tolerance (always false with absolute_tolerance = 0, unless every
+  // region's estimate is exactly 0).
+  bool converged = false;
+};
+
+// The most regions the store holds in s dimensions (512 MiB, see above).
+inline std::uint64_t adaptive_cubature_max_regions(std::size_t s) noexcept {
+  return (std::uint64_t{1} << 29) / (8 * (2 * static_cast<std::uint64_t>(s) + 6));
+}
+
+namespace detail {
+
+// The regions of one run: boxes as (centre, half-width) rows of 2s doubles, their volumes
+// (halved exactly at each split) and their estimates, indexed by creation order.
+struct cubature_regions {
+  std::size_t s = 0;
+  std::vector<double> boxes;
+  std::vector<double> volumes;
+  std::vector<genz_malik_estimate> estimates;
+
+  std::span<const double> centre(std::size_t r) const noexcept {
+    return {boxes.data() + 2 * s * r, s};
+  }
+  std::span<const double> half_width(std::size_t r) const noexcept {
+    return {boxes.data() + 2 * s * r + s, s};
+  }
+  std::size_t size() const noexcept { return volumes.size(); }
+};
+
+// What require_integration_box (weighted_sum.hpp) accepts, checked without formatting its
+// messages: finite bounds, lower ≤ upper, finite widths.
+inline bool is_integration_box(const box& domain) noexcept {
+  if (domain.upper.size() != domain.lower.size()) return false;
+  for (std::size_t j = 0; j < domain.lower.size(); ++j) {
+    const double a = domain.lower[j];
+    const double b = domain.upper[j];
+    if (!std::isfinite(a) || !std::isfinite(b) || !(a <= b) || !std::isfinite(b - a)) return false;
+  }
+  return true;
+}
+
+// Buffers one chunk of regions needs: the values of its nodes and one batch of points. A run
+// keeps one for the rounds that fit in a single chunk (most rounds of a run to a tolerance split a
+// few regions), so those allocate nothing; larger rounds allocate one per chunk.
+struct cubature_workspace {
+  std::vector<double> values;
+  std::vector<double> x;
+};
+
+// Evaluates the rule on regions ids[first, first + count) into their estimates.
+template <integrand F>
+void evaluate_chunk(const F& f, std::string_view name, const genz_malik_rule& rule,
+                    cubature_regions& store, std::span<const std::uint32_t> ids, std::size_t first,
+                    std::size_t count, cubature_workspace& work) {
+  const std::size_t s = store.s;
+  const std::uint64_t points = rule.points();
+  const std::uint64_t total = count * points;
+  work.values.resize(static_cast<std::size_t>(total));
+  work.x.resize(batch_points * s);
+  std::size_t region = 0;
+  std::uint64_t node = 0;
+  for (std::uint64_t start = 0; start < total; start += batch_points) {
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(batch_points, total - start));
+    // The batch in runs of consecutive nodes of one region.
+    for (std::size_t i = 0; i < n;) {
+      const std::uint32_t id = ids[first + region];
+      const auto run = static_cast<std::size_t>(std::min<std::uint64_t>(n - i, points - node));
+      rule.nodes(node, run, store.centre(id), store.half_width(id), work.x.data() + i * s);
+      i += run;
+      node += run;
+      if (node == points) {
+        node = 0;
+        ++region;
+      }
+    }
+    const std::span<const double> xs(work.x.data(), n * s);
+    const std::span<double> ys(work.values.data() + start, n);
+    f.evaluate(xs, ys);
+    check_finite_batch(name, xs, ys, s);
+  }
+  for (std::size_t r = 0; r < count; ++r) {
+    const std::uint32_t id = ids[first + r];
+    store.estimates[id] = rule.combine(
+        std::span<const double>(work.values.data() + r * points, points), store.volumes[id]);
+  }
+}
+
+// Evaluates the rule on regions ids[0…) and stores their estimates (see the file comment for the
+// batches and chunks).
+template <integrand F>
+void evaluate_regions(const F& f, std::string_view name, const genz_malik_rule& rule,
+                      cubature_regions& store, std::span<const std::uint32_t> ids, unsigned threads,
+                      cubature_workspace& work) {
+  const std::uint64_t per_chunk = std::max<std::uint64_t>(1, rule_chunk_points / rule.points());
+  const chunking layout{ids.size(), per_chunk};
+  if (layout.chunks() == 1) {
+    parallel_reduce_peak_threads() = std::max(parallel_reduce_peak_threads(), 1u);
+    evaluate_chunk(f, name, rule, store, ids, 0, ids.size(), work);
+    return;
+  }
+  auto chunk = [&](std::size_t c) {
+    cubature_workspace own;
+    const auto first = static_cast<std::size_t>(layout.begin(c));
+    evaluate_chunk(f, name, rule, store, ids, first,
+                   static_cast<std::size_t>(layout.end(c)) - first, own);
+    return 0;
+  };
+  parallel_reduce(layout.chunks(), threads, 0, chunk, [](int&, const int&) {});
+}
+
+}  // namespace detail
+
+// ∫ f over f.info().domain by h-adaptive Genz–Malik cubature. Throws invalid_argument for s < 2
+// or s > 40, a budget below one region, a negative or non-finite tolerance or a bad domain;
+// non_finite_value if f returns NaN/±inf (naming the point).
+template <integrand F>
+adaptive_cubature_result genz_malik_cubature(const F& f, const adaptive_cubature_options& options) {
+  // A reference, not a copy: any_integrand returns its info by reference, and copying its
+  // strings and vectors would cost more than a whole run to 10⁻³ in s = 2 (about 150 points).
+  const auto& info = f.info();
+  const std::size_t s = f.dimension();
+  // The messages are formatted only when a check fails: a run to 10⁻³ takes microseconds, and
+  // formatting them every time would be a measurable part of it.
+  if (info.domain.dimension() != s) {
+    require(false, "integrand domain dimension", info.domain.dimension(),
+            fmt::format("the integrand's dimension {}", s));
+  }
+  if (!detail::is_integration_box(info.domain)) require_integration_box(info.domain);
+  const genz_malik_rule rule(s);
+  const std::uint64_t points = rule.points();
+  if (options.max_evaluations < points) {
+    require(false, "max_evaluations", options.max_evaluations,
+            fmt::format("at least one region's 2^s + 2s² + 2s + 1 = {} evaluations (s = {})",
+                        points, s));
+  }
+  const double tolerance = options.absolute_tolerance;
+  require(std::isfinite(tolerance) && tolerance >= 0.0, "absolute_tolerance", tolerance,
+          "a finite tolerance ≥ 0 (0: spend the budget)");
+  const std::uint64_t max_regions = adaptive_cubature_max_regions(s);
+
+  detail::cubature_regions store;
+  store.s = s;
+  store.boxes.resize(2 * s);
+  for (std::size_t j = 0; j < s; ++j) {
+    store.boxes[j] = 0.5 * (info.domain.lower[j] + info.domain.upper[j]);
+    store.boxes[s + j] = 0.5 * (info.domain.upper[j] - info.domain.lower[j]);
+  }
+  store.volumes.push_back(info.domain.volume());
+  store.estimates.resize(1);
+  const std::uint32_t root = 0;
+  detail::cubature_workspace work;
+  detail::evaluate_regions(f, info.name, rule, store, std::span<const std::uint32_t>(&root, 1),
+                           options.threads, work);
+  std::uint64_t evaluations = points;
+
+  // Largest error first; equal errors by larger index (a fixed order, whatever the threads).
+  std::priority_queue<std::pair<double, std::uint32_t>> heap;
+  heap.emplace(store.estimates[0].error, 0);
+  neumaier_sum total_error;
+  total_error.add(store.estimates[0].error);
+
+  adaptive_cubature_result result;
+  std::vector<std::uint32_t> split;
+  std::vector<std::uint32_t> children;
+  for (;;) {
+    const double total = total_error.value();
+    if ((tolerance > 0.0 && total <= tolerance) || total == 0.0) {
+      result.converged = true;
+      break;
+    }
+    const double target = tolerance > 0.0 ? tolerance : 0.5 * total;
+    double remaining = total;
+    split.clear();
+    while (!heap.empty() && evaluations + 2 * points <= options.max_evaluations &&
+           store.size() + split.size() < max_regions) {
+      const auto [error, id] = heap.top();
+      heap.pop();
+      split.push_back(id);
+      remaining -= error;
+      evaluations += 2 * points;
+      if (remaining <= target) break;
+    }
+    if (split.empty()) break;  // the budget (or the region store) cannot hold another split
+    children.clear();
+    for (const std::uint32_t id : split) {
+      total_error.add(-store.estimates[id].error);
+      const std::size_t axis = store.estimates[id].split_axis;
+      const auto child = static_cast<std::uint32_t>(store.size());
+      // The new region copies the parent's box; both halve along the split axis.
+      store.boxes.resize(store.boxes.size() + 2 * s);
+      std::copy_n(store.boxes.begin() + 2 * s * id, 2 * s, store.boxes.begin() + 2 * s * child);
+      double* a = store.boxes.data() + 2 * s * id;
+      double* b = store.boxes.data() + 2 * s * child;
+      const double h = 0.5 * a[s + axis];
+      a[s + axis] = h;
+      b[s + axis] = h;
+      const double c = a[axis];
+      a[axis] = c - h;
+      b[axis] = c + h;
+      store.volumes[id] *= 0.5;
+      store.volumes.push_back(store.volumes[id]);
+      store.estimates.emplace_back();
+      children.push_back(id);
+      children.push_back(child);
+    }
+    detail::evaluate_regions(f, info.name, rule, store, children, options.threads, work);
+    for (const std::uint32_t id : children) {
+      total_error.add(store.estimates[id].error);
+      heap.emplace(store.estimates[id].error, id);
+    }
+  }
+
+  neumaier_sum value;
+  neumaier_sum error;
+  for (const genz_malik_estimate& e : store.estimates) {
+    value.add(e.value);
+    error.add(e.error);
+  }
+  result.value = value.value();
+  result.error_estimate = error.value();
+  result.evaluations = evaluations;
+  result.regions = store.size();
+  return result;
+}
+
+}  // namespace quadmc
