@@ -27,14 +27,16 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libcli11-dev                    # CLI11 (command-line flags)
               libtomlplusplus-dev             # toml++ (scene files)
               librandom123-dev                # Random123 (Philox counter-based RNG)
-              libquadrule-dev)                # quadrule (Gauss–Patterson tables of the sparse grids)
+              libquadrule-dev                 # quadrule (Gauss–Patterson tables of the sparse grids)
+              libquantlib0-dev)               # QuantLib: the lattice generating vectors
 # Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
 # end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
 PLOT_PACKAGES=(python3 python3-matplotlib)
 # What the tests need: the library, and the plots of the end-to-end runs.
 TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}")
 # What only the benchmark command adds: the peers measured beside quadmc in bench/peers/.
-BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev)
+BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev
+                python3-scipy)                # scipy.stats.qmc: the QMC point peers
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)
