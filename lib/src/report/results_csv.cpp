@@ -91,7 +91,11 @@ std::string convergence_csv_text(std::string_view scene,
                                                to_string(t.regularity),
                                                number(row.envelope),
                                                number(row.tolerance),
-                                               number(c.error_estimate)};
+                                               number(c.error_estimate),
+                                               number(c.replicate_std_error),
+                                               number(c.l2_star_discrepancy),
+                                               number(c.centered_discrepancy),
+                                               number(c.wraparound_discrepancy)};
       out += csv_line(fields);
     }
   }
@@ -153,6 +157,13 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     if (has_envelope) rec.envelope = f.real("envelope");
     if (has_tolerance) rec.tolerance = f.real("tolerance");
     if (has_error_estimate) rec.error_estimate = f.real("error_estimate");
+    for (const auto& [column, field] :
+         {std::pair{"replicate_std_error", &convergence_record::replicate_std_error},
+          std::pair{"l2_star_discrepancy", &convergence_record::l2_star_discrepancy},
+          std::pair{"centered_discrepancy", &convergence_record::centered_discrepancy},
+          std::pair{"wraparound_discrepancy", &convergence_record::wraparound_discrepancy}}) {
+      if (table.has_column(column)) rec.*field = f.real(column);
+    }
     out.push_back(std::move(rec));
   }
   return out;

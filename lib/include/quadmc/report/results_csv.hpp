@@ -3,7 +3,8 @@
 //   convergence.csv  one row per cell (integrand, s, method, N):
 //     scene, integrand, s, method, N, evaluations, repetitions, reference, estimate_mean, rmse,
 //     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
-//     then added columns: floor, smoothness, envelope, tolerance, error_estimate
+//     then added columns: floor, smoothness, envelope, tolerance, error_estimate,
+//     replicate_std_error, l2_star_discrepancy, centered_discrepancy, wraparound_discrepancy
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
 //     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
@@ -19,7 +20,12 @@
 // the largest error/envelope over the series' non-floor cells, empty for a slope-verdict series.
 // `tolerance` is the error a cell was run to (control = "tolerance"; N is then 0), empty for a
 // sized cell; `error_estimate` the root mean square of the repetitions' own error estimates
-// (cell_statistics.hpp), empty where the method has none.
+// (cell_statistics.hpp), empty where the method has none (for randomized quasi-Monte Carlo the
+// standard deviation of the replicates); `replicate_std_error` the standard error of
+// estimate_mean from the spread of the repetitions (empty for one repetition); the three
+// `*_discrepancy` columns the root mean square over the repetitions of the L2-star, centered and
+// wrap-around discrepancies of the points (sampling/discrepancy.hpp), computed by the
+// quasi-Monte Carlo methods at N ≤ 4096 and empty elsewhere.
 // `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
 // (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
 //
@@ -45,8 +51,16 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 5> convergence_csv_added_columns = {
-    "floor", "smoothness", "envelope", "tolerance", "error_estimate"};
+inline constexpr std::array<std::string_view, 9> convergence_csv_added_columns = {
+    "floor",
+    "smoothness",
+    "envelope",
+    "tolerance",
+    "error_estimate",
+    "replicate_std_error",
+    "l2_star_discrepancy",
+    "centered_discrepancy",
+    "wraparound_discrepancy"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
@@ -78,6 +92,10 @@ struct convergence_record {
   double envelope = std::numeric_limits<double>::quiet_NaN();        // NaN: empty or column absent
   double tolerance = std::numeric_limits<double>::quiet_NaN();       // NaN: a sized cell, or absent
   double error_estimate = std::numeric_limits<double>::quiet_NaN();  // NaN: none, or absent
+  double replicate_std_error = std::numeric_limits<double>::quiet_NaN();     // NaN: or absent
+  double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();     // NaN: or absent
+  double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();    // NaN: or absent
+  double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();  // NaN: or absent
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.
