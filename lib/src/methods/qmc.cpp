@@ -21,7 +21,7 @@
 // independent randomization (its own Philox stream) and the cell's error estimate and coverage
 // come from their spread (error_bars::replicates, analysis/cell_statistics.hpp;
 // docs/theory.md#replicate-error-bars). A point set's σ̂²/N is never reported for these points.
-// Beside the error, cells of N ≤ 4096 carry the L2 discrepancies of their points
+// Beside the error, cells of N ≤ 1024 carry the L2 discrepancies of their points
 // (sampling/discrepancy.hpp), computed outside the timed run (measure_points).
 #include "families.hpp"
 
@@ -37,8 +37,9 @@
 namespace quadmc::methods {
 namespace {
 
-// Cells up to this N carry discrepancy columns: O(N²·s) per repetition, ≈ 20 ms at s = 2.
-constexpr std::uint64_t discrepancy_max_points = 4096;
+// Cells up to this N carry discrepancy columns: O(N²·s) per repetition (about 5 ms at s = 8 for
+// N = 1024, 16 times that at 4096, which would cost more than the integration itself).
+constexpr std::uint64_t discrepancy_max_points = 1024;
 
 struct qmc_options {
   point_set_options set;

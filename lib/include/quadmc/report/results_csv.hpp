@@ -25,7 +25,7 @@
 // estimate_mean from the spread of the repetitions (empty for one repetition); the three
 // `*_discrepancy` columns the root mean square over the repetitions of the L2-star, centered and
 // wrap-around discrepancies of the points (sampling/discrepancy.hpp), computed by the
-// quasi-Monte Carlo methods at N ≤ 4096 and empty elsewhere.
+// quasi-Monte Carlo methods at N ≤ 1024 and empty elsewhere.
 // `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
 // (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
 //

@@ -167,9 +167,11 @@ class owen_scramble {
     std::uint64_t out = v;
     for (unsigned b = 0; b < depth_; ++b) {
       // The prefix of length b with a leading 1 marking its length, so that prefixes of
-      // different lengths are different keys.
+      // different lengths are different keys; one keyed mix per digit, as pbrt-v4's
+      // OwenScrambler hashes (prefix ⊕ seed) once (mix64 is a bijection: distinct prefixes give
+      // distinct words, whose top bits are the flips).
       const std::uint64_t prefix = b == 0 ? 1 : ((v >> (64 - b)) | (std::uint64_t{1} << b));
-      out ^= (mix64(seed ^ mix64(prefix)) >> 63) << (63 - b);
+      out ^= (mix64(seed ^ prefix) >> 63) << (63 - b);
     }
     if (depth_ < 64) {
       const std::uint64_t prefix =
