@@ -202,7 +202,8 @@ TEST(CellStatistics, ReplicateCoverageOfNormalErrorsIsNinetyFivePercent) {
   for (int k = 0; k < K; ++k) {
     std::vector<repetition_result> reps;
     for (int r = 0; r < 10; ++r) {
-      const double g = std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * std::numbers::pi * uniform());
+      const double g =
+          std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * std::numbers::pi * uniform());
       reps.push_back({3.0 + 0.01 * g, nan, 16, 0.1});
     }
     const double cover = compute_cell_statistics(reps, 3.0, error_bars::replicates).coverage_95;
