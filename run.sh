@@ -27,7 +27,8 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
               libcli11-dev                    # CLI11 (command-line flags)
               libtomlplusplus-dev             # toml++ (scene files)
               librandom123-dev                # Random123 (Philox counter-based RNG)
-              libquadrule-dev)                # quadrule (Gauss–Patterson tables of the sparse grids)
+              libquadrule-dev                 # quadrule (Gauss–Patterson tables of the sparse grids)
+              libquantlib0-dev)               # QuantLib: the lattice generating vectors
 # Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
 # end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
 PLOT_PACKAGES=(python3 python3-matplotlib)

@@ -1,5 +1,5 @@
 // The `quadmc` command: run a scene, print its plan, list what scenes may name, compare two
-// result folders.
+// result folders, write a point set's points (points_command.hpp).
 //
 // Exit status (also in `quadmc --help`):
 //   0        success; for `compare`, no slope regression
@@ -35,6 +35,7 @@
 
 #include "catalogue_listing.hpp"
 #include "interruption.hpp"
+#include "points_command.hpp"
 #include "progress_bar.hpp"
 #include "results_staging.hpp"
 #include "subprocess.hpp"
@@ -353,6 +354,9 @@ int main(int argc, char** argv) {
   compare->add_option("--tolerance", tolerance, "Slope regression tolerance, ≥ 0 (default 0.1)")
       ->check(CLI::NonNegativeNumber);
 
+  quadmc_cli::points_request points_request;
+  auto* points = quadmc_cli::add_points_subcommand(app, points_request);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -375,6 +379,14 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*compare) return compare_command(folder_a, folder_b, tolerance, out);
+    if (*points) {
+      quadmc_cli::run_points(points_request, [&out](std::string_view text) {
+        out.print(text);
+        return !out.failed();
+      });
+      if (out.failed()) throw std::runtime_error(out.message());
+      return 0;
+    }
   } catch (const std::exception& e) {
     // One line: the library's messages are single lines naming file, line, key or parameter.
     fmt::print(stderr, "quadmc: {}\n", one_line(e.what()));

@@ -74,7 +74,8 @@ TEST(ResultsCsv, ExactHeaderLines) {
             "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
             "smoothness,envelope,tolerance,error_estimate,estimate_covers,estimate_covers_3x,"
-            "chi2_per_dof,q_value");
+            "chi2_per_dof,q_value,replicate_std_error,l2_star_discrepancy,centered_discrepancy,"
+            "wraparound_discrepancy");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"

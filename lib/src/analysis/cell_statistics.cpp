@@ -6,6 +6,8 @@
 #include "quadmc/core/summation.hpp"
 #include "quadmc/core/welford.hpp"
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -26,7 +28,7 @@ double squaring_scale(double x) {
 }  // namespace
 
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
-                                        double reference) {
+                                        double reference, error_bars bars) {
   require(!repetitions.empty(), "repetitions", repetitions.size(), "at least one repetition");
   require_finite(reference, "reference");
   for (std::size_t r = 0; r < repetitions.size(); ++r) {
@@ -161,6 +163,51 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
   }
   out.seconds = seconds_sum.value();
   if (out.seconds > 0.0) out.evals_per_second = static_cast<double>(evaluations) / out.seconds;
+
+  // The spread of the values themselves (s_R), in scaled errors so that it cannot overflow.
+  if (repetitions.size() >= 2) {
+    welford spread;
+    for (const repetition_result& rep : repetitions)
+      spread.add((rep.value - reference) * inverse_scale);
+    const double sd = std::sqrt(spread.variance()) * scale;
+    out.replicate_std_error = sd / std::sqrt(count);
+    if (bars == error_bars::replicates) {
+      out.error_estimate = sd;
+      if (repetitions.size() >= 3) {
+        // Leave one out: the mean and M₂ of the other R − 1 values by Welford's downdate,
+        // m' = (R·m − v)/(R − 1), M₂' = M₂ − (v − m)(v − m').
+        const double R = count;
+        const double m = spread.mean();
+        const double m2 = spread.variance() * (R - 1.0);
+        const boost::math::students_t t_law(R - 2.0);
+        const double t = boost::math::quantile(t_law, 0.975);
+        std::size_t inside = 0;
+        for (const repetition_result& rep : repetitions) {
+          const double v = (rep.value - reference) * inverse_scale;
+          const double m_other = (R * m - v) / (R - 1.0);
+          const double m2_other = std::max(0.0, m2 - (v - m) * (v - m_other));
+          const double sd_other = std::sqrt(m2_other / (R - 2.0));
+          if (std::abs(v) <= t * sd_other) ++inside;
+        }
+        out.coverage_95 = static_cast<double>(inside) / R;
+      } else {
+        out.coverage_95 = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  }
+  // Root mean squares of the point sets' discrepancies (each ≤ a few units: no scaling needed).
+  auto root_mean_square = [&](double repetition_result::*field) {
+    neumaier_sum sum;
+    for (const repetition_result& rep : repetitions) {
+      const double d = rep.*field;
+      if (std::isnan(d)) return std::numeric_limits<double>::quiet_NaN();
+      sum += d * d;
+    }
+    return std::sqrt(sum.value() / count);
+  };
+  out.l2_star_discrepancy = root_mean_square(&repetition_result::l2_star_discrepancy);
+  out.centered_discrepancy = root_mean_square(&repetition_result::centered_discrepancy);
+  out.wraparound_discrepancy = root_mean_square(&repetition_result::wraparound_discrepancy);
   return out;
 }
 

@@ -64,7 +64,7 @@ convergence_table analyse_convergence(const convergence_series& series,
     row.per_axis = cell->per_axis;
     row.envelope = cell->error_envelope;
     try {
-      row.stats = compute_cell_statistics(cell->repetitions, series.reference);
+      row.stats = compute_cell_statistics(cell->repetitions, series.reference, series.errors);
     } catch (const invalid_argument& e) {
       throw invalid_argument(fmt::format("{}: {}", where, e.what()));
     }

@@ -135,4 +135,81 @@ theoretical_rate one_point_per_stratum_rate(const integrand_class& f) {
           "docs/theory.md#jittered; [Mitchell 1996]; [Pilleboue et al. 2015]"};
 }
 
+theoretical_rate scrambled_net_rate(const integrand_class& f) {
+  const double s = dimension_of(f);
+  if (auto none = infinite_variance_rate(f)) return *none;
+  switch (f.regularity) {
+    case smoothness::analytic:
+    case smoothness::smooth:
+      return {-1.5,
+              fmt::format("scrambled (t,m,s)-net, N = 2^m: N^-3/2 up to (log N)^{}", (s - 1) / 2),
+              "docs/theory.md#scrambled-nets; [Owen 1997b]"};
+    case smoothness::c0:
+      // In 1D a scrambled (0, m, 1)-net is one uniform point per interval of 2^−m: jittered.
+      if (f.s == 1) {
+        return {-1.5, "1D: one point per interval of 2^-m (jittered); f Lipschitz",
+                "docs/theory.md#scrambled-nets; docs/theory.md#jittered"};
+      }
+      return {std::nullopt, "kinks in s >= 2: Owen's N^-3/2 needs smooth mixed derivatives",
+              "docs/theory.md#scrambled-nets"};
+    case smoothness::discontinuous:
+      return {-0.5 - 1.0 / (4.0 * s - 2.0), "indicator of a smooth-boundary region",
+              "docs/theory.md#scrambled-nets; [He & Wang 2015]"};
+    case smoothness::singular:
+      break;
+  }
+  return {std::nullopt, "not tabulated for a singular f", "docs/theory.md#scrambled-nets"};
+}
+
+theoretical_rate low_discrepancy_rate(const integrand_class& f, std::string note,
+                                      std::string source) {
+  (void)dimension_of(f);
+  if (auto none = infinite_variance_rate(f)) return *none;
+  switch (f.regularity) {
+    case smoothness::analytic:
+    case smoothness::smooth:
+    case smoothness::c0:
+      return {-1.0, std::move(note) + "; Koksma-Hlawka, D* = O((log N)^s/N): log factors",
+              std::move(source)};
+    case smoothness::discontinuous:
+      return {std::nullopt, "a jump: Hardy-Krause variation infinite (curved) or no rate tabulated",
+              std::move(source)};
+    case smoothness::singular:
+      break;
+  }
+  return {std::nullopt, "not tabulated for a singular f", std::move(source)};
+}
+
+theoretical_rate shifted_lattice_rate(const integrand_class& f, bool baker) {
+  (void)dimension_of(f);
+  if (auto none = infinite_variance_rate(f)) return *none;
+  const char* source = baker ? "docs/theory.md#lattice-rules; [Hickernell 2002]; "
+                               "[Dick, Nuyens & Pillichshammer 2014]"
+                             : "docs/theory.md#lattice-rules; [Dick, Kuo & Sloan 2013]";
+  switch (f.regularity) {
+    case smoothness::analytic:
+    case smoothness::smooth:
+      if (baker) return {-2.0, "shifted lattice + baker's transform: N^(-2+e)", source};
+      return {-1.0, "randomly shifted lattice, f not periodic: N^(-1+e)", source};
+    case smoothness::c0:
+      return {-1.0, "mixed first derivatives only (kinks): N^(-1+e)", source};
+    case smoothness::discontinuous:
+      return {std::nullopt, "a jump: no lattice rate tabulated", source};
+    case smoothness::singular:
+      break;
+  }
+  return {std::nullopt, "not tabulated for a singular f", source};
+}
+
+theoretical_rate broken_net_rate(const integrand_class& f, std::string note) {
+  (void)dimension_of(f);
+  if (auto none = infinite_variance_rate(f)) return *none;
+  if (f.regularity == smoothness::analytic || f.regularity == smoothness::smooth) {
+    return {-1.0, std::move(note) + ": no net, N^-1",
+            "docs/theory.md#sobol-anti-patterns; [Owen 2022]"};
+  }
+  return {std::nullopt, std::move(note) + ": no rate tabulated beyond smooth f",
+          "docs/theory.md#sobol-anti-patterns"};
+}
+
 }  // namespace quadmc

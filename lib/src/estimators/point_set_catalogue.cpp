@@ -2,23 +2,29 @@
 // once per set, by point_set_entry_for<P>.
 #include "quadmc/estimators/point_set_catalogue.hpp"
 
+#include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/integer_powers.hpp"
 #include "quadmc/estimators/importance_sampling.hpp"
 #include "quadmc/estimators/irradiance_estimators.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/inversion_warps.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
+#include "quadmc/sampling/rank1_lattice_points.hpp"
+#include "quadmc/sampling/sobol_points.hpp"
 #include "quadmc/sampling/stratum_grid.hpp"
 #include "quadmc/sampling/unjittered_points.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -48,14 +54,106 @@ class interval_warp {
   double width_;
 };
 
+// How an entry builds its concrete set: visit(s, n, options, stream, fn) calls fn with the set,
+// so every estimator below is compiled once per concrete type (no virtual call per point).
 template <class P>
-estimate monte_carlo_over(const any_integrand& f, const sample_stream& stream, std::uint64_t n,
-                          unsigned threads) {
-  return monte_carlo(f, P(f.dimension(), n, stream.seed, stream.stream), threads);
+struct plain_set {
+  template <class Fn>
+  static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options&,
+                              const sample_stream& st, Fn&& fn) {
+    return fn(P(s, n, st.seed, st.stream));
+  }
+};
+
+constexpr std::array<randomization, 5> sobol_randomizations{
+    randomization::owen, randomization::fast_owen, randomization::lms_shift, randomization::shift,
+    randomization::none};
+constexpr std::array<randomization, 3> halton_randomizations{
+    randomization::owen, randomization::permutation, randomization::none};
+constexpr std::array<randomization, 2> lattice_randomizations{randomization::shift,
+                                                              randomization::none};
+
+const point_set_entry& entry_named(std::string_view name);
+
+// The checks every QMC set makes before it builds its points: a randomization it has, and a
+// count it holds (the nearest valid sizes named otherwise).
+void require_qmc_request(const point_set_entry& set, std::size_t s, std::uint64_t n,
+                         const point_set_options& options) {
+  if (options.random && !set.has(*options.random)) {
+    std::string names;
+    for (const randomization r : set.randomizations) {
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", to_string(r));
+    }
+    throw invalid_argument("randomization", std::string(to_string(*options.random)),
+                           fmt::format("one of {} for the {} points", names, set.name));
+  }
+  const std::string problem = size_problem(set, s, n, options);
+  if (!problem.empty()) throw invalid_argument("number of points N", std::to_string(n), problem);
 }
 
-template <class P>
-estimate importance_over(const any_integrand& f, const unit_warp& warp, const sample_stream& stream,
+struct sobol_set {
+  template <class Fn>
+  static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
+                              const sample_stream& st, Fn&& fn) {
+    const point_set_entry& set = entry_named("sobol");
+    require_qmc_request(set, s, n, o);
+    const bool drop = o.drop_first_point;
+    switch (*set.randomization_of(o)) {
+      case randomization::owen:
+        return fn(sobol_points<owen_scramble>(s, n, st.seed, st.stream, drop));
+      case randomization::fast_owen:
+        return fn(sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream, drop));
+      case randomization::lms_shift:
+        return fn(sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream, drop));
+      case randomization::shift:
+        return fn(sobol_points<digital_shift>(s, n, st.seed, st.stream, drop));
+      default:
+        return fn(sobol_points<unrandomized_digits>(s, n, st.seed, st.stream, drop));
+    }
+  }
+};
+
+struct halton_set {
+  template <class Fn>
+  static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
+                              const sample_stream& st, Fn&& fn) {
+    const point_set_entry& set = entry_named("halton");
+    require_qmc_request(set, s, n, o);
+    switch (*set.randomization_of(o)) {
+      case randomization::owen:
+        return fn(halton_points<nested_digit_scramble>(s, n, st.seed, st.stream));
+      case randomization::permutation:
+        return fn(halton_points<random_digit_permutation>(s, n, st.seed, st.stream));
+      default:
+        return fn(halton_points<unrandomized_radical_inverse>(s, n, st.seed, st.stream));
+    }
+  }
+};
+
+struct lattice_set {
+  template <class Fn>
+  static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
+                              const sample_stream& st, Fn&& fn) {
+    const point_set_entry& set = entry_named("lattice");
+    require_qmc_request(set, s, n, o);
+    const bool shifted = *set.randomization_of(o) == randomization::shift;
+    if (o.periodic == periodization::baker) {
+      return fn(rank1_lattice_points<baker_transform>(s, n, st.seed, st.stream, shifted));
+    }
+    return fn(rank1_lattice_points<no_periodization>(s, n, st.seed, st.stream, shifted));
+  }
+};
+
+template <class Set>
+estimate monte_carlo_over(const any_integrand& f, const point_set_options& options,
+                          const sample_stream& stream, std::uint64_t n, unsigned threads) {
+  return Set::visit(f.dimension(), n, options, stream,
+                    [&](const auto& points) { return monte_carlo(f, points, threads); });
+}
+
+template <class Set>
+estimate importance_over(const any_integrand& f, const unit_warp& warp,
+                         const point_set_options& options, const sample_stream& stream,
                          std::uint64_t n, unsigned threads) {
   require(f.dimension() == 1, "integrand dimension", f.dimension(),
           "1 (importance sampling with a 1D warp)");
@@ -64,54 +162,99 @@ estimate importance_over(const any_integrand& f, const unit_warp& warp, const sa
   const double b = domain.upper[0];
   require(std::isfinite(a) && std::isfinite(b) && b > a, "integrand interval upper", b,
           "a finite interval with b > a");
-  const P points(1, n, stream.seed, stream.stream);
-  switch (warp.kind) {
-    case unit_warp_kind::power:
-      return importance_sampling(f, interval_warp(power_warp(warp.parameter), a, b), points,
-                                 threads);
-    case unit_warp_kind::truncated_exponential:
-      return importance_sampling(f, interval_warp(truncated_exponential_warp(warp.parameter), a, b),
-                                 points, threads);
-  }
-  throw invalid_argument("warp kind", std::to_string(static_cast<int>(warp.kind)),
-                         "power or truncated_exponential");
+  return Set::visit(1, n, options, stream, [&](const auto& points) {
+    switch (warp.kind) {
+      case unit_warp_kind::power:
+        return importance_sampling(f, interval_warp(power_warp(warp.parameter), a, b), points,
+                                   threads);
+      case unit_warp_kind::truncated_exponential:
+        return importance_sampling(
+            f, interval_warp(truncated_exponential_warp(warp.parameter), a, b), points, threads);
+    }
+    throw invalid_argument("warp kind", std::to_string(static_cast<int>(warp.kind)),
+                           "power or truncated_exponential");
+  });
 }
 
-template <class P>
+template <class Set>
 estimate irradiance_over(irradiance_sampling technique, const irradiance_setup& setup,
-                         const sample_stream& stream, std::uint64_t n, unsigned threads) {
-  const P points(2, n, stream.seed, stream.stream);
-  switch (technique) {
-    case irradiance_sampling::uniform_hemisphere:
-      return irradiance_uniform_hemisphere(setup, points, threads);
-    case irradiance_sampling::cosine_hemisphere:
-      return irradiance_cosine_hemisphere(setup, points, threads);
-    case irradiance_sampling::light_area:
-      return irradiance_light_area(setup, points, threads);
-  }
-  throw invalid_argument("irradiance technique", std::to_string(static_cast<int>(technique)),
-                         "uniform_hemisphere, cosine_hemisphere or light_area");
+                         const point_set_options& options, const sample_stream& stream,
+                         std::uint64_t n, unsigned threads) {
+  return Set::visit(2, n, options, stream, [&](const auto& points) {
+    switch (technique) {
+      case irradiance_sampling::uniform_hemisphere:
+        return irradiance_uniform_hemisphere(setup, points, threads);
+      case irradiance_sampling::cosine_hemisphere:
+        return irradiance_cosine_hemisphere(setup, points, threads);
+      case irradiance_sampling::light_area:
+        return irradiance_light_area(setup, points, threads);
+    }
+    throw invalid_argument("irradiance technique", std::to_string(static_cast<int>(technique)),
+                           "uniform_hemisphere, cosine_hemisphere or light_area");
+  });
 }
 
-template <class P>
+template <class Set>
+void points_over(std::size_t s, std::uint64_t n, const point_set_options& options,
+                 const sample_stream& stream, const point_batch_sink& sink) {
+  Set::visit(s, n, options, stream, [&](const auto& points) {
+    std::vector<double> x(batch_points * s);
+    for (std::uint64_t first = 0; first < n; first += batch_points) {
+      const std::uint64_t count = std::min<std::uint64_t>(batch_points, n - first);
+      const std::span<double> batch(x.data(), count * s);
+      points.generate(first, batch);
+      sink(first, batch);
+    }
+    return 0;
+  });
+}
+
+template <class Set>
 constexpr point_set_entry point_set_entry_for(std::string_view name, std::string_view description,
-                                              point_count counts) {
-  return {name, description, counts, monte_carlo_over<P>, importance_over<P>, irradiance_over<P>};
+                                              point_count counts,
+                                              std::span<const randomization> randomizations = {},
+                                              std::size_t max_dimension = 0,
+                                              error_source errors = error_source::own) {
+  return {name,
+          description,
+          counts,
+          randomizations,
+          max_dimension,
+          errors,
+          monte_carlo_over<Set>,
+          importance_over<Set>,
+          irradiance_over<Set>,
+          points_over<Set>};
 }
 
-constexpr std::array<point_set_entry, 5> entries{{
-    point_set_entry_for<independent_points>("independent", "independent uniform points",
-                                            point_count::any),
-    point_set_entry_for<jittered_points>("jittered", "one random point per cell of a k^s grid",
-                                         point_count::perfect_power),
-    point_set_entry_for<unjittered_points>(
+constexpr std::array<point_set_entry, 8> entries{{
+    point_set_entry_for<plain_set<independent_points>>("independent", "independent uniform points",
+                                                       point_count::any),
+    point_set_entry_for<plain_set<jittered_points>>(
+        "jittered", "one random point per cell of a k^s grid", point_count::perfect_power),
+    point_set_entry_for<plain_set<unjittered_points>>(
         "unjittered", "cell centres of a randomly shifted k^s grid", point_count::perfect_power),
-    point_set_entry_for<padded_jittered_points>(
+    point_set_entry_for<plain_set<padded_jittered_points>>(
         "padded_jittered", "k x k jittered strata padded across dimension pairs",
         point_count::perfect_square),
-    point_set_entry_for<latin_hypercube_points>("latin_hypercube", "Latin hypercube",
-                                                point_count::any),
+    point_set_entry_for<plain_set<latin_hypercube_points>>("latin_hypercube", "Latin hypercube",
+                                                           point_count::any),
+    point_set_entry_for<sobol_set>(
+        "sobol", "Sobol' points (Joe-Kuo directions), Gray-code order, N = 2^m when randomized",
+        point_count::power_of_two, sobol_randomizations, sobol_matrices::max_dimension,
+        error_source::replicates),
+    point_set_entry_for<halton_set>("halton", "Halton points in the first s prime bases",
+                                    point_count::any, halton_randomizations, max_halton_dimension,
+                                    error_source::replicates),
+    point_set_entry_for<lattice_set>(
+        "lattice", "rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20, random shift",
+        point_count::power_of_two, lattice_randomizations, max_lattice_dimension,
+        error_source::replicates),
 }};
+
+const point_set_entry& entry_named(std::string_view name) {
+  return *find_point_set(name);
+}
 
 }  // namespace
 
@@ -126,6 +269,8 @@ point_count_choice largest_point_count(point_count counts, std::uint64_t N, std:
       const std::uint64_t k = integer_root(N, 2);
       return {k, k * k};
     }
+    case point_count::power_of_two:
+      return {0, N == 0 ? 0 : std::bit_floor(N)};
     case point_count::any:
       break;
   }
@@ -149,16 +294,109 @@ std::string point_set_names() {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
-bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n) {
-  if (s == 0 || n == 0) return false;
-  switch (set.counts) {
+std::string_view to_string(randomization r) noexcept {
+  switch (r) {
+    case randomization::none:
+      return "none";
+    case randomization::shift:
+      return "shift";
+    case randomization::lms_shift:
+      return "lms_shift";
+    case randomization::owen:
+      return "owen";
+    case randomization::fast_owen:
+      return "fast_owen";
+    case randomization::permutation:
+      return "permutation";
+  }
+  return "?";
+}
+
+std::optional<randomization> parse_randomization(std::string_view name) noexcept {
+  for (const randomization r :
+       {randomization::none, randomization::shift, randomization::lms_shift, randomization::owen,
+        randomization::fast_owen, randomization::permutation}) {
+    if (to_string(r) == name) return r;
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(periodization p) noexcept {
+  return p == periodization::baker ? "baker" : "none";
+}
+
+std::optional<randomization> point_set_entry::randomization_of(
+    const point_set_options& options) const noexcept {
+  if (randomizations.empty()) return std::nullopt;
+  return options.random.value_or(randomizations.front());
+}
+
+bool point_set_entry::has(randomization r) const noexcept {
+  return std::find(randomizations.begin(), randomizations.end(), r) != randomizations.end();
+}
+
+point_count point_set_entry::counts_with(const point_set_options& options) const noexcept {
+  // Sobol': the first N points of the sequence are a valid (if poorer) point set for any N when
+  // asked for, and the unrandomized sequence is a deterministic prefix for any N. A lattice of
+  // another N would need another generating vector.
+  if (counts == point_count::power_of_two && name == "sobol" &&
+      (options.allow_any_n || randomization_of(options) == randomization::none)) {
+    return point_count::any;
+  }
+  return counts;
+}
+
+error_source point_set_entry::errors_with(const point_set_options& options) const noexcept {
+  if (randomization_of(options) == randomization::none) return error_source::own;
+  return errors;
+}
+
+std::uint64_t max_point_count(const point_set_entry& set, const point_set_options& options) {
+  if (set.name == "sobol") {
+    return (std::uint64_t{1} << 32) - (options.drop_first_point ? 1 : 0);
+  }
+  if (set.name == "lattice") return max_lattice_points;
+  return std::uint64_t{1} << 62;
+}
+
+bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
+                  const point_set_options& options) {
+  return s != 0 && n != 0 && size_problem(set, s, n, options).empty();
+}
+
+std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_t n,
+                         const point_set_options& options) {
+  if (s == 0) return "a dimension s ≥ 1";
+  if (n == 0) return "N ≥ 1";
+  if (set.max_dimension != 0 && s > set.max_dimension) {
+    return fmt::format("s ≤ {} for the {} points, got s = {}", set.max_dimension, set.name, s);
+  }
+  if (n > (std::uint64_t{1} << 62) / s) {
+    return "N·s < 2^62 (the counter space of one random stream)";
+  }
+  const std::uint64_t most = max_point_count(set, options);
+  if (n > most) return fmt::format("N ≤ {} for the {} points", most, set.name);
+  switch (set.counts_with(options)) {
     case point_count::perfect_power:
-      return stratum_grid::is_valid_size(s, n);
+      if (!stratum_grid::is_valid_size(s, n)) return "N = k^s (one point per stratum)";
+      break;
+    case point_count::power_of_two:
+      if (!std::has_single_bit(n)) {
+        const std::uint64_t below = std::bit_floor(n);
+        const std::uint64_t above = below << 1;
+        const auto r = set.randomization_of(options);
+        return fmt::format(
+            "a power of two: {} {}needs N = 2^m, nearest valid sizes {} and {}{}", set.name,
+            r ? fmt::format("with randomization '{}' ", to_string(*r)) : std::string(), below,
+            above <= most ? fmt::format("{}", above) : std::string("(none larger)"),
+            set.name == "sobol" ? " (allow_any_n = true takes N as it is, losing the net)" : "");
+      }
+      break;
     case point_count::perfect_square:
     case point_count::any:
       break;
   }
-  return n <= (std::uint64_t{1} << 62) / s;
+  return {};
 }
 
 }  // namespace quadmc

@@ -108,6 +108,12 @@ class importance_method final : public method {
     return point_set_sizing(*points_.set, N, s);
   }
 
+  // A quasi-Monte Carlo set's u give one run no error estimate: the replicates do.
+  quadmc::error_bars error_bars() const override {
+    return points_.set->errors == error_source::replicates ? error_bars::replicates
+                                                           : error_bars::own;
+  }
+
   theoretical_rate theory(const integrand_class& f) const override {
     return root_n_rate(f, "(∫f²/p − I²)/N; zero variance (no slope, rounding floor) iff p ∝ f ≥ 0",
                        "docs/theory.md#importance; [Ramamoorthi 2009, §4.1]");
@@ -132,7 +138,9 @@ constexpr std::array<option_doc, 2> option_docs{{
      "e^(l x)/(e^l - 1) on [0,1], 0 < |l| <= 700, default 1); the label gets \"_<warp>\""},
     {"point_set",
      "the pattern of the uniforms fed to the warp (independent [default], jittered, unjittered, "
-     "padded_jittered, latin_hypercube); counts are mapped as for that method"},
+     "padded_jittered, latin_hypercube, sobol, halton, lattice: their default randomization); "
+     "counts "
+     "are mapped as for that method"},
 }};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 

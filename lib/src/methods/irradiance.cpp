@@ -31,6 +31,12 @@ class irradiance_method final : public method {
     return point_set_sizing(*points_.set, N, s);
   }
 
+  // A quasi-Monte Carlo set's u give one run no error estimate: the replicates do.
+  quadmc::error_bars error_bars() const override {
+    return points_.set->errors == error_source::replicates ? error_bars::replicates
+                                                           : error_bars::own;
+  }
+
   // Uniform-hemisphere, cosine-weighted and light-area sampling are importance sampling with
   // bounded weights: finite variance, so σ/√N; only the constant σ differs
   // (docs/theory.md#irradiance-estimators).
@@ -53,7 +59,9 @@ class irradiance_method final : public method {
 constexpr std::array<option_doc, 1> option_docs{{
     {"point_set",
      "the pattern of the 2D uniforms (independent [default], jittered, unjittered, "
-     "padded_jittered, latin_hypercube); counts are mapped as for that method"},
+     "padded_jittered, latin_hypercube, sobol, halton, lattice: their default randomization); "
+     "counts "
+     "are mapped as for that method"},
 }};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 

@@ -17,6 +17,14 @@ std::string_view to_string(cell_control control) noexcept {
   return "?";
 }
 
+method_kind method::kind() const {
+  return descriptor().kind;
+}
+
+quadmc::error_bars method::error_bars() const {
+  return error_bars::own;
+}
+
 std::optional<std::string> method::incompatibility(const integrand_traits&) const {
   return std::nullopt;
 }
@@ -24,6 +32,8 @@ std::optional<std::string> method::incompatibility(const integrand_traits&) cons
 std::vector<sizing> method::explicit_sizes(std::size_t) const {
   return {};
 }
+
+void method::measure_points(const method_cell&, const run_context&, repetition_result&) const {}
 
 double method::error_envelope(const integrand_info&, const cell_size&) const {
   return std::numeric_limits<double>::quiet_NaN();

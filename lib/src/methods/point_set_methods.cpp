@@ -24,6 +24,10 @@ point_set_option read_point_set(option_reader& options) {
 
 sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s) {
   const point_count_choice count = largest_point_count(set.counts, N, s);
+  if (count.points > max_point_count(set)) {
+    return {std::nullopt, fmt::format("N = {} is above the largest {} set, {} points", N, set.name,
+                                      max_point_count(set))};
+  }
   return {cell_size{count.points, count.per_axis, 0, 0}, {}};
 }
 

@@ -95,7 +95,11 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(c.estimate_covers),
                                                number(c.estimate_covers_3x),
                                                number(c.chi2_per_dof),
-                                               number(c.q_value)};
+                                               number(c.q_value),
+                                               number(c.replicate_std_error),
+                                               number(c.l2_star_discrepancy),
+                                               number(c.centered_discrepancy),
+                                               number(c.wraparound_discrepancy)};
       out += csv_line(fields);
     }
   }
@@ -165,6 +169,13 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     rec.estimate_covers_3x = optional_real(f, "estimate_covers_3x");
     rec.chi2_per_dof = optional_real(f, "chi2_per_dof");
     rec.q_value = optional_real(f, "q_value");
+    for (const auto& [column, field] :
+         {std::pair{"replicate_std_error", &convergence_record::replicate_std_error},
+          std::pair{"l2_star_discrepancy", &convergence_record::l2_star_discrepancy},
+          std::pair{"centered_discrepancy", &convergence_record::centered_discrepancy},
+          std::pair{"wraparound_discrepancy", &convergence_record::wraparound_discrepancy}}) {
+      if (table.has_column(column)) rec.*field = f.real(column);
+    }
     out.push_back(std::move(rec));
   }
   return out;

@@ -66,6 +66,7 @@ run_output run_plan(const plan& p, const run_options& options) {
       series.theory = mspec.configured->theory(
           integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
       series.reference = mean_reference[cell.integrand];
+      series.errors = mspec.configured->error_bars();
       out.series.push_back(std::move(series));
     }
     // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble
@@ -122,6 +123,13 @@ run_output run_plan(const plan& p, const run_options& options) {
         throw run_error(fmt::format("{}: {}", where(), e.what()));
       }
       result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+      try {
+        const method_cell work{inst.function, inst.params,    size,
+                               cell.control,  cell.tolerance, stream};
+        mspec.configured->measure_points(work, context, result);
+      } catch (const std::exception& e) {
+        throw run_error(fmt::format("{}: {}", where(), e.what()));
+      }
       // Values that are each finite can still sum to inf (and Neumaier's correction to
       // inf − inf = NaN); the analysis refuses such an estimate, so it is reported here, where
       // the cell is known.

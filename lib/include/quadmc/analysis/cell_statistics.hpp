@@ -34,6 +34,23 @@
 //   chi2_per_dof, q_value  means over the repetitions of VEGAS's χ²/dof of its combined iterations
 //                     and of its Q = P(χ²_{K−1} ≥ χ²) (≈ 1 and ≈ 0.5 when the iterations agree
 //                     within their σ̂); NaN when any repetition has none.
+//   replicate_std_error  s_R/√R, s_R the standard deviation of the R values (divisor R − 1): the
+//                     standard error of estimate_mean, whose 95% interval is
+//                     estimate_mean ± t(0.975, R − 1)·replicate_std_error; NaN for R = 1.
+//   *_discrepancy     √(Σ D_r²/R) of the repetitions' point-set discrepancies
+//                     (sampling/discrepancy.hpp); NaN when any repetition has none.
+//
+// Error bars from replicates (error_bars::replicates: randomized quasi-Monte Carlo, whose single
+// run cannot estimate its own error, docs/theory.md#replicate-error-bars): the R repetitions are
+// R independent randomizations, so
+//   error_estimate    is s_R, the replicates' own estimate of the error of one of them (for an
+//                     unbiased method E[s_R²] = MSE): comparable with rmse, as for Monte Carlo;
+//   coverage_95       is the fraction of r with |e_r| ≤ t(0.975, R − 2)·s_(−r), s_(−r) the standard
+//                     deviation of the other R − 1 values: when the replicate errors are normal,
+//                     (v_r − I)/s_(−r) has Student's t law with R − 2 degrees of freedom exactly
+//                     (v_r is independent of the others), so ≈ 0.95 means the replicate error
+//                     bars can be trusted, and a lower value means heavier tails than the t
+//                     interval assumes; NaN for R < 3.
 // All sums are compensated (Neumaier); the spread of e_r² uses Welford's update.
 #pragma once
 
@@ -63,7 +80,16 @@ struct repetition_result {
   // NaN when it has none.
   double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();
   double q_value = std::numeric_limits<double>::quiet_NaN();
+  // The L2 discrepancies of the repetition's point set (quasi-Monte Carlo methods, small N);
+  // NaN when not computed.
+  double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();
+  double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();
+  double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();
 };
+
+// Where a cell's error bars come from: each repetition's own std_error and error_estimate, or
+// the spread of the repetitions (independent replicates of a randomized point set).
+enum class error_bars { own, replicates };
 
 struct cell_statistics {
   std::size_t repetitions = 0;
@@ -85,6 +111,10 @@ struct cell_statistics {
   double estimate_covers_3x = std::numeric_limits<double>::quiet_NaN();
   double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();
   double q_value = std::numeric_limits<double>::quiet_NaN();
+  double replicate_std_error = std::numeric_limits<double>::quiet_NaN();
+  double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();
+  double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();
+  double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();
 
   // Wall time of one estimate (seconds / repetitions): what a user waits for one answer.
   double seconds_per_repetition() const noexcept {
@@ -96,6 +126,6 @@ struct cell_statistics {
 // non-finite time, a negative std_error or error_estimate, a negative χ²/dof or a Q outside [0, 1]
 // (NaN is allowed for each of these and means "none").
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
-                                        double reference);
+                                        double reference, error_bars bars = error_bars::own);
 
 }  // namespace quadmc

@@ -56,6 +56,9 @@ struct convergence_series {
   // The method's rate on this integrand (its descriptor chose it, methods/method.hpp).
   theoretical_rate theory;
   std::vector<convergence_cell> cells;
+  // Where the cells' error bars come from (cell_statistics.hpp): the repetitions' own, or their
+  // spread (randomized quasi-Monte Carlo).
+  error_bars errors = error_bars::own;
 };
 
 struct analysis_options {

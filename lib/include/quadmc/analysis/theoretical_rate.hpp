@@ -71,4 +71,31 @@ theoretical_rate sparse_grid_rate(const integrand_class& f);
 // boundary, no tabulated slope for a singular f.
 theoretical_rate one_point_per_stratum_rate(const integrand_class& f);
 
+// Randomized quasi-Monte Carlo (docs/theory.md#quasi-monte-carlo). N = 2^m points of a (t, m,
+// s)-net under nested uniform or random linear scrambling: −3/2 on smooth f, up to (log
+// N)^((s−1)/2)
+// ([Owen 1997b]); −1/2 − 1/(4s − 2) on the indicator of a region with a smooth boundary
+// ([He & Wang 2015]); in 1D (one point per interval of 2^−m) the jittered rates; no tabulated
+// rate for kinks in s ≥ 2 or singular f.
+theoretical_rate scrambled_net_rate(const integrand_class& f);
+
+// Points whose randomization (if any) leaves their discrepancy as it is — a digital shift, the
+// unrandomized Sobol' or Halton points, randomized Halton: −1 up to log factors on f of bounded
+// Hardy–Krause variation (the Koksma–Hlawka bound with D* = O((log N)^s/N),
+// [Kuipers & Niederreiter], [Niederreiter 1992]): analytic, smooth and C0 f; no tabulated rate
+// for jumps (a curved one has infinite variation) or singular f. `note`/`source` name the set.
+theoretical_rate low_discrepancy_rate(const integrand_class& f, std::string note,
+                                      std::string source);
+
+// A randomly shifted rank-1 lattice rule: −1 on f with square-integrable mixed first derivatives
+// (analytic, smooth, C0); with the baker's transform −2 on f with square-integrable mixed second
+// derivatives (analytic, smooth; C0 stays −1), both up to N^ε ([Hickernell 2002];
+// [Dick, Nuyens & Pillichshammer 2014]; [Dick, Kuo & Sloan 2013]); no tabulated rate for jumps
+// or singular f.
+theoretical_rate shifted_lattice_rate(const integrand_class& f, bool baker);
+
+// A scrambled Sobol' set that is no net: N ≠ 2^m, or the first point dropped. Smooth f: −1
+// ([Owen 2022]); otherwise no tabulated rate.
+theoretical_rate broken_net_rate(const integrand_class& f, std::string note);
+
 }  // namespace quadmc

@@ -96,6 +96,15 @@ class method {
 
   const method_descriptor& descriptor() const noexcept { return *descriptor_; }
 
+  // Deterministic or randomized as configured: the descriptor's kind, unless an option removes
+  // the randomness (a quasi-Monte Carlo set with randomization = "none" runs once per cell).
+  virtual method_kind kind() const;
+
+  // Where a cell's error bars come from (analysis/cell_statistics.hpp): each repetition's own
+  // std_error and error estimate, or the spread of the repetitions when one run cannot estimate
+  // its own error (randomized quasi-Monte Carlo: docs/theory.md#replicate-error-bars).
+  virtual quadmc::error_bars error_bars() const;
+
   // Appended to the name for the default label: "_naive" (an accumulator), "_power" (a warp),
   // "_jittered" (a point set), so two configurations of one method get two series.
   virtual std::string label_suffix() const { return {}; }
@@ -121,6 +130,11 @@ class method {
   // One repetition of one cell. Throws what the kernels throw (invalid_argument,
   // non_finite_value naming the point).
   virtual repetition_result run(const method_cell& cell, const run_context& context) const = 0;
+
+  // Measures of the repetition's points that are not part of its cost (the discrepancies of a
+  // quasi-Monte Carlo set), added to `result` after the timed run; by default none.
+  virtual void measure_points(const method_cell& cell, const run_context& context,
+                              repetition_result& result) const;
 
  private:
   const method_descriptor* descriptor_;

@@ -4,7 +4,8 @@
 //     scene, integrand, s, method, N, evaluations, repetitions, reference, estimate_mean, rmse,
 //     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
 //     then added columns: floor, smoothness, envelope, tolerance, error_estimate, estimate_covers,
-//     estimate_covers_3x, chi2_per_dof, q_value
+//     estimate_covers_3x, chi2_per_dof, q_value, replicate_std_error, l2_star_discrepancy,
+//     centered_discrepancy, wraparound_discrepancy
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
 //     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
@@ -23,7 +24,12 @@
 // (cell_statistics.hpp), empty where the method has none; `estimate_covers` (`_3x`) the fraction of
 // repetitions whose |error| was at most (3×) their own error estimate, empty where there is none;
 // `chi2_per_dof` and `q_value` the means of VEGAS's χ²/dof and Q over the repetitions, empty for
-// every other method.
+// every other method (for randomized quasi-Monte Carlo `error_estimate` is the standard deviation
+// of the replicates); `replicate_std_error` the standard error of
+// estimate_mean from the spread of the repetitions (empty for one repetition); the three
+// `*_discrepancy` columns the root mean square over the repetitions of the L2-star, centered and
+// wrap-around discrepancies of the points (sampling/discrepancy.hpp), computed by the
+// quasi-Monte Carlo methods at N ≤ 1024 and empty elsewhere.
 // `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
 // (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
 //
@@ -49,9 +55,20 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 9> convergence_csv_added_columns = {
-    "floor",           "smoothness",         "envelope",     "tolerance", "error_estimate",
-    "estimate_covers", "estimate_covers_3x", "chi2_per_dof", "q_value"};
+inline constexpr std::array<std::string_view, 13> convergence_csv_added_columns = {
+    "floor",
+    "smoothness",
+    "envelope",
+    "tolerance",
+    "error_estimate",
+    "estimate_covers",
+    "estimate_covers_3x",
+    "chi2_per_dof",
+    "q_value",
+    "replicate_std_error",
+    "l2_star_discrepancy",
+    "centered_discrepancy",
+    "wraparound_discrepancy"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
@@ -83,10 +100,14 @@ struct convergence_record {
   double envelope = std::numeric_limits<double>::quiet_NaN();        // NaN: empty or column absent
   double tolerance = std::numeric_limits<double>::quiet_NaN();       // NaN: a sized cell, or absent
   double error_estimate = std::numeric_limits<double>::quiet_NaN();  // NaN: none, or absent
-  double estimate_covers = std::numeric_limits<double>::quiet_NaN();     // NaN: none, or absent
-  double estimate_covers_3x = std::numeric_limits<double>::quiet_NaN();  // NaN: none, or absent
-  double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();        // NaN: none, or absent
-  double q_value = std::numeric_limits<double>::quiet_NaN();             // NaN: none, or absent
+  double estimate_covers = std::numeric_limits<double>::quiet_NaN();         // NaN: none, or absent
+  double estimate_covers_3x = std::numeric_limits<double>::quiet_NaN();      // NaN: none, or absent
+  double chi2_per_dof = std::numeric_limits<double>::quiet_NaN();            // NaN: none, or absent
+  double q_value = std::numeric_limits<double>::quiet_NaN();                 // NaN: none, or absent
+  double replicate_std_error = std::numeric_limits<double>::quiet_NaN();     // NaN: or absent
+  double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();     // NaN: or absent
+  double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();    // NaN: or absent
+  double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();  // NaN: or absent
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.

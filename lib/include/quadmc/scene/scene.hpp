@@ -57,7 +57,7 @@ struct method_spec {
   source_location table;
   key_locations keys;
 
-  method_kind kind() const noexcept { return configured->descriptor().kind; }
+  method_kind kind() const { return configured->kind(); }
 };
 
 struct budget_spec {

@@ -1,0 +1,139 @@
+// `quadmc points`: see points_command.hpp.
+#include "points_command.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/estimators/point_set_catalogue.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace quadmc_cli {
+
+CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
+  auto* points = app.add_subcommand(
+      "points", "Write the points of a point set as CSV (x1,...,xs per line), to stdout or --out");
+  points->add_option("set", request.set, "Point set: a name of `quadmc list` (sobol, halton, ...)")
+      ->required();
+  points->add_option("--n", request.n, "Number of points N ≥ 1")
+      ->required()
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
+  points->add_option("--s", request.s, "Dimension s ≥ 1")
+      ->required()
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  points->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key)")->required();
+  points->add_option("--stream", request.stream, "Stream of the seed (default 0)");
+  points->add_option("--randomization", request.randomization,
+                     "sobol: owen|fast_owen|lms_shift|shift|none; halton: owen|permutation|none; "
+                     "lattice: shift|none (default: the set's first)");
+  points->add_option("--periodization", request.periodization, "lattice: none|baker");
+  points->add_flag("--allow-any-n", request.allow_any_n, "sobol: take N as it is (no net)");
+  points->add_flag("--drop-first-point", request.drop_first_point, "sobol: start at point 1");
+  points->add_option("--out", request.out, "Output file (default: stdout)");
+  return points;
+}
+
+namespace {
+
+// The options as the catalogue takes them, every value checked against the set.
+quadmc::point_set_options options_for(const quadmc::point_set_entry& set, const points_request& r) {
+  quadmc::point_set_options o;
+  if (!r.randomization.empty()) {
+    const auto random = quadmc::parse_randomization(r.randomization);
+    std::string names;
+    for (const auto x : set.randomizations) {
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", quadmc::to_string(x));
+    }
+    if (!random || !set.has(*random)) {
+      throw quadmc::invalid_argument("--randomization", r.randomization,
+                                     set.randomizations.empty()
+                                         ? fmt::format("no randomization: {} has none", set.name)
+                                         : fmt::format("one of {} for {}", names, set.name));
+    }
+    o.random = random;
+  }
+  if (!r.periodization.empty()) {
+    if (set.name != "lattice") {
+      throw quadmc::invalid_argument(
+          "--periodization", r.periodization,
+          fmt::format("no periodization for {} (lattice only)", set.name));
+    }
+    if (r.periodization != "none" && r.periodization != "baker") {
+      throw quadmc::invalid_argument("--periodization", r.periodization, "none or baker");
+    }
+    o.periodic =
+        r.periodization == "baker" ? quadmc::periodization::baker : quadmc::periodization::none;
+  }
+  if ((r.allow_any_n || r.drop_first_point) && set.name != "sobol") {
+    throw quadmc::invalid_argument(r.allow_any_n ? "--allow-any-n" : "--drop-first-point", "set",
+                                   fmt::format("sobol only, not {}", set.name));
+  }
+  o.allow_any_n = r.allow_any_n;
+  o.drop_first_point = r.drop_first_point;
+  return o;
+}
+
+struct file_closer {
+  void operator()(std::FILE* f) const noexcept { std::fclose(f); }
+};
+
+}  // namespace
+
+void run_points(const points_request& r, const std::function<bool(std::string_view)>& write) {
+  const quadmc::point_set_entry* set = quadmc::find_point_set(r.set);
+  if (set == nullptr) {
+    throw quadmc::invalid_argument("point set", r.set,
+                                   fmt::format("one of: {}", quadmc::point_set_names()));
+  }
+  const quadmc::point_set_options options = options_for(*set, r);
+  const std::string problem = quadmc::size_problem(*set, r.s, r.n, options);
+  if (!problem.empty()) {
+    throw quadmc::invalid_argument("--n", fmt::format("{} (s = {})", r.n, r.s), problem);
+  }
+
+  std::unique_ptr<std::FILE, file_closer> file;
+  if (!r.out.empty()) {
+    file.reset(std::fopen(r.out.c_str(), "w"));
+    if (!file) {
+      throw std::runtime_error(
+          fmt::format("--out {}: cannot open for writing: {}", r.out, std::strerror(errno)));
+    }
+  }
+  auto emit = [&](std::string_view text) {
+    if (file) {
+      if (std::fwrite(text.data(), 1, text.size(), file.get()) != text.size()) {
+        throw std::runtime_error(
+            fmt::format("--out {}: write failed: {}", r.out, std::strerror(errno)));
+      }
+      return true;
+    }
+    return write(text);
+  };
+  std::string text;
+  for (std::size_t j = 0; j < r.s; ++j) text += fmt::format("{}x{}", j == 0 ? "" : ",", j + 1);
+  text += '\n';
+  bool ok = emit(text);
+  set->points(
+      r.s, r.n, {r.seed, r.stream},
+      [&](std::uint64_t, std::span<const double> x) {
+        if (!ok) return;
+        text.clear();
+        auto out = std::back_inserter(text);
+        for (std::size_t k = 0; k < x.size(); ++k) {
+          fmt::format_to(out, "{}{}", x[k], (k + 1) % r.s == 0 ? "\n" : ",");
+        }
+        ok = emit(text);
+      },
+      options);
+  if (file && std::fclose(file.release()) != 0) {
+    throw std::runtime_error(
+        fmt::format("--out {}: close failed: {}", r.out, std::strerror(errno)));
+  }
+}
+
+}  // namespace quadmc_cli

@@ -1,0 +1,46 @@
+// `quadmc points SET --n N --s S --seed K [--randomization R]`: the points of any point set of
+// the catalogue (estimators/point_set_catalogue.hpp) as CSV, so that a user can take the suite's
+// Sobol', Halton, lattice or stratified points to another tool.
+//
+// Output: a header x1,…,xs, then one line per point in index order, each coordinate the shortest
+// decimal text that reads back to the same double (so another tool sees the same bits). To
+// stdout, or with --out FILE to that file (written whole, or the command fails naming it).
+// The points are those of philox stream `--stream` (default 0) of seed K: the same (SET, N, s,
+// K, stream, options) give bitwise the same file. Extra flags beyond the fixed form:
+// --periodization (lattice), --allow-any-n and --drop-first-point (sobol), --stream.
+// Exit status as for every subcommand: 1 for values the set refuses (an unknown set, a
+// randomization it has not, N not 2^m for a randomized net), 2 for usage errors (a missing or
+// malformed flag).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace quadmc_cli {
+
+struct points_request {
+  std::string set;
+  std::uint64_t n = 0;
+  std::size_t s = 0;
+  std::uint64_t seed = 0;
+  std::uint64_t stream = 0;
+  std::string randomization;  // empty: the set's default
+  std::string periodization;  // empty: none
+  bool allow_any_n = false;
+  bool drop_first_point = false;
+  std::string out;  // empty: stdout
+};
+
+// Adds the `points` subcommand to `app`, filling `request` when it is parsed.
+CLI::App* add_points_subcommand(CLI::App& app, points_request& request);
+
+// Writes the points: through `write` (stdout) or to request.out. `write` returns false once the
+// output failed (the caller reports it). Throws quadmc::invalid_argument for values the set
+// refuses and std::runtime_error when --out cannot be written.
+void run_points(const points_request& request, const std::function<bool(std::string_view)>& write);
+
+}  // namespace quadmc_cli

@@ -1,0 +1,134 @@
+// End-to-end tests of `quadmc points` (bench/quadmc/points_command.hpp) and of a scene with the
+// quasi-Monte Carlo methods: the CSV of a point set (the unrandomized Sobol' points by value,
+// the same seed giving the same bytes), the one-line errors for what a set refuses, and a run
+// whose convergence.csv carries the replicate and discrepancy columns.
+#include "quadmc/report/results_csv.hpp"
+#include "quadmc_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace quadmc_cli_test {
+namespace {
+
+TEST(PointsCommand, WritesTheUnrandomizedSobolPointsAsCsv) {
+  scratch_folder dir;
+  const command_result r = run_quadmc(
+      dir, {"points", "sobol", "--n", "4", "--s", "2", "--seed", "1", "--randomization", "none"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  // Points 0 … 3 of the 2D Sobol' sequence in Gray-code order: (0,0), (1/2,1/2), (3/4,1/4),
+  // (1/4,3/4) (dimension 2's direction numbers 1/2, 3/4).
+  EXPECT_EQ(r.out, "x1,x2\n0,0\n0.5,0.5\n0.75,0.25\n0.25,0.75\n");
+}
+
+TEST(PointsCommand, SameSeedSameBytesOtherSeedOtherPointsAndOutFile) {
+  scratch_folder dir;
+  const std::vector<std::string> args{"points", "halton", "--n", "300", "--s", "5", "--seed", "7"};
+  const command_result a = run_quadmc(dir, args);
+  const command_result b = run_quadmc(dir, args);
+  ASSERT_EQ(a.exit_status, 0) << describe(a);
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_EQ(std::count(a.out.begin(), a.out.end(), '\n'), 301);
+  std::vector<std::string> other = args;
+  other[7] = "8";
+  EXPECT_NE(run_quadmc(dir, other).out, a.out);
+  std::vector<std::string> to_file = args;
+  to_file.insert(to_file.end(), {"--out", "points.csv"});
+  const command_result f = run_quadmc(dir, to_file);
+  ASSERT_EQ(f.exit_status, 0) << describe(f);
+  EXPECT_TRUE(f.out.empty());
+  EXPECT_EQ(read_text(dir / "points.csv"), a.out);
+}
+
+void expect_one_line_error(const std::vector<std::string>& args, const std::string& names,
+                           const std::string& also) {
+  scratch_folder dir;
+  const command_result r = run_quadmc(dir, args);
+  EXPECT_EQ(r.exit_status, 1) << describe(r);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
+  EXPECT_NE(r.err.find(names), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find(also), std::string::npos) << describe(r);
+  EXPECT_TRUE(r.out.empty()) << describe(r);
+}
+
+TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
+  expect_one_line_error({"points", "sobol", "--n", "1000", "--s", "2", "--seed", "1"}, "--n",
+                        "nearest valid sizes 512 and 1024");
+  expect_one_line_error({"points", "lattice", "--n", "3000", "--s", "2", "--seed", "1"}, "--n",
+                        "2048 and 4096");
+  expect_one_line_error(
+      {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--randomization", "lms_shift"},
+      "--randomization", "owen, permutation, none");
+  expect_one_line_error({"points", "niederreiter", "--n", "8", "--s", "2", "--seed", "1"},
+                        "point set", "sobol");
+  expect_one_line_error({"points", "sobol", "--n", "8", "--s", "3668", "--seed", "1"}, "--n",
+                        "s ≤ 3667");
+  expect_one_line_error(
+      {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "baker"},
+      "--periodization", "lattice only");
+}
+
+constexpr const char* qmc_scene = R"(name = "qmc"
+seed = 5
+[[integrand]]
+name = "g"
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "sobol"
+repetitions = 8
+[[method]]
+name = "sobol"
+randomization = "none"
+[[method]]
+name = "lattice"
+periodization = "baker"
+repetitions = 8
+[budget]
+N = [64, 256, 1000]
+[output]
+plots = false
+)";
+
+TEST(QmcScene, RunsWithReplicateErrorBarsAndDiscrepancies) {
+  scratch_folder dir;
+  write_text(dir / "scene.toml", qmc_scene);
+  const command_result r =
+      run_quadmc(dir, {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  const auto rows = quadmc::read_convergence_csv(dir / "out" / "convergence.csv");
+  ASSERT_EQ(rows.size(), 9u);
+  for (const auto& row : rows) {
+    // N = 1000 maps to the largest 2^m below it, as the tensor rules map N to their grids.
+    EXPECT_EQ(row.evaluations, row.n == 1000 ? 512u : row.n) << row.method << " " << row.n;
+    EXPECT_FALSE(std::isnan(row.l2_star_discrepancy)) << row.method << " " << row.n;
+    if (row.method == "sobol_none") {
+      EXPECT_EQ(row.repetitions, 1u);
+      EXPECT_TRUE(std::isnan(row.coverage_95));
+    } else {
+      EXPECT_EQ(row.repetitions, 8u);
+      EXPECT_FALSE(std::isnan(row.coverage_95)) << row.method;
+      EXPECT_FALSE(std::isnan(row.replicate_std_error)) << row.method;
+      EXPECT_FALSE(std::isnan(row.error_estimate)) << row.method;
+    }
+  }
+}
+
+TEST(QmcScene, ExplicitPointsThatAreNoPowerOfTwoFailAtTheKey) {
+  scratch_folder dir;
+  std::string text = qmc_scene;
+  text.replace(text.find("repetitions = 8"), 15, "points = [256, 1000]");
+  write_text(dir / "scene.toml", text);
+  const command_result r = run_quadmc(dir, {"plan", (dir / "scene.toml").string()});
+  EXPECT_EQ(r.exit_status, 1) << describe(r);
+  EXPECT_NE(r.err.find("scene.toml:9:"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("points"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("nearest valid sizes 512 and 1024"), std::string::npos) << describe(r);
+}
+
+}  // namespace
+}  // namespace quadmc_cli_test
