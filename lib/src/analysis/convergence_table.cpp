@@ -122,12 +122,11 @@ void judge_series(convergence_table& table, const convergence_series& series,
   const std::size_t clean = fit_n.size();
   const bool floor_limited = table.floor.reached() && clean < 3;
   const std::string floor_text =
-      table.floor.reached()
-          ? fmt::format("the rounding floor of {} (ℓ = {:.2g} at N = {}) from N = {}",
-                        series.rounding.describe(), table.rows[*table.floor.first].rounding_level,
-                        table.rows[*table.floor.first].stats.evaluations,
-                        table.rows[*table.floor.first].stats.evaluations)
-          : std::string();
+      table.floor.reached() ? fmt::format("the rounding floor of {} from N = {} (ℓ = {:.2g} there)",
+                                          series.rounding.describe(),
+                                          table.rows[*table.floor.first].stats.evaluations,
+                                          table.rows[*table.floor.first].rounding_level)
+                            : std::string();
 
   prediction_check check;
   const error_prediction* prediction = series.prediction ? &*series.prediction : nullptr;
