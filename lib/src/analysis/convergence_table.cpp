@@ -144,9 +144,10 @@ void judge_series(convergence_table& table, const convergence_series& series,
   // Every term of the expansion vanishes: exponential convergence, judged by being faster than
   // the class rate (or reaching the floor before three points).
   if (prediction && !prediction->leading_slope) {
+    // The point estimate, not the interval: a power law is the wrong model for e^(−cN), so its
+    // interval is wide by construction (a bending log-log curve leaves large residuals).
     const bool fast = table.fit.ok() && class_slope &&
-                      table.fit.slope < *class_slope - verdict_band(table.fit, class_slope,
-                                                                    options.verdict_tolerance);
+                      table.fit.slope < *class_slope * (1.0 + options.verdict_tolerance);
     if (fast || floor_limited) {
       table.theory = {std::nullopt, prediction->note, prediction->source};
       table.verdict = slope_verdict::superconvergent;

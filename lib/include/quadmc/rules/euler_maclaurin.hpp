@@ -37,6 +37,7 @@
 #include <fmt/format.h>
 #include <boost/math/special_functions/bernoulli.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
@@ -54,9 +55,11 @@ namespace quadmc {
 inline constexpr int euler_maclaurin_orders = static_cast<int>(endpoint_derivative_count);
 
 // B_j(t) = Σ_k C(j, k)·B_k·t^(j−k) (B₁ = −1/2, odd B_k = 0 beyond), in long double: for j ≤ 24 and
-// t ∈ [0, 1] the terms are at most ten times the value, so it keeps 17 digits.
-inline long double bernoulli_polynomial(int j, long double t) {
-  long double sum = 0.0L;
+// t ∈ [0, 1] the terms are at most ten times the value, so it keeps 17 digits. `magnitude`, when
+// given, receives Σ_k |C(j, k)·B_k·t^(j−k)|: the scale of its rounding (at a zero of B_j the value
+// itself is rounding noise and says nothing about it).
+inline long double bernoulli_polynomial(int j, long double t, long double* magnitude = nullptr) {
+  long double sum = 0.0L, size = 0.0L;
   long double binomial = 1.0L;  // C(j, k)
   for (int k = 0; k <= j; ++k) {
     long double b = 0.0L;
@@ -67,9 +70,14 @@ inline long double bernoulli_polynomial(int j, long double t) {
     } else if (k % 2 == 0) {
       b = boost::math::bernoulli_b2n<long double>(k / 2);
     }
-    if (b != 0.0L) sum += binomial * b * std::pow(t, static_cast<long double>(j - k));
+    if (b != 0.0L) {
+      const long double term = binomial * b * std::pow(t, static_cast<long double>(j - k));
+      sum += term;
+      size += std::abs(term);
+    }
     binomial = binomial * static_cast<long double>(j - k) / static_cast<long double>(k + 1);
   }
+  if (magnitude != nullptr) *magnitude = size;
   return sum;
 }
 
@@ -83,7 +91,8 @@ class euler_maclaurin_rule {
  public:
   // From a rule of rule.hpp: its node set for `unit_panels` panels is the panel rule (Simpson: 2,
   // the pair; every other rule: 1), read in double, summed in long double. A coefficient is 0
-  // when its sum is within 64ε of the sum of its terms' magnitudes (the rule's symmetry or
+  // when its sum is within 64ε of the magnitude of the sum's terms (Σᵢ wᵢ·Σ_k |C(j, k)B_k
+  // τᵢ^(j−k)|, which bounds the rounding of the double nodes and of the sum: the rule's symmetry or
   // exactness makes it vanish: midpoint's odd orders, Gauss–Legendre's below 2m), and known when
   // the double-rounded tables leave it accurate to 1e-9 relative (m-point Gauss–Legendre loses
   // digits like the cancellation of its 2m-th order term; large m is not known).
@@ -102,9 +111,9 @@ class euler_maclaurin_rule {
       factorial *= static_cast<long double>(j);
       long double sum = 0.0L, magnitude = 0.0L;
       for (std::size_t i = 0; i < out.node_.size(); ++i) {
-        const long double term = out.weight_[i] * bernoulli_polynomial(j, out.node_[i]);
-        sum += term;
-        magnitude += std::abs(term);
+        long double size = 0.0L;
+        sum += out.weight_[i] * bernoulli_polynomial(j, out.node_[i], &size);
+        magnitude += std::abs(out.weight_[i]) * size;
       }
       const bool zero = std::abs(sum) <= 64.0L * eps * magnitude;
       out.coefficient_[j] = zero ? 0.0L : -sum / factorial;
@@ -276,13 +285,17 @@ class euler_maclaurin_prediction {
   }
 
  private:
-  // G⁽ᵏ⁾(1) − G⁽ᵏ⁾(0) vanishes: within 1e-10 of the end values (the closed forms of
-  // functions/endpoint_derivatives.hpp give structural zeros exactly; this absorbs the rounding of
-  // two equal non-zero values).
+  // G⁽ᵏ⁾(1) − G⁽ᵏ⁾(0) vanishes: within 1e-10 of the end values of orders k − 1, k and k + 1 (the
+  // closed forms of functions/endpoint_derivatives.hpp give structural zeros exactly; this absorbs
+  // the rounding of two equal values, and of a zero computed as a tiny number, e.g. f‴(1) of
+  // e^{sin 2πx} with sin 2π ≈ −2.4e-16, judged by the size of its neighbours).
   static bool vanishes(const endpoint_factor& g, int k) {
-    const std::complex<double> a = g.at_lower[static_cast<std::size_t>(k)];
-    const std::complex<double> b = g.at_upper[static_cast<std::size_t>(k)];
-    return std::abs(b - a) <= 1e-10 * std::max(std::abs(a), std::abs(b));
+    const auto at = static_cast<std::size_t>(k);
+    double scale = 0.0;
+    for (std::size_t m = at == 0 ? 0 : at - 1; m <= at + 1 && m < g.at_lower.size(); ++m) {
+      scale = std::max({scale, std::abs(g.at_lower[m]), std::abs(g.at_upper[m])});
+    }
+    return std::abs(g.at_upper[at] - g.at_lower[at]) <= 1e-10 * scale;
   }
   static bool has_jump(const endpoint_factor& g, int k) {
     for (const derivative_jump& kink : g.kinks) {
