@@ -264,7 +264,9 @@ TEST(TensorRuleMethods, SimpsonOnInverseQuadraticIsSuperconvergent) {
   EXPECT_GE(t.predicted_points, 3u);
   EXPECT_NEAR(t.worst_prediction_ratio, 1.0, 0.01);
   for (const convergence_row& row : t.rows) {
-    if (row.prediction_judged) EXPECT_NEAR(row.prediction_ratio, 1.0, 0.01) << "n = " << row.n;
+    if (row.prediction_judged) {
+      EXPECT_NEAR(row.prediction_ratio, 1.0, 0.01) << "n = " << row.n;
+    }
   }
 }
 
