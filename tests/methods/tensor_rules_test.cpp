@@ -253,9 +253,11 @@ struct periodic_exp_sin {
 // Simpson on 1/(1 + x²): f‴(0) = f‴(1) = 0 removes the H⁴ term, so the error is O(H⁶) = N⁻⁶
 // (docs/theory.md#euler-maclaurin-expansion). The class rate −4 would read the fitted slope as
 // steeper; with the prediction it is superconvergent, judged against −6, and every judged point
-// is within 1% of its predicted error (the series' third term is < 1% there).
+// is within 1% of its predicted error (the series' third term is < 1% there). The ladder starts
+// at n = 8: at n = 4 the poles at ±i add a term of order e^(−2π/H) (H = 1/2: 3.5e-6, the size of
+// the error itself) that no end-point term shows.
 TEST(TensorRuleMethods, SimpsonOnInverseQuadraticIsSuperconvergent) {
-  const convergence_table t = analysed("simpson", "inverse_quadratic", {2, 4, 8, 16, 32, 64});
+  const convergence_table t = analysed("simpson", "inverse_quadratic", {8, 16, 32, 64, 128});
   EXPECT_EQ(t.verdict, slope_verdict::superconvergent) << t.verdict_reason;
   ASSERT_TRUE(t.theory.slope.has_value());
   EXPECT_EQ(*t.theory.slope, -6.0);
@@ -293,14 +295,21 @@ TEST(TensorRuleMethods, PeriodicIntegrandConvergesExponentially) {
       << t.verdict_reason;
 }
 
-// The trapezoid rule on eˣ keeps its class rate: nothing vanishes, the prediction confirms −2
-// within 10% at every judged point and the verdict stays agrees.
-TEST(TensorRuleMethods, NothingVanishesOnExpSoTheClassRateStands) {
+// The trapezoid rule on eˣ from n = 1: the h⁴ term still matters on the first cells, so the
+// whole-ladder slope is steeper than −2 by more than 10%; the prediction matches every cell, its
+// local slope is within 10% of −2 from N = 9 (n = 8) on, and the slope fitted from there agrees:
+// pre_asymptotic, not a finding.
+TEST(TensorRuleMethods, CoarseStartOfTheLadderIsPreAsymptotic) {
   const convergence_table t = analysed("trapezoid", "exp", {1, 2, 4, 8, 16, 32, 64});
-  EXPECT_EQ(t.verdict, slope_verdict::agrees) << t.verdict_reason;
+  EXPECT_EQ(t.verdict, slope_verdict::pre_asymptotic) << t.verdict_reason;
   EXPECT_EQ(t.theory.slope.value_or(0.0), -2.0);
   EXPECT_GE(t.predicted_points, 3u);
-  EXPECT_NEAR(t.worst_prediction_ratio, 1.0, 0.1);
+  EXPECT_NEAR(t.worst_prediction_ratio, 1.0, 0.01);
+  ASSERT_TRUE(t.asymptotic_from.has_value());
+  EXPECT_EQ(*t.asymptotic_from, 9u);
+  ASSERT_TRUE(t.asymptotic_fit.ok());
+  EXPECT_EQ(judge_slope(t.asymptotic_fit, -2.0, 0.1), slope_verdict::agrees);
+  EXPECT_EQ(judge_slope(t.fit, -2.0, 0.1), slope_verdict::steeper) << "the whole ladder";
 }
 
 }  // namespace
