@@ -17,7 +17,10 @@ keep the two in step):
                                        guide shows the rate, not a bound); for a series with an
                                        error envelope (convergence.csv's `envelope`: a rule on a
                                        jump, judged within_envelope / above_envelope) the
-                                       envelope itself, dotted, instead of the guide.
+                                       envelope itself, dotted, instead of the guide; where a
+                                       rule's Euler–Maclaurin expansion predicts its error
+                                       (convergence.csv's `predicted_error`) the predicted curve,
+                                       dash-dotted, beside the guide.
   work_precision_<name>.svg            RMSE against seconds per estimate (seconds/repetitions).
 Output is deterministic (fixed svg.hashsalt, no date in the metadata), so regenerating the plots
 of unchanged data does not churn git.
@@ -85,6 +88,7 @@ def load(folder):
             "seconds": number(row["seconds"]) / repetitions,
             "floor": row.get("floor", "0") == "1",
             "envelope": number(row.get("envelope")),  # absent in older folders: NaN
+            "predicted": number(row.get("predicted_error")),  # absent or empty: NaN
         })
     for methods in groups.values():
         for points in methods.values():
@@ -118,7 +122,8 @@ def draw(ax, x_of, points, color, name):
     return clean
 
 
-def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=False):
+def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=False,
+           predicted_seen=False):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(xlabel)
@@ -135,6 +140,9 @@ def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=
     if envelope_seen:
         handles.append(plt.Line2D([], [], color="gray", linestyle=":"))
         labels.append("error envelope (a-priori bound)")
+    if predicted_seen:
+        handles.append(plt.Line2D([], [], color="gray", linestyle="-."))
+        labels.append("Euler–Maclaurin prediction")
     ax.legend(handles, labels, fontsize=7, loc="best")
     fig.tight_layout()
     fig.savefig(path, format="svg", metadata={"Date": None})
@@ -148,7 +156,7 @@ def plot_folder(folder):
     for (integrand, s), methods in groups.items():
         fig, ax = plt.subplots()
         wfig, wax = plt.subplots()
-        floor_seen = theory_seen = envelope_seen = False
+        floor_seen = theory_seen = envelope_seen = predicted_seen = False
         for k, (method, points) in enumerate(methods.items()):
             color = colors[k % len(colors)]
             fit = slopes.get((integrand, s, method), (math.nan, math.nan))
@@ -171,9 +179,17 @@ def plot_folder(folder):
                 ax.plot([n0, n1], [e0, e0 * (n1 / n0) ** theory], "--", color=color,
                         linewidth=0.9, alpha=0.7)
                 theory_seen = True
+            predicted = [p for p in points if p["predicted"] > 0]  # NaN compares false
+            if predicted:
+                # The predicted error of every cell where the expansion is predictive, floor
+                # cells included: below the floor it shows what rounding hides.
+                ax.plot([p["n"] for p in predicted], [p["predicted"] for p in predicted], "-.",
+                        color=color, linewidth=0.9, alpha=0.8)
+                predicted_seen = True
         error_file, work_precision_file = plot_files(integrand, s)
         finish(fig, ax, f"{folder}/{error_file}", "N (integrand evaluations per estimate)",
-               f"{integrand}, s = {s}: error against N", floor_seen, theory_seen, envelope_seen)
+               f"{integrand}, s = {s}: error against N", floor_seen, theory_seen, envelope_seen,
+               predicted_seen)
         finish(wfig, wax, f"{folder}/{work_precision_file}", "seconds per estimate",
                f"{integrand}, s = {s}: work-precision", floor_seen, False)
         written += [error_file, work_precision_file]

@@ -131,7 +131,15 @@ TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
   series.cells.resize(2);  // N = 2^28 and 2^27: both at the floor, nothing to fit
   const convergence_table table = analyse_convergence(series);
   EXPECT_EQ(table.fit.status, fit_status::too_few_points);
-  EXPECT_EQ(table.verdict, slope_verdict::no_fit);
+  // The floor, not the ladder's length, stopped the fit: the verdict names it.
+  EXPECT_EQ(table.verdict, slope_verdict::at_floor) << table.verdict_reason;
+  EXPECT_NE(table.verdict_reason.find("rounding floor"), std::string::npos);
+  // Two clean points above any floor: too few to fit, and nothing else to blame.
+  convergence_series two = midpoint_series();
+  two.cells.erase(two.cells.begin(), two.cells.end() - 2);
+  const convergence_table short_ladder = analyse_convergence(two);
+  ASSERT_FALSE(short_ladder.floor.reached());
+  EXPECT_EQ(short_ladder.verdict, slope_verdict::no_fit) << short_ladder.verdict_reason;
 }
 
 // A step at c = 1/2 + 1/4 + 1/8 + 1/16 + 2⁻²⁰ under the midpoint rule on n = 2⁴ … 2¹⁶ panels

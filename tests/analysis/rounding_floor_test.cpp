@@ -202,6 +202,38 @@ TEST(RoundingFloor, APerPointScaleRaisesTheLevelWhereARuleAmplifiesRounding) {
                invalid_argument);
 }
 
+// The level of a series' rounding model: max(ε_f, σ(N)) with ε_f the evaluation format's epsilon
+// and σ(N) the accumulator's term. Double evaluation with the pairwise sum is the default level.
+TEST(RoundingFloor, RoundingLevelKnowsThePrecisionAndTheAccumulator) {
+  const double n = std::ldexp(1.0, 20);
+  const rounding_model pairwise{evaluation_precision::double_precision, summation::pairwise};
+  EXPECT_EQ(rounding_level(n, 3.0, pairwise), rounding_level(n, 3.0));
+  const double eps_f = std::numeric_limits<float>::epsilon();
+  const rounding_model in_float{evaluation_precision::single_precision, summation::pairwise};
+  EXPECT_DOUBLE_EQ(rounding_level(n, 3.0, in_float), 2.0 * eps_f * 3.0);
+  const rounding_model naive{evaluation_precision::double_precision, summation::naive};
+  EXPECT_DOUBLE_EQ(rounding_level(n, 3.0, naive), 2.0 * eps * 3.0 * 1024.0) << "ε·√N";
+  const rounding_model compensated{evaluation_precision::double_precision, summation::neumaier};
+  EXPECT_DOUBLE_EQ(rounding_level(n, 3.0, compensated), 2.0 * eps * 3.0);
+  EXPECT_EQ(in_float.describe(), "float evaluation, pairwise sum");
+}
+
+// A ladder that flattens at 1e-9·|I| (float values averaged over the nodes) is at the floor for
+// float evaluation (ℓ = 2ε_f ≈ 2.4e-7) and a clean ladder for double's level (≈ 1e-14): the
+// double detector would fit the flat part.
+TEST(RoundingFloor, FloatEvaluationHasAFloatFloor) {
+  const std::vector<double> n = doubling_ladder(1, 12);
+  std::vector<double> error;
+  for (const double x : n)
+    error.push_back(0.1 / (x * x * x * x) + 1e-9 * (1.0 + 0.3 * std::sin(x)));
+  const rounding_model in_float{evaluation_precision::single_precision, summation::pairwise};
+  const rounding_floor f = detect_rounding_floor(n, error, 1.0, in_float);
+  ASSERT_TRUE(f.reached());
+  // 0.1/N⁴ falls below 2ε_f ≈ 2.4e-7 at N ≈ 25, so N = 32 is the first point at the floor.
+  EXPECT_EQ(n[*f.first], 32.0);
+  EXPECT_FALSE(detect_rounding_floor(n, error, 1.0).reached());
+}
+
 TEST(RoundingFloor, RejectsBadLadders) {
   const std::vector<double> e = {1e-2, 1e-3, 1e-4};
   EXPECT_THROW(detect_rounding_floor(std::vector<double>{1.0, 4.0, 2.0}, e, 1.0), invalid_argument);

@@ -49,14 +49,19 @@ TEST(SlopeVerdict, NoFitAndNoTheory) {
 }
 
 TEST(SlopeVerdict, StringsRoundTrip) {
-  for (slope_verdict v : {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
-                          slope_verdict::no_theory, slope_verdict::no_fit,
-                          slope_verdict::within_envelope, slope_verdict::above_envelope}) {
+  for (slope_verdict v :
+       {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
+        slope_verdict::no_theory, slope_verdict::no_fit, slope_verdict::within_envelope,
+        slope_verdict::above_envelope, slope_verdict::superconvergent,
+        slope_verdict::pre_asymptotic, slope_verdict::at_floor}) {
     EXPECT_EQ(parse_slope_verdict(to_string(v)), v) << to_string(v);
   }
   // The strings slopes.csv carries (results_csv.hpp's contract): fixed, not just round-tripping.
   EXPECT_STREQ(to_string(slope_verdict::within_envelope), "within_envelope");
   EXPECT_STREQ(to_string(slope_verdict::above_envelope), "above_envelope");
+  EXPECT_STREQ(to_string(slope_verdict::superconvergent), "superconvergent");
+  EXPECT_STREQ(to_string(slope_verdict::pre_asymptotic), "pre_asymptotic");
+  EXPECT_STREQ(to_string(slope_verdict::at_floor), "at_floor");
   EXPECT_THROW(parse_slope_verdict("agree"), invalid_argument);
   EXPECT_THROW(parse_slope_verdict("within"), invalid_argument);
 }

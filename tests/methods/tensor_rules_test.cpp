@@ -1,7 +1,9 @@
 // Tests of the tensor-rule methods (lib/src/methods/tensor_rules.cpp): the exact N → grid mapping,
 // explicit panels, the options' checks, and that a method runs its rule.
+#include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/integer_powers.hpp"
+#include "quadmc/functions/endpoint_derivatives.hpp"
 #include "quadmc/methods/registry.hpp"
 #include "quadmc/rules/gauss_legendre_rule.hpp"
 #include "quadmc/rules/midpoint_rule.hpp"
@@ -12,6 +14,12 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/differentiation/autodiff.hpp>
+#include <boost/math/special_functions/bessel.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -179,6 +187,129 @@ TEST(TensorRuleMethods, RunIsTheRulesIntegrate) {
   EXPECT_EQ(r.evaluations, direct.evaluations);
   EXPECT_TRUE(std::isnan(r.std_error)) << "a rule has no sampling error";
   EXPECT_TRUE(std::isnan(r.error_estimate));
+}
+
+// A rule's series on one integrand as the runner assembles it (scene/run.cpp): the method's
+// theory, rounding model and error prediction beside cells run at n panels each.
+convergence_table analysed(std::string_view method_name, const any_integrand& f,
+                           const std::vector<std::uint64_t>& panels) {
+  const integrand_params params;
+  const integrand_info& info = f.info();
+  const auto m = make_method(method_name, {});
+  convergence_series series;
+  series.integrand = info.name;
+  series.s = 1;
+  series.method = std::string(method_name);
+  series.regularity = info.regularity;
+  series.reference = info.exact;
+  series.theory = m->theory(integrand_class{info.regularity, 1, info.singularity_exponent});
+  series.rounding = rounding_model{info.precision, m->summation_scheme()};
+  series.prediction = m->predict_error(info);
+  for (const std::uint64_t n : panels) {
+    const std::uint64_t points = method_name == "midpoint" ? n : n + 1;
+    const cell_size size = grid(method_name, points, 1);
+    EXPECT_EQ(size.per_axis, n);
+    const method_cell cell{f, params, size, cell_control::fixed_size, 0.0, 0};
+    convergence_cell c;
+    c.n = points;
+    c.per_axis = n;
+    c.repetitions = {m->run(cell, {0, 1})};
+    series.cells.push_back(std::move(c));
+  }
+  return analyse_convergence(series, {});
+}
+
+convergence_table analysed(std::string_view method_name, std::string_view integrand,
+                           const std::vector<std::uint64_t>& panels) {
+  return analysed(method_name, make_integrand(integrand, integrand_params{}), panels);
+}
+
+// e^{sin 2πx} on [0, 1], periodic with all its derivatives; its end-point data from Boost.Math's
+// automatic differentiation (no family of the catalogue is periodic).
+struct periodic_exp_sin {
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
+    for (std::size_t i = 0; i < y.size(); ++i)
+      y[i] = std::exp(std::sin(2.0 * std::numbers::pi * x[i]));
+  }
+  integrand_info info() const {
+    using boost::math::differentiation::make_fvar;
+    const auto derivatives = [](double x) {
+      const auto v = make_fvar<double, endpoint_derivative_count - 1>(x);
+      const auto y = exp(sin(2.0 * std::numbers::pi * v));
+      return [y](std::size_t k) { return static_cast<double>(y.derivative(k)); };
+    };
+    integrand_info out;
+    out.name = "exp_sin_2pi";
+    out.domain = box{{0.0}, {1.0}};
+    out.exact = boost::math::cyl_bessel_i(0, 1.0);  // ∫₀¹ e^{sin 2πx} dx = I₀(1)
+    out.regularity = smoothness::analytic;
+    out.endpoint_derivatives = endpoint::product_of(
+        1.0, {endpoint::factor_of(derivatives(0.0), derivatives(1.0), 0.0, 1.0, out.exact)});
+    return out;
+  }
+};
+
+// Simpson on 1/(1 + x²): f‴(0) = f‴(1) = 0 removes the H⁴ term, so the error is O(H⁶) = N⁻⁶
+// (docs/theory.md#euler-maclaurin-expansion). The class rate −4 would read the fitted slope as
+// steeper; with the prediction it is superconvergent, judged against −6, and every judged point
+// is within 1% of its predicted error (the series' third term is < 1% there). The ladder starts
+// at n = 8: at n = 4 the poles at ±i add a term of order e^(−2π/H) (H = 1/2: 3.5e-6, the size of
+// the error itself) that no end-point term shows.
+TEST(TensorRuleMethods, SimpsonOnInverseQuadraticIsSuperconvergent) {
+  const convergence_table t = analysed("simpson", "inverse_quadratic", {8, 16, 32, 64, 128});
+  EXPECT_EQ(t.verdict, slope_verdict::superconvergent) << t.verdict_reason;
+  ASSERT_TRUE(t.theory.slope.has_value());
+  EXPECT_EQ(*t.theory.slope, -6.0);
+  EXPECT_EQ(t.class_theory.slope.value_or(0.0), -4.0);
+  EXPECT_NE(t.verdict_reason.find("f⁽³⁾(1) − f⁽³⁾(0) = 0"), std::string::npos) << t.verdict_reason;
+  EXPECT_GE(t.predicted_points, 3u);
+  EXPECT_NEAR(t.worst_prediction_ratio, 1.0, 0.01);
+  for (const convergence_row& row : t.rows) {
+    if (row.prediction_judged) {
+      EXPECT_NEAR(row.prediction_ratio, 1.0, 0.01) << "n = " << row.n;
+    }
+  }
+}
+
+// eˣ evaluated in float: every value carries float's rounding (ε_f = 2⁻²³), so the errors stop
+// falling near ε_f·|I| ≈ 2e-7, nine decades above double's floor. A double-ε detector fits the
+// flattening points and reads "shallower"; the float floor stops the fit after two points.
+TEST(TensorRuleMethods, FloatEvaluationReachesTheFloatFloor) {
+  const convergence_table t =
+      analysed("simpson", "exp_float", {2, 4, 16, 64, 256, 1024, 4096, 16384});
+  EXPECT_EQ(t.verdict, slope_verdict::at_floor) << t.verdict_reason;
+  EXPECT_TRUE(t.floor.reached());
+  EXPECT_NE(t.verdict_reason.find("float evaluation"), std::string::npos) << t.verdict_reason;
+}
+
+// The trapezoid rule on e^{sin 2πx}: every end-point term vanishes, so the verdict names
+// exponential convergence instead of comparing a slope with the class rate −2 (which it would
+// read as steeper) [Trefethen & Weideman 2014, Thm 3.2].
+TEST(TensorRuleMethods, PeriodicIntegrandConvergesExponentially) {
+  const convergence_table t =
+      analysed("trapezoid", any_integrand(periodic_exp_sin{}), {1, 2, 4, 8, 16, 32});
+  EXPECT_EQ(t.verdict, slope_verdict::superconvergent) << t.verdict_reason;
+  EXPECT_FALSE(t.theory.slope.has_value()) << "no finite slope";
+  EXPECT_NE(t.verdict_reason.find("exponential convergence"), std::string::npos)
+      << t.verdict_reason;
+}
+
+// The trapezoid rule on eˣ from n = 1: the h⁴ term still matters on the first cells, so the
+// whole-ladder slope is steeper than −2 by more than 10%; the prediction matches every cell, its
+// local slope is within 10% of −2 from N = 9 (n = 8) on, and the slope fitted from there agrees:
+// pre_asymptotic, not a finding.
+TEST(TensorRuleMethods, CoarseStartOfTheLadderIsPreAsymptotic) {
+  const convergence_table t = analysed("trapezoid", "exp", {1, 2, 4, 8, 16, 32, 64});
+  EXPECT_EQ(t.verdict, slope_verdict::pre_asymptotic) << t.verdict_reason;
+  EXPECT_EQ(t.theory.slope.value_or(0.0), -2.0);
+  EXPECT_GE(t.predicted_points, 3u);
+  EXPECT_NEAR(t.worst_prediction_ratio, 1.0, 0.01);
+  ASSERT_TRUE(t.asymptotic_from.has_value());
+  EXPECT_EQ(*t.asymptotic_from, 9u);
+  ASSERT_TRUE(t.asymptotic_fit.ok());
+  EXPECT_EQ(judge_slope(t.asymptotic_fit, -2.0, 0.1), slope_verdict::agrees);
+  EXPECT_EQ(judge_slope(t.fit, -2.0, 0.1), slope_verdict::steeper) << "the whole ladder";
 }
 
 }  // namespace

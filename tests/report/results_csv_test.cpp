@@ -75,11 +75,13 @@ TEST(ResultsCsv, ExactHeaderLines) {
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
             "smoothness,envelope,tolerance,error_estimate,estimate_covers,estimate_covers_3x,"
             "chi2_per_dof,q_value,replicate_std_error,l2_star_discrepancy,centered_discrepancy,"
-            "wraparound_discrepancy");
+            "wraparound_discrepancy,predicted_error,prediction_ratio,local_slope,rounding_level");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
-            "floor_points,smoothness,fit_status,attainable_accuracy,theory_note,envelope_ratio");
+            "floor_points,smoothness,fit_status,attainable_accuracy,theory_note,envelope_ratio,"
+            "verdict_reason,class_theory,asymptotic_from_n,asymptotic_slope,predicted_points,"
+            "worst_prediction_ratio,rounding_model");
 }
 
 TEST(ResultsCsv, DeterministicRowHasEmptyCoverageAndFullReference) {

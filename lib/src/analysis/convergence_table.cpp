@@ -1,5 +1,5 @@
-// analyse_convergence: cell statistics → floor → fit → theory → verdict (slope or envelope) →
-// work-precision.
+// analyse_convergence: cell statistics → floor → fit → prediction → theory → verdict (slope or
+// envelope) and its reason → work-precision.
 #include "quadmc/analysis/convergence_table.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -9,6 +9,262 @@
 #include <exception>
 
 namespace quadmc {
+namespace {
+
+std::string slope_text(const power_law_fit& fit) {
+  return fit.ok() ? fmt::format("{:.3f} [{:.3f}, {:.3f}]", fit.slope, fit.ci_low, fit.ci_high)
+                  : std::string("no fit");
+}
+
+std::string rate_text(std::optional<double> slope) {
+  return slope ? fmt::format("{:.3g}", *slope) : std::string("none");
+}
+
+// What the prediction said about the measured cells.
+struct prediction_check {
+  std::size_t valid = 0;   // cells with a valid prediction
+  std::size_t judged = 0;  // of them, judged (not floor, above the rounding margin)
+  bool agrees = true;      // every judged cell within the tolerance
+  double worst = std::numeric_limits<double>::quiet_NaN();  // judged ratio farthest from 1
+  std::uint64_t worst_n = 0;                                // its evaluations
+  bool confirmed() const noexcept { return judged > 0 && agrees; }
+};
+
+// d log|P|/d log N between n and 2n panels per axis; nullopt where P(n) is not valid or either
+// value is 0 or the grid overflows.
+std::optional<double> predicted_local_slope(const error_prediction& p, std::uint64_t n,
+                                            double validity) {
+  if (n > (std::uint64_t{1} << 62)) return std::nullopt;
+  const predicted_cell here = p.at(n);
+  const predicted_cell next = p.at(2 * n);
+  if (!(here.next_change <= validity) || here.evaluations == 0 || next.evaluations == 0 ||
+      next.evaluations <= here.evaluations || here.error == 0.0 || next.error == 0.0 ||
+      !std::isfinite(here.error) || !std::isfinite(next.error)) {
+    return std::nullopt;
+  }
+  return std::log(std::abs(next.error) / std::abs(here.error)) /
+         std::log(static_cast<double>(next.evaluations) / static_cast<double>(here.evaluations));
+}
+
+// Fills each row's predicted error and ratio, and says what they add up to.
+prediction_check check_prediction(convergence_table& table, const error_prediction& prediction,
+                                  const analysis_options& options, const std::string& where) {
+  prediction_check check;
+  if (!prediction.at) return check;
+  for (convergence_row& row : table.rows) {
+    if (row.per_axis == 0) continue;
+    const predicted_cell p = prediction.at(row.per_axis);
+    require(p.evaluations == row.stats.evaluations, "predicted evaluations", p.evaluations,
+            fmt::format("the cell's own {} evaluations (n = {} per axis, {})",
+                        row.stats.evaluations, row.per_axis, where));
+    if (!(p.next_change <= options.prediction_validity) || !std::isfinite(p.error) ||
+        p.error == 0.0) {
+      continue;
+    }
+    ++check.valid;
+    row.predicted_error = std::abs(p.error);
+    const double measured =
+        row.stats.repetitions == 1 ? row.stats.estimate_mean - table.reference : row.stats.rmse;
+    row.prediction_ratio =
+        row.stats.repetitions == 1 ? measured / p.error : measured / std::abs(p.error);
+    row.prediction_judged =
+        !row.floor && row.stats.rmse > options.prediction_rounding_margin * row.rounding_level;
+    if (!row.prediction_judged) continue;
+    ++check.judged;
+    const double off = std::abs(row.prediction_ratio - 1.0);
+    if (std::isnan(check.worst) || off > std::abs(check.worst - 1.0)) {
+      check.worst = row.prediction_ratio;
+      check.worst_n = row.stats.evaluations;
+    }
+    check.agrees = check.agrees && off <= options.prediction_tolerance;
+  }
+  return check;
+}
+
+// The evaluations from which the predicted local slope stays within the verdict tolerance of
+// `theory`: the first row from which every later row with a prediction is so, else the first
+// doubling of the last row's n beyond the ladder that is (nullopt when none below 2^63).
+std::optional<std::uint64_t> asymptotic_start(const convergence_table& table,
+                                              const error_prediction& prediction, double theory,
+                                              const analysis_options& options) {
+  const auto asymptotic = [&](std::uint64_t n) {
+    const std::optional<double> local =
+        predicted_local_slope(prediction, n, options.prediction_validity);
+    return local && std::abs(*local - theory) <= options.verdict_tolerance * std::abs(theory);
+  };
+  std::optional<std::size_t> start;
+  std::uint64_t last_n = 0;
+  for (std::size_t k = 0; k < table.rows.size(); ++k) {
+    const convergence_row& row = table.rows[k];
+    if (row.per_axis == 0) continue;
+    last_n = row.per_axis;
+    if (asymptotic(row.per_axis)) {
+      if (!start) start = k;
+    } else {
+      start.reset();
+    }
+  }
+  if (start) return table.rows[*start].stats.evaluations;
+  for (std::uint64_t n = last_n; n > 0 && n <= (std::uint64_t{1} << 61);) {
+    n *= 2;
+    if (asymptotic(n)) return prediction.at(n).evaluations;
+  }
+  return std::nullopt;
+}
+
+// The slope verdict and its reason, with the prediction where one is confirmed.
+void judge_series(convergence_table& table, const convergence_series& series,
+                  const analysis_options& options, const std::vector<double>& fit_n,
+                  const std::vector<double>& fit_error) {
+  const std::string where =
+      fmt::format("{} / s = {} / {}", series.integrand, series.s, series.method);
+  const std::optional<double> class_slope = series.theory.slope;
+  const std::size_t clean = fit_n.size();
+  const bool floor_limited = table.floor.reached() && clean < 3;
+  const std::string floor_text =
+      table.floor.reached() ? fmt::format("the rounding floor of {} from N = {} (ℓ = {:.2g} there)",
+                                          series.rounding.describe(),
+                                          table.rows[*table.floor.first].stats.evaluations,
+                                          table.rows[*table.floor.first].rounding_level)
+                            : std::string();
+
+  prediction_check check;
+  const error_prediction* prediction = series.prediction ? &*series.prediction : nullptr;
+  if (prediction) check = check_prediction(table, *prediction, options, where);
+  table.predicted_points = check.judged;
+  table.worst_prediction_ratio = check.worst;
+  const std::string checked =
+      check.judged > 0 ? fmt::format(
+                             "Euler–Maclaurin prediction within {:.2g}% at {} point{} (worst "
+                             "measured/predicted {:.4f} at N = {})",
+                             100.0 * std::abs(check.worst - 1.0), check.judged,
+                             check.judged == 1 ? "" : "s", check.worst, check.worst_n)
+                       : std::string();
+
+  // Every term of the expansion vanishes: exponential convergence, judged by being faster than
+  // the class rate (or reaching the floor before three points).
+  if (prediction && !prediction->leading_slope) {
+    // The point estimate, not the interval: a power law is the wrong model for e^(−cN), so its
+    // interval is wide by construction (a bending log-log curve leaves large residuals).
+    const bool fast = table.fit.ok() && class_slope &&
+                      table.fit.slope < *class_slope * (1.0 + options.verdict_tolerance);
+    if (fast || floor_limited) {
+      table.theory = {std::nullopt, prediction->note, prediction->source};
+      table.verdict = slope_verdict::superconvergent;
+      table.verdict_reason = fmt::format(
+          "{}: exponential convergence, no finite slope ({})", prediction->note,
+          fast ? fmt::format("the fitted {:.3g} is far steeper than the class rate {}",
+                             table.fit.slope, rate_text(class_slope))
+               : fmt::format("{} point{} before {}", clean, clean == 1 ? "" : "s", floor_text));
+      return;
+    }
+  }
+
+  // The rate to judge against: the first non-vanishing term's once the data confirm it.
+  const bool superconvergent = prediction && check.confirmed() && prediction->superconvergent &&
+                               prediction->leading_slope.has_value();
+  if (superconvergent) {
+    table.theory = {prediction->leading_slope, prediction->note, prediction->source};
+  }
+  const std::optional<double> theory = table.theory.slope;
+  if (prediction && check.confirmed() && theory) {
+    table.asymptotic_from = asymptotic_start(table, *prediction, *theory, options);
+    std::vector<double> n, e;
+    for (std::size_t k = 0; k < fit_n.size(); ++k) {
+      if (table.asymptotic_from && fit_n[k] >= static_cast<double>(*table.asymptotic_from)) {
+        n.push_back(fit_n[k]);
+        e.push_back(fit_error[k]);
+      }
+    }
+    table.asymptotic_fit = fit_power_law(n, e, options.confidence);
+  }
+  const std::uint64_t last_evaluations = table.rows.back().stats.evaluations;
+  const std::string from_text =
+      table.asymptotic_from
+          ? fmt::format("from N = {}{}", *table.asymptotic_from,
+                        *table.asymptotic_from > last_evaluations ? " (beyond the ladder)" : "")
+          : std::string("not below N = 2^63");
+  const std::string asymptotic_text =
+      table.asymptotic_fit.ok()
+          ? fmt::format("slope fitted from there {}", slope_text(table.asymptotic_fit))
+          : std::string("fewer than three points from there");
+
+  if (!table.fit.ok()) {
+    if (superconvergent) {
+      table.verdict = slope_verdict::superconvergent;
+      table.verdict_reason =
+          fmt::format("{}; {}; no slope fitted ({} points)", prediction->note, checked, clean);
+    } else if (floor_limited) {
+      table.verdict = slope_verdict::at_floor;
+      table.verdict_reason =
+          fmt::format("{} point{} before {}: too few to fit a slope{}", clean,
+                      clean == 1 ? "" : "s", floor_text, checked.empty() ? "" : "; " + checked);
+    } else if (prediction && check.confirmed() && theory &&
+               (!table.asymptotic_from || *table.asymptotic_from > last_evaluations)) {
+      table.verdict = slope_verdict::pre_asymptotic;
+      table.verdict_reason = fmt::format(
+          "{}; the predicted local slope reaches {} ± {:.0f}% {}; no slope fitted ({} "
+          "points)",
+          checked, rate_text(theory), 100.0 * options.verdict_tolerance, from_text, clean);
+    } else {
+      table.verdict = slope_verdict::no_fit;
+      table.verdict_reason = fmt::format("fewer than three usable points ({}){}", clean,
+                                         checked.empty() ? "" : "; " + checked);
+    }
+    return;
+  }
+  if (!theory) {
+    table.verdict = slope_verdict::no_theory;
+    table.verdict_reason = "no finite slope predicted: " + table.theory.note;
+    return;
+  }
+  const slope_verdict slope = judge_slope(table.fit, theory, options.verdict_tolerance);
+  if (slope == slope_verdict::agrees) {
+    table.verdict = superconvergent ? slope_verdict::superconvergent : slope_verdict::agrees;
+    table.verdict_reason =
+        superconvergent ? fmt::format("{}; {}; the slope agrees with {}", prediction->note, checked,
+                                      rate_text(theory))
+                        : fmt::format("slope within max(CI half-width, {:.0f}%·|theory|) of {}{}",
+                                      100.0 * options.verdict_tolerance, rate_text(theory),
+                                      checked.empty() ? "" : "; " + checked);
+    return;
+  }
+  const bool asymptotic_agrees =
+      !table.asymptotic_fit.ok() ||
+      judge_slope(table.asymptotic_fit, theory, options.verdict_tolerance) == slope_verdict::agrees;
+  if (prediction && check.confirmed() && asymptotic_agrees) {
+    table.verdict =
+        superconvergent ? slope_verdict::superconvergent : slope_verdict::pre_asymptotic;
+    table.verdict_reason = fmt::format(
+        "{}{}; the predicted local slope reaches {} ± {:.0f}% {}; {}: the whole-ladder slope {} "
+        "measures the cells before it",
+        superconvergent ? prediction->note + "; " : std::string(), checked, rate_text(theory),
+        100.0 * options.verdict_tolerance, from_text, asymptotic_text, slope_text(table.fit));
+    return;
+  }
+  table.verdict = slope;
+  std::string why;
+  if (!prediction) {
+    why = "no error prediction for this method and integrand";
+  } else if (!prediction->leading_slope) {
+    why = prediction->note + ", yet the ladder is not faster than the class rate";
+  } else if (check.judged == 0) {
+    why = fmt::format(
+        "the Euler–Maclaurin prediction is valid at {} point{} but judged at none "
+        "(floor or rounding)",
+        check.valid, check.valid == 1 ? "" : "s");
+  } else if (!check.agrees) {
+    why = fmt::format("the Euler–Maclaurin prediction is off: measured/predicted {:.4g} at N = {}",
+                      check.worst, check.worst_n);
+  } else {
+    why = fmt::format("{}, but the slope {} of the asymptotic part does not agree either", checked,
+                      asymptotic_text);
+  }
+  table.verdict_reason = fmt::format("finding, no computed reason: slope {} against theory {}; {}",
+                                     slope_text(table.fit), rate_text(theory), why);
+}
+
+}  // namespace
 
 convergence_table analyse_convergence(const convergence_series& series,
                                       const analysis_options& options) {
@@ -112,8 +368,11 @@ convergence_table analyse_convergence(const convergence_series& series,
           fmt::format("{} / s = {} / {}: {}", series.integrand, series.s, series.method, e.what()));
     }
   };
-  table.floor =
-      in_series([&] { return detect_rounding_floor(evaluations, errors, scales, options.floor); });
+  table.rounding = series.rounding;
+  table.class_theory = series.theory;
+  table.floor = in_series([&] {
+    return detect_rounding_floor(evaluations, errors, scales, series.rounding, options.floor);
+  });
 
   // A row shares the floor flag of the ladder point that spent its evaluations; the table's
   // floor is then stated per row, like everything else in it.
@@ -124,6 +383,12 @@ convergence_table analyse_convergence(const convergence_series& series,
     for (std::size_t k = ladder[p]; k < end; ++k) {
       table.rows[k].floor = table.floor.flags[p];
       row_flags[k] = table.floor.flags[p];
+      table.rows[k].rounding_level =
+          rounding_level(evaluations[p], scales[p], series.rounding, options.floor);
+    }
+    if (p > 0 && errors[p] > 0.0 && errors[p - 1] > 0.0) {
+      table.rows[ladder[p]].local_slope =
+          std::log(errors[p] / errors[p - 1]) / std::log(evaluations[p] / evaluations[p - 1]);
     }
     if (!table.floor.flags[p]) {
       fit_n.push_back(evaluations[p]);
@@ -141,17 +406,29 @@ convergence_table analyse_convergence(const convergence_series& series,
       const auto n = static_cast<double>(row.stats.evaluations);
       judged_error.push_back(error);
       const double w = row.stats.absolute_weight_sum;
-      allowed.push_back(
-          row.envelope +
-          rounding_level(n, scale * (std::isnan(w) ? 1.0 : std::max(1.0, w)), options.floor));
+      allowed.push_back(row.envelope +
+                        rounding_level(n, scale * (std::isnan(w) ? 1.0 : std::max(1.0, w)),
+                                       series.rounding, options.floor));
       const double ratio =
           row.envelope > 0.0 ? error / row.envelope : std::numeric_limits<double>::infinity();
       table.envelope_ratio =
           std::isnan(table.envelope_ratio) ? ratio : std::max(table.envelope_ratio, ratio);
     }
     table.verdict = judge_envelope(judged_error, allowed);
+    table.verdict_reason =
+        table.verdict == slope_verdict::within_envelope
+            ? fmt::format(
+                  "every non-floor point is under its a-priori error envelope (largest "
+                  "error/envelope {:.3g}); the slope of a jump ladder is not a rate",
+                  table.envelope_ratio)
+        : table.verdict == slope_verdict::above_envelope
+            ? fmt::format(
+                  "a point is above its a-priori error envelope (largest error/envelope "
+                  "{:.3g}): no discretisation explains that, a bug",
+                  table.envelope_ratio)
+            : std::string("no point to judge against the envelope");
   } else {
-    table.verdict = judge_slope(table.fit, table.theory.slope, options.verdict_tolerance);
+    judge_series(table, series, options, fit_n, fit_error);
   }
   table.work_precision =
       in_series([&] { return work_precision(seconds, errors, options.error_targets); });

@@ -8,20 +8,61 @@
 
 namespace quadmc {
 
-double rounding_level(double n, double scale, const rounding_floor_options& options) {
+double rounding_model::relative_level(double n) const noexcept {
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  return options.kappa * eps * scale * std::max(1.0, std::log2(n));
+  constexpr double eps_extended = std::numeric_limits<long double>::epsilon();
+  double sum = eps;
+  switch (accumulator) {
+    case summation::pairwise:
+      sum = eps * std::max(1.0, std::log2(n));
+      break;
+    case summation::neumaier:
+      sum = eps;
+      break;
+    case summation::naive:
+      sum = eps * std::max(1.0, std::sqrt(n));
+      break;
+    case summation::long_double:
+      sum = eps_extended * std::max(1.0, std::sqrt(n));
+      break;
+  }
+  return std::max(epsilon_of(precision), sum);
+}
+
+std::string rounding_model::describe() const {
+  return fmt::format("{} evaluation, {} sum", to_string(precision), to_string(accumulator));
+}
+
+double rounding_level(double n, double scale, const rounding_floor_options& options) {
+  return rounding_level(n, scale, rounding_model{}, options);
+}
+
+double rounding_level(double n, double scale, const rounding_model& model,
+                      const rounding_floor_options& options) {
+  return options.kappa * scale * model.relative_level(n);
 }
 
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      double scale, const rounding_floor_options& options) {
+  return detect_rounding_floor(n, error, scale, rounding_model{}, options);
+}
+
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     double scale, const rounding_model& model,
+                                     const rounding_floor_options& options) {
   require(std::isfinite(scale) && scale >= 0.0, "scale", scale, "finite and >= 0");
   const std::vector<double> scales(n.size(), scale);
-  return detect_rounding_floor(n, error, scales, options);
+  return detect_rounding_floor(n, error, scales, model, options);
 }
 
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      std::span<const double> scales,
+                                     const rounding_floor_options& options) {
+  return detect_rounding_floor(n, error, scales, rounding_model{}, options);
+}
+
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     std::span<const double> scales, const rounding_model& model,
                                      const rounding_floor_options& options) {
   require(n.size() == error.size(), "error.size()", error.size(),
           fmt::format("the size of n ({})", n.size()));
@@ -50,7 +91,7 @@ rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const 
   const std::size_t count = n.size();
   out.flags.assign(count, false);
   for (std::size_t k = 0; k < count && !out.first; ++k) {
-    const double level = rounding_level(n[k], scales[k], options);
+    const double level = rounding_level(n[k], scales[k], model, options);
     const bool at_floor = error[k] <= level;
     const std::size_t window_end = std::min(count, k + 1 + options.stall_window);
     const double next_best =

@@ -26,19 +26,27 @@ const char* to_string(slope_verdict verdict) noexcept {
       return "within_envelope";
     case slope_verdict::above_envelope:
       return "above_envelope";
+    case slope_verdict::superconvergent:
+      return "superconvergent";
+    case slope_verdict::pre_asymptotic:
+      return "pre_asymptotic";
+    case slope_verdict::at_floor:
+      return "at_floor";
   }
   return "?";
 }
 
 slope_verdict parse_slope_verdict(std::string_view text) {
-  for (slope_verdict v : {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
-                          slope_verdict::no_theory, slope_verdict::no_fit,
-                          slope_verdict::within_envelope, slope_verdict::above_envelope}) {
+  for (slope_verdict v :
+       {slope_verdict::agrees, slope_verdict::steeper, slope_verdict::shallower,
+        slope_verdict::no_theory, slope_verdict::no_fit, slope_verdict::within_envelope,
+        slope_verdict::above_envelope, slope_verdict::superconvergent,
+        slope_verdict::pre_asymptotic, slope_verdict::at_floor}) {
     if (text == to_string(v)) return v;
   }
-  throw invalid_argument(
-      "verdict", std::string(text),
-      "one of agrees, steeper, shallower, no_theory, no_fit, within_envelope, above_envelope");
+  throw invalid_argument("verdict", std::string(text),
+                         "one of agrees, steeper, shallower, no_theory, no_fit, within_envelope, "
+                         "above_envelope, superconvergent, pre_asymptotic, at_floor");
 }
 
 double verdict_band(const power_law_fit& fit, std::optional<double> theory,

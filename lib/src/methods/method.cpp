@@ -39,6 +39,10 @@ double method::error_envelope(const integrand_info&, const cell_size&) const {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::optional<error_prediction> method::predict_error(const integrand_info&) const {
+  return std::nullopt;
+}
+
 bool method_descriptor::supports(cell_control control) const noexcept {
   return std::find(controls.begin(), controls.end(), control) != controls.end();
 }

@@ -9,6 +9,7 @@
 #include "families.hpp"
 
 #include "quadmc/core/integer_powers.hpp"
+#include "quadmc/rules/euler_maclaurin.hpp"
 #include "quadmc/rules/gauss_legendre_rule.hpp"
 #include "quadmc/rules/jump_error_envelope.hpp"
 #include "quadmc/rules/midpoint_rule.hpp"
@@ -135,6 +136,38 @@ class tensor_rule_method final : public method {
     return jump_error_envelope(rule_, f, size.per_axis)
         .value_or(std::numeric_limits<double>::quiet_NaN());
   }
+
+  // The Euler–Maclaurin expansion of the rule on f's end-point data (rules/euler_maclaurin.hpp):
+  // the order of its first non-vanishing term, and the predicted error of every grid.
+  std::optional<error_prediction> predict_error(const integrand_info& f) const override {
+    auto expansion =
+        euler_maclaurin_prediction::make(euler_maclaurin_rule::of(rule_, layout_.smallest), f);
+    if (!expansion) return std::nullopt;
+    const std::size_t s = f.dimension();
+    const int lead = expansion->leading_order();
+    error_prediction out;
+    if (lead > 0) out.leading_slope = -static_cast<double>(lead) / static_cast<double>(s);
+    out.superconvergent = lead == 0 || lead > expansion->rule_order();
+    const std::string vanished = expansion->vanished();
+    out.note = lead == 0 ? vanished + "; every end-point term through H" +
+                               std::to_string(euler_maclaurin_orders) + " vanishes"
+                         : (vanished.empty() ? std::string() : vanished + "; ") + "leading term " +
+                               expansion->leading_term() +
+                               (s > 1 ? fmt::format(", N^({}/{}) in N", -lead, s) : "");
+    out.source = "docs/theory.md#euler-maclaurin-expansion; [Lyness & Ninham 1967]";
+    out.at = [expansion = std::move(*expansion), layout = layout_, s](std::uint64_t n) {
+      predicted_cell cell;
+      // Past 2^53 panels the count leaves the range the analysis holds exactly: no grid.
+      cell.evaluations = n <= max_panels ? checked_power(layout.points(n), s).value_or(0) : 0;
+      const euler_maclaurin_value v = expansion.at(n);
+      cell.error = v.error;
+      cell.next_change = v.next_change;
+      return cell;
+    };
+    return out;
+  }
+
+  summation summation_scheme() const override { return options_.accumulator; }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     const rule_result r =

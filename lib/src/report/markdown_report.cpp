@@ -79,23 +79,36 @@ void append_method_table(std::string& out, const convergence_table& t) {
                         t.rows[*t.floor.first].n, t.floor_points(), sci(t.floor.floor_level))
           : std::string("no rounding floor reached"),
       sci(t.floor.attainable_accuracy));
+  if (!t.verdict_reason.empty()) out += fmt::format("Why: {}.\n\n", cell(t.verdict_reason));
   // The method's own error estimate, where it has one (Monte Carlo's σ̂/√N, Romberg's last
   // difference): a column beside the true error, so a reader sees how far to trust it.
   const bool estimated = std::any_of(t.rows.begin(), t.rows.end(), [](const convergence_row& r) {
     return !std::isnan(r.stats.error_estimate);
   });
   const bool to_tolerance = !t.rows.empty() && !std::isnan(t.rows.front().tolerance);
+  // The Euler–Maclaurin prediction beside the measured error, where the rule has one.
+  const bool predicted = std::any_of(t.rows.begin(), t.rows.end(), [](const convergence_row& r) {
+    return !std::isnan(r.predicted_error);
+  });
   out += fmt::format(
-      "| {} | evaluations | {} |{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
+      "| {} | evaluations | {} |{}{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
       to_tolerance ? "tolerance" : "N", deterministic ? "\\|error\\|" : "RMSE",
-      estimated ? " error estimate |" : "", enveloped ? " envelope |" : "");
-  out += fmt::format("|---:|---:|---:|{}{}---:|---:|---:|---:|:---:|\n", estimated ? "---:|" : "",
+      predicted ? " predicted | measured/predicted |" : "", estimated ? " error estimate |" : "",
+      enveloped ? " envelope |" : "");
+  out += fmt::format("|---:|---:|---:|{}{}{}---:|---:|---:|---:|:---:|\n",
+                     predicted ? "---:|---:|" : "", estimated ? "---:|" : "",
                      enveloped ? "---:|" : "");
   for (const convergence_row& row : t.rows) {
     const cell_statistics& c = row.stats;
     out += fmt::format(
-        "| {} | {} | {} |{}{} {} | {} | {} | {} | {} |\n",
+        "| {} | {} | {} |{}{}{} {} | {} | {} | {} | {} |\n",
         to_tolerance ? sci(row.tolerance) : fmt::format("{}", row.n), c.evaluations, sci(c.rmse),
+        predicted ? fmt::format(" {} | {} |", sci(row.predicted_error),
+                                std::isnan(row.prediction_ratio)
+                                    ? std::string("—")
+                                    : fmt::format("{:.4f}{}", row.prediction_ratio,
+                                                  row.prediction_judged ? "" : " (not judged)"))
+                  : "",
         estimated ? fmt::format(" {} |", sci(c.error_estimate)) : "",
         enveloped ? fmt::format(" {} |", sci(row.envelope)) : "", sci(c.std_error_of_rmse),
         std::isnan(c.coverage_95) ? "—" : fmt::format("{:.2f}", c.coverage_95),
@@ -265,8 +278,15 @@ std::string render_results_markdown(const run_info& info,
       "a-priori error envelope instead, the jump term K·|J|·h plus the smooth part, since where "
       "the jump falls in its panel, not n alone, sets the error: *within_envelope* when every "
       "non-floor point is under it (the slope is shown beside it, not judged), *above_envelope* "
-      "when one is not — a bug, no discretisation explains it. Data: `convergence.csv`, "
-      "`slopes.csv`.\n\n";
+      "when one is not — a bug, no discretisation explains it. Where a rule's Euler–Maclaurin "
+      "expansion predicts its error (f with known end-point derivatives), the prediction stands "
+      "beside every cell and explains slopes the class rate does not: *superconvergent* (a "
+      "leading term vanishes; the theory column is the order of the first one that does not), "
+      "*pre_asymptotic* (the predicted curve matches the points, and its local slope reaches the "
+      "asymptotic one only from the N the reason gives); *at_floor* when the rounding floor of "
+      "the evaluation precision and the accumulator comes before three points could be fitted. "
+      "*steeper* and *shallower* remain only where no computed reason explains the slope: they "
+      "are findings, listed first. Data: `convergence.csv`, `slopes.csv`.\n\n";
   if (!info.skipped.empty()) {
     // Folded: a ladder in s = 8 skips dozens of repeated grids, and the list would push the
     // slope table off the first screen. GitHub renders <details> with Markdown inside.
@@ -277,13 +297,29 @@ std::string render_results_markdown(const run_info& info,
     out += "\n</details>\n\n";
   }
 
-  out += "## Slopes\n\n";
-  out += "| integrand | s | method | slope ± 95% CI | theory | verdict | points (floor) |\n";
-  out += "|---|---:|---|---:|---:|---|---:|\n";
+  // Findings first: a slope no computed reason explains, or a point above its bound.
+  out += "## Findings\n\n";
+  bool finding = false;
   for (const convergence_table& t : tables) {
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} ({}) |\n", cell(t.integrand), t.s,
-                       cell(t.method), slope_text(t.fit), theory_text(t.theory),
-                       to_string(t.verdict), t.points_used(), t.floor_points());
+    if (t.verdict != slope_verdict::steeper && t.verdict != slope_verdict::shallower &&
+        t.verdict != slope_verdict::above_envelope) {
+      continue;
+    }
+    finding = true;
+    out += fmt::format("- **{} (s = {}), {}**: {} — {}\n", cell(t.integrand), t.s, cell(t.method),
+                       to_string(t.verdict), cell(t.verdict_reason));
+  }
+  out += finding ? "\n"
+                 : "None: every verdict has a computed reason (the slope table's last column).\n\n";
+
+  out += "## Slopes\n\n";
+  out += "| integrand | s | method | slope ± 95% CI | theory | verdict | points (floor) | why |\n";
+  out += "|---|---:|---|---:|---:|---|---:|---|\n";
+  for (const convergence_table& t : tables) {
+    out +=
+        fmt::format("| {} | {} | {} | {} | {} | {} | {} ({}) | {} |\n", cell(t.integrand), t.s,
+                    cell(t.method), slope_text(t.fit), theory_text(t.theory), to_string(t.verdict),
+                    t.points_used(), t.floor_points(), cell(t.verdict_reason));
   }
   out += '\n';
 

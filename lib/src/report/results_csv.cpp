@@ -99,7 +99,11 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(c.replicate_std_error),
                                                number(c.l2_star_discrepancy),
                                                number(c.centered_discrepancy),
-                                               number(c.wraparound_discrepancy)};
+                                               number(c.wraparound_discrepancy),
+                                               number(row.predicted_error),
+                                               number(row.prediction_ratio),
+                                               number(row.local_slope),
+                                               number(row.rounding_level)};
       out += csv_line(fields);
     }
   }
@@ -110,22 +114,30 @@ std::string slopes_csv_text(std::string_view scene, std::span<const convergence_
   std::string out = csv_line(header_of(slopes_csv_columns, slopes_csv_added_columns));
   for (const convergence_table& t : tables) {
     const double theory = t.theory.slope.value_or(std::numeric_limits<double>::quiet_NaN());
-    const std::vector<std::string> fields = {std::string(scene),
-                                             t.integrand,
-                                             fmt::format("{}", t.s),
-                                             t.method,
-                                             number(t.fit.slope),
-                                             number(t.fit.ci_low),
-                                             number(t.fit.ci_high),
-                                             number(theory),
-                                             to_string(t.verdict),
-                                             fmt::format("{}", t.points_used()),
-                                             fmt::format("{}", t.floor_points()),
-                                             to_string(t.regularity),
-                                             to_string(t.fit.status),
-                                             number(t.floor.attainable_accuracy),
-                                             t.theory.note,
-                                             number(t.envelope_ratio)};
+    const std::vector<std::string> fields = {
+        std::string(scene),
+        t.integrand,
+        fmt::format("{}", t.s),
+        t.method,
+        number(t.fit.slope),
+        number(t.fit.ci_low),
+        number(t.fit.ci_high),
+        number(theory),
+        to_string(t.verdict),
+        fmt::format("{}", t.points_used()),
+        fmt::format("{}", t.floor_points()),
+        to_string(t.regularity),
+        to_string(t.fit.status),
+        number(t.floor.attainable_accuracy),
+        t.theory.note,
+        number(t.envelope_ratio),
+        t.verdict_reason,
+        number(t.class_theory.slope.value_or(std::numeric_limits<double>::quiet_NaN())),
+        t.asymptotic_from ? fmt::format("{}", *t.asymptotic_from) : std::string(),
+        number(t.asymptotic_fit.slope),
+        fmt::format("{}", t.predicted_points),
+        number(t.worst_prediction_ratio),
+        t.rounding.describe()};
     out += csv_line(fields);
   }
   return out;
@@ -142,6 +154,8 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
   auto optional_real = [&](const record_reader& f, std::string_view column) {
     return table.has_column(column) ? f.real(column) : std::numeric_limits<double>::quiet_NaN();
   };
+  const bool has_predicted_error = table.has_column("predicted_error");
+  const bool has_prediction_ratio = table.has_column("prediction_ratio");
   std::vector<convergence_record> out;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const record_reader f(table, r);
@@ -176,6 +190,8 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
           std::pair{"wraparound_discrepancy", &convergence_record::wraparound_discrepancy}}) {
       if (table.has_column(column)) rec.*field = f.real(column);
     }
+    if (has_predicted_error) rec.predicted_error = f.real("predicted_error");
+    if (has_prediction_ratio) rec.prediction_ratio = f.real("prediction_ratio");
     out.push_back(std::move(rec));
   }
   return out;
@@ -200,6 +216,8 @@ std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file) {
     rec.points_used = f.count("points_used");
     rec.floor_points = f.count("floor_points");
     if (table.has_column("envelope_ratio")) rec.envelope_ratio = f.real("envelope_ratio");
+    if (table.has_column("verdict_reason")) rec.verdict_reason = f.text("verdict_reason");
+    if (table.has_column("class_theory")) rec.class_theory = f.real("class_theory");
     out.push_back(std::move(rec));
   }
   return out;

@@ -67,6 +67,12 @@ run_output run_plan(const plan& p, const run_options& options) {
           integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
       series.reference = mean_reference[cell.integrand];
       series.errors = mspec.configured->error_bars();
+      series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};
+      // A prediction is of one instance on fixed grids: not for an ensemble (its cells pool
+      // instances) nor for cells that may stop early.
+      if (ispec.ensemble <= 1 && cell.control == cell_control::fixed_size) {
+        series.prediction = mspec.configured->predict_error(info);
+      }
       out.series.push_back(std::move(series));
     }
     // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble

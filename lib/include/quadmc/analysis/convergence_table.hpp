@@ -10,12 +10,26 @@
 // evaluations per repetition (docs/theory.md#conventions: N = evaluations). Floor points, flagged
 // by rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
 // fitted error is > 0). The floor scale is |reference|; when the reference is 0 it falls back to
-// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table). A cell
-// whose rule reports Σ|w| > 1 (weights of both signs: a sparse grid) has its floor scale
-// multiplied by Σ|w|, the factor by which its sum amplifies rounding (rounding_floor.hpp).
+// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table). The
+// floor's level knows the precision f is evaluated in and the method's accumulator
+// (convergence_series::rounding); a cell whose rule reports Σ|w| > 1 (weights of both signs: a
+// sparse grid) has its floor scale multiplied by Σ|w|, the factor by which its sum amplifies
+// rounding (rounding_floor.hpp).
+//
+// With an error prediction (error_prediction.hpp: a composite rule's Euler–Maclaurin curve) every
+// cell also gets its predicted error where the next term of the expansion moves it by at most
+// analysis_options::prediction_validity (1%), and the ratio measured/predicted; cells whose error
+// is above prediction_rounding_margin (100) times their rounding level are judged: within
+// prediction_tolerance (10%) the prediction is confirmed. A confirmed prediction may explain a
+// slope the class theory does not (slope_verdict.hpp: superconvergent, pre_asymptotic): the
+// predicted local slope, d log|P|/d log N between n and 2n panels, says from which N the leading
+// term carries the curve (within verdict_tolerance of the asymptotic slope), and the slope fitted
+// from there is set beside the whole-ladder one. Every verdict carries its reason in words
+// (verdict_reason).
 #pragma once
 
 #include "quadmc/analysis/cell_statistics.hpp"
+#include "quadmc/analysis/error_prediction.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/analysis/rounding_floor.hpp"
 #include "quadmc/analysis/slope_verdict.hpp"
@@ -26,6 +40,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +74,10 @@ struct convergence_series {
   // Where the cells' error bars come from (cell_statistics.hpp): the repetitions' own, or their
   // spread (randomized quasi-Monte Carlo).
   error_bars errors = error_bars::own;
+  // How f's values are rounded and summed: the rounding floor's level (rounding_floor.hpp).
+  rounding_model rounding;
+  // The method's predicted error per cell (a rule's Euler–Maclaurin curve), or none.
+  std::optional<error_prediction> prediction;
 };
 
 struct analysis_options {
@@ -66,6 +85,13 @@ struct analysis_options {
   double verdict_tolerance = 0.1;  // r of slope_verdict.hpp
   rounding_floor_options floor;
   std::vector<double> error_targets{default_error_targets.begin(), default_error_targets.end()};
+  // A prediction is shown (and may be judged) where the next term moves it by at most this.
+  double prediction_validity = 0.01;
+  // Measured and predicted agree when |measured/predicted − 1| ≤ this.
+  double prediction_tolerance = 0.1;
+  // A cell is judged against its prediction only where its error exceeds this many times its
+  // rounding level (the rounding is then at most 1% of it).
+  double prediction_rounding_margin = 100.0;
 };
 
 struct convergence_row {
@@ -75,6 +101,18 @@ struct convergence_row {
   bool floor = false;  // at the rounding floor: excluded from the fit and the envelope verdict
   std::uint64_t per_axis = 0;                                  // convergence_cell::per_axis
   double envelope = std::numeric_limits<double>::quiet_NaN();  // convergence_cell::error_envelope
+  // ℓ(N) of the series' rounding model (rounding_floor.hpp) at this cell's evaluations.
+  double rounding_level = std::numeric_limits<double>::quiet_NaN();
+  // d log(error)/d log N from the previous point of the ladder; NaN at the first point, at a
+  // repeated evaluation count and where an error is 0.
+  double local_slope = std::numeric_limits<double>::quiet_NaN();
+  // |predicted error| where the prediction is valid (analysis_options::prediction_validity);
+  // NaN where there is none or the expansion is not yet predictive.
+  double predicted_error = std::numeric_limits<double>::quiet_NaN();
+  // measured/predicted error, signed for one repetition ((estimate − I)/(predicted estimate − I):
+  // negative means opposite signs), rmse/|predicted| for several; NaN without a prediction.
+  double prediction_ratio = std::numeric_limits<double>::quiet_NaN();
+  bool prediction_judged = false;  // the ratio counts (valid, not a floor point, above rounding)
 };
 
 struct convergence_table {
@@ -87,8 +125,21 @@ struct convergence_table {
   std::vector<convergence_row> rows;
   rounding_floor floor;
   power_law_fit fit;
+  // The rate the verdict is judged against: the method's class rate, or, for a superconvergent
+  // series, the order of the first non-vanishing term (then class_theory keeps the former).
   theoretical_rate theory;
+  theoretical_rate class_theory;  // the method's rate for f's smoothness class, as given
   slope_verdict verdict = slope_verdict::no_fit;
+  std::string verdict_reason;  // why, in one line (slope_verdict.hpp's vocabulary explained)
+  rounding_model rounding;
+  // With a confirmed prediction: the evaluations from which the predicted local slope stays
+  // within verdict_tolerance of the theory slope (beyond the last row when the ladder ends first;
+  // nullopt when not found below 2^63), and the slope fitted over the rows from there.
+  std::optional<std::uint64_t> asymptotic_from;
+  power_law_fit asymptotic_fit;
+  // Judged cells of the prediction and the ratio measured/predicted farthest from 1 among them.
+  std::size_t predicted_points = 0;
+  double worst_prediction_ratio = std::numeric_limits<double>::quiet_NaN();
   // Envelope series: the largest error/envelope over the non-floor rows (≤ 1 within it, up to
   // the rounding allowance); NaN for a slope-verdict series.
   double envelope_ratio = std::numeric_limits<double>::quiet_NaN();

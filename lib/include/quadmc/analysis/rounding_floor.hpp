@@ -5,36 +5,36 @@
 // flatten the fit. Not a test of statistical noise: Monte Carlo errors never come near the
 // rounding level at practical N, and the rule below only fires near it.
 //
-// Why a floor exists: a rule that adds N terms carries a rounding error of about ε·log₂N·Σ|t_k|
-// for pairwise summation and 2ε·Σ|t_k| for compensated summation (Higham, Accuracy and Stability
-// of Numerical Algorithms, 2nd ed., §4.2–4.3), with Σ|t_k| ≈ ∫|f| ≥ |I|; naive summation grows
-// like ε·N. Once the method's error falls below that, the measured error stops decreasing
-// (Gauss–Legendre, Romberg, Simpson at large n) or turns back up (naive sums).
+// Why a floor exists: a rule that adds N terms t_k = w_k·f(x_k) carries, besides its own
+// discretisation error, the rounding of each value f(x_k) (relative ε_f of the format f is
+// evaluated in: float's 2⁻²³ for the float twins of the stress scene, double's 2⁻⁵² otherwise) and
+// the rounding of the sum: ⌈log₂N⌉u·Σ|t_k| for pairwise summation, 2u·Σ|t_k| for compensated
+// summation (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., §4.2–4.3), and
+// (N − 1)u·Σ|t_k| in the worst case for a recursive (naive) sum, whose realistic size is ≈ u·√N
+// (Higham §2.8 and §4.2: round-to-nearest errors behave like a random walk; the stress scene
+// measures ε·√N·I for naive sums to 10⁹ terms, far below ε·N·I), with Σ|t_k| ≈ ∫|f| ≥ |I|. Once
+// the method's error falls below that, the measured error stops decreasing (Gauss–Legendre,
+// Romberg, Simpson at large n) or turns back up (naive sums).
 //
 // The rule (points k = 0…n−1 in increasing N, errors e_k ≥ 0, scale S = |I| or another magnitude
 // of the integrand):
-//   rounding level  ℓ(N) = κ·ε·S·max(1, log₂N), κ = 2: the pairwise worst case with ∫|f| = S,
-//                   doubled for the rounding of the reference value and of the final scaling.
-//   (i)  at the floor: e_k ≤ ℓ(N_k) (this includes e_k = 0, an error below any resolution);
-//   (ii) stalled near the floor: e_k ≤ B·ℓ(N_k) with B = 10⁴ (within four decades of the
-//        rounding level, where a ladder can plausibly run out of precision) and neither of the
-//        next W = 2 points improves on e_k by more than a factor F = 2:
-//        min(e_{k+1}, e_{k+2}) > e_k/F. Any algebraic rate ≥ 1/2 on a ladder that doubles N
-//        twice improves by ≥ 2, so a converging ladder does not stall. The window is short on
-//        purpose: the minimum over *all* later points would, on a long floor of random rounding
-//        noise, almost surely find one lucky small value and never see the stall. The last
-//        point cannot stall (nothing after it to judge by).
-// The floor starts at the first k meeting (i) or (ii); that point and every later one are floor
-// points (once rounding dominates, a larger N cannot recover). The attainable accuracy is the
-// smallest error before the floor (the whole ladder when no floor was reached; the smallest floor
-// error when the floor starts at the first point). With S = 0 (I = 0 and no other magnitude) only
-// exact zeros are flagged.
+//   rounding level  ℓ(N) = κ·S·max(ε_f, σ(N)), κ = 2, with σ(N) the accumulator's term:
+//                   ε·max(1, log₂N) pairwise (the default), ε Neumaier, ε·max(1, √N) naive,
+//                   ε_x·max(1, √N) for an x87 long double sum (ε = 2⁻⁵², ε_x = 2⁻⁶³). The
+//                   larger of the two sources is the level; κ = 2 allows for the smaller one and
+//                   for the rounding of the reference value and of the final scaling. For double
+//                   evaluation and the pairwise sum this is κ·ε·S·max(1, log₂N): every level of the
+//                   suite before the model knew the precision.
 #pragma once
+
+#include "quadmc/core/evaluation_precision.hpp"
+#include "quadmc/core/summation.hpp"
 
 #include <cstddef>
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace quadmc {
@@ -56,14 +56,32 @@ struct rounding_floor {
   std::size_t count() const noexcept { return first ? flags.size() - *first : 0; }
 };
 
-// ℓ(N) for one point.
+// What sets the rounding of one series: the format of f's values and how the method adds them.
+struct rounding_model {
+  evaluation_precision precision = evaluation_precision::double_precision;
+  summation accumulator = summation::pairwise;
+
+  // σ(N)/ε_f combined: max(ε_f, σ(N)), the relative level before κ and S.
+  double relative_level(double n) const noexcept;
+  // "float evaluation, pairwise sum", for notes and the slopes table.
+  std::string describe() const;
+};
+
+// ℓ(N) for one point: double evaluation, pairwise sum (the default model).
 double rounding_level(double n, double scale, const rounding_floor_options& options = {});
+// ℓ(N) = κ·S·max(ε_f, σ(N)) for one point of a series with this model.
+double rounding_level(double n, double scale, const rounding_model& model,
+                      const rounding_floor_options& options = {});
 
 // Throws invalid_argument when sizes differ, N is not finite, > 0 and strictly increasing, an
 // error is negative or not finite, the scale is not finite and ≥ 0, or an option is out of range
 // (κ > 0, B ≥ 1, F > 1, W ≥ 1).
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      double scale, const rounding_floor_options& options = {});
+// The same rule with the level of `model`.
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     double scale, const rounding_model& model,
+                                     const rounding_floor_options& options = {});
 
 // The same with a scale per point, S_k: for a ladder whose rules amplify rounding differently at
 // each N (a sparse grid's weights of both signs: S_k = |I|·Σ|w| at point k, since its sum errs by
@@ -71,6 +89,10 @@ rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const 
 // and for scales of another size than n or not finite and ≥ 0.
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      std::span<const double> scales,
+                                     const rounding_floor_options& options = {});
+// Per-point scales with the level of `model`.
+rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
+                                     std::span<const double> scales, const rounding_model& model,
                                      const rounding_floor_options& options = {});
 
 }  // namespace quadmc

@@ -20,6 +20,22 @@
 // every judged point's error is ≤ its envelope; above_envelope when one is not, which no
 // discretisation can explain: a wrong weight, node or reference (a bug). The fitted slope, its
 // interval and the theory slope are still reported beside it.
+//
+// Verdicts that name a computed reason (analysis/convergence_table.hpp decides them; the reason
+// itself is in the table's verdict_reason, docs/theory.md#verdict):
+//   superconvergent  a leading term of the rule's Euler–Maclaurin expansion vanishes on this f
+//                    (or every one does: exponential convergence), the theory column holds the
+//                    order of the first term that does not, and the measured points agree with
+//                    the predicted ones (rules/euler_maclaurin.hpp);
+//   pre_asymptotic   the predicted curve agrees with the measured points, its local slope
+//                    approaches the asymptotic one only from some N on, and the slope fitted
+//                    from there agrees (or the ladder ends before it): the whole-ladder slope
+//                    measured the regime before the leading term takes over;
+//   at_floor         the ladder reached its rounding floor (the precision f is evaluated in and
+//                    the method's accumulator: rounding_floor.hpp) before three points could be
+//                    fitted.
+// agrees, steeper and shallower keep their meaning; steeper and shallower remain only where no
+// computed reason explains the slope: findings.
 #pragma once
 
 #include "quadmc/analysis/power_law_fit.hpp"
@@ -37,7 +53,10 @@ enum class slope_verdict {
   no_theory,
   no_fit,
   within_envelope,
-  above_envelope
+  above_envelope,
+  superconvergent,
+  pre_asymptotic,
+  at_floor
 };
 
 const char* to_string(slope_verdict verdict) noexcept;

@@ -20,14 +20,18 @@
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/functions/endpoint_derivatives.hpp"
 #include "quadmc/functions/integrand.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace quadmc {
 
@@ -89,6 +93,15 @@ class poly_1d {
     const double m = std::max(std::abs(lo_), std::abs(hi_));
     const double falling[5] = {1.0, 5.0, 20.0, 60.0, 120.0};
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = falling[k] * std::pow(m, 5 - k);
+    const auto derivative = [](double x) {
+      return [x](std::size_t k) {
+        double d = 1.0;
+        for (std::size_t j = 0; j < k; ++j) d *= static_cast<double>(5 - j);  // 0 from k = 6
+        return k > 5 ? 0.0 : d * std::pow(x, static_cast<double>(5 - k));
+      };
+    };
+    info.endpoint_derivatives = endpoint::product_of(
+        1.0, {endpoint::factor_of(derivative(lo_), derivative(hi_), lo_, hi_, info.exact)});
     return info;
   }
 
@@ -115,6 +128,8 @@ class exp_1d {
     auto info =
         detail::info_1d("exp", "eˣ", lo_, hi_, std::exp(hi_) - std::exp(lo_), smoothness::analytic);
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = std::exp(hi_);
+    info.endpoint_derivatives =
+        endpoint::product_of(1.0, {endpoint::exponential(1.0, lo_, hi_, info.exact)});
     return info;
   }
 
@@ -138,6 +153,16 @@ class sin_1d {
     const double ms = detail::max_abs_sin(lo_, hi_);
     const double mc = detail::max_abs_sin(lo_ + std::numbers::pi / 2, hi_ + std::numbers::pi / 2);
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = k % 2 == 0 ? ms : mc;
+    // sin⁽ᵏ⁾(x) = sin(x + kπ/2), taken from the four values sin, cos, −sin, −cos (no rounding
+    // of kπ/2 into the argument).
+    const auto derivative = [](double x) {
+      return [s = std::sin(x), c = std::cos(x)](std::size_t k) {
+        const double cycle[4] = {s, c, -s, -c};
+        return cycle[k % 4];
+      };
+    };
+    info.endpoint_derivatives = endpoint::product_of(
+        1.0, {endpoint::factor_of(derivative(lo_), derivative(hi_), lo_, hi_, info.exact)});
     return info;
   }
 
@@ -161,7 +186,16 @@ class inverse_quadratic_1d {
     const double t = std::sqrt(t2);
     info.derivative_bound = {1.0, 3.0 * std::sqrt(3.0) / 8.0, 2.0,
                              24.0 * t * (1.0 - t2) / std::pow(1.0 + t2, 4), 24.0};
+    info.endpoint_derivatives = endpoint_data();
     return info;
+  }
+  // 1/(1 + x²) on [0, 1]: odd derivatives vanish at 0 (f is even) and f⁽⁴ᵐ⁺³⁾(1) = 0, so Simpson's
+  // h⁴ term vanishes (rules/euler_maclaurin.hpp); shared with the float twin.
+  static std::optional<separable_derivatives> endpoint_data() {
+    return endpoint::product_of(
+        1.0, {endpoint::factor_of([](std::size_t k) { return endpoint::inverse_quadratic(k, 0.0); },
+                                  [](std::size_t k) { return endpoint::inverse_quadratic(k, 1.0); },
+                                  0.0, 1.0, std::numbers::pi / 4)});
   }
 };
 
@@ -193,6 +227,22 @@ class abs_kink_1d {
                                 (c_ * c_ + (1.0 - c_) * (1.0 - c_)) / 2.0, smoothness::c0);
     info.derivative_bound[0] = std::max(c_, 1.0 - c_);
     info.derivative_bound[1] = 1.0;  // |f'| = 1 on both sides; f'' is a Dirac at c
+    // c − x left of c, x − c right of it: f' jumps by 2 at an interior c.
+    const auto side = [this](double x, bool right) {
+      return [x, right, this](std::size_t k) {
+        const double slope = right ? 1.0 : -1.0;
+        return k == 0 ? std::abs(x - c_) : (k == 1 ? slope : 0.0);
+      };
+    };
+    std::vector<derivative_jump> kinks;
+    if (c_ > 0.0 && c_ < 1.0) {
+      derivative_jump kink{c_, std::vector<std::complex<double>>(endpoint_derivative_count)};
+      kink.jumps[1] = 2.0;
+      kinks.push_back(std::move(kink));
+    }
+    info.endpoint_derivatives =
+        endpoint::product_of(1.0, {endpoint::factor_of(side(0.0, c_ == 0.0), side(1.0, c_ < 1.0),
+                                                       0.0, 1.0, info.exact, std::move(kinks))});
     return info;
   }
   double c() const noexcept { return c_; }

@@ -38,6 +38,7 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/vector_math.hpp"
+#include "quadmc/functions/endpoint_derivatives.hpp"
 #include "quadmc/functions/inclusion_exclusion.hpp"
 #include "quadmc/functions/integrand.hpp"
 
@@ -46,6 +47,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -226,6 +228,14 @@ class genz_oscillatory {
     // |∂ᵏf/∂xⱼᵏ| = |aⱼ|ᵏ·|cos or sin| ≤ |aⱼ|ᵏ (an upper bound, attained when the phase allows).
     const double m = detail::max_abs(a_);
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = detail::finite_bound(std::pow(m, k));
+    // f = Re[e^{i2πu₁}·Π e^{iaⱼxⱼ}]; ∫₀¹ e^{iax} dx = e^{ia/2}·sin(a/2)/(a/2), no cancellation.
+    std::vector<std::optional<endpoint_factor>> factors;
+    for (double ai : a_) {
+      const std::complex<double> rate(0.0, ai);
+      factors.push_back(endpoint::exponential(
+          rate, 0.0, 1.0, std::exp(0.5 * rate) * boost::math::sinc_pi(0.5 * ai)));
+    }
+    info.endpoint_derivatives = endpoint::product_of(std::polar(1.0, phase_), std::move(factors));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -277,6 +287,19 @@ class genz_product_peak {
         detail::genz_info(genz_family::product_peak, "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)", a_.size(), exact_,
                           "closed form Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]", smoothness::analytic);
     info.derivative_bound[0] = peak_;  // at x = u, inside the cube
+    // f = peak·Π g_j, g_j(x) = 1/(1 + a²(x − u)²): g⁽ᵏ⁾ = aᵏ·r⁽ᵏ⁾(a(x − u)), r(t) = 1/(1 + t²).
+    std::vector<std::optional<endpoint_factor>> factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double a = a_[j], u = u_[j];
+      const auto at = [a, u](double x) {
+        return [a, u, x](std::size_t k) {
+          return std::pow(a, static_cast<double>(k)) * endpoint::inverse_quadratic(k, a * (x - u));
+        };
+      };
+      factors.push_back(endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0,
+                                            (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a));
+    }
+    info.endpoint_derivatives = endpoint::product_of(peak_, std::move(factors));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -406,6 +429,20 @@ class genz_gaussian {
     info.derivative_bound[1] = std::sqrt(2.0) * std::exp(-0.5) * m;
     info.derivative_bound[2] = 2.0 * m * m;
     info.derivative_bound[4] = detail::finite_bound(12.0 * m * m * m * m);
+    // g_j(x) = e^{−a²(x − u)²}: g⁽ᵏ⁾ = aᵏ·(d/dt)ᵏe^{−t²} at t = a(x − u) (Hermite polynomials).
+    std::vector<std::optional<endpoint_factor>> factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double a = a_[j], u = u_[j];
+      const auto at = [a, u](double x) {
+        return [a, u, x](std::size_t k) {
+          return std::pow(a, static_cast<double>(k)) * endpoint::gaussian(k, a * (x - u));
+        };
+      };
+      factors.push_back(endpoint::factor_of(
+          at(0.0), at(1.0), 0.0, 1.0,
+          std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u))));
+    }
+    info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -447,6 +484,32 @@ class genz_continuous {
                           "closed form Π [2 − e^{−aᵢuᵢ} − e^{−aᵢ(1−uᵢ)}]/aᵢ", smoothness::c0);
     info.derivative_bound[0] = 1.0;                  // at x = u
     info.derivative_bound[1] = detail::max_abs(a_);  // one-sided, next to x = u
+    // g_j(x) = e^{−a|x − u|}: e^{a(x − u)} left of u, e^{−a(x − u)} right of it, so g⁽ᵏ⁾ is
+    // aᵏ·g on the left and (−a)ᵏ·g on the right, and at an interior u every derivative of odd
+    // order jumps by (−a)ᵏ − aᵏ = −2aᵏ (a kink of g' and of every odd derivative).
+    std::vector<std::optional<endpoint_factor>> factors;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double a = a_[j], u = u_[j];
+      const auto at = [a, u](double x, bool right) {
+        return [a, u, x, right](std::size_t k) {
+          const double rate = right ? -a : a;
+          return std::pow(rate, static_cast<double>(k)) * std::exp(-a * std::abs(x - u));
+        };
+      };
+      std::vector<derivative_jump> kinks;
+      if (u > 0.0 && u < 1.0) {
+        derivative_jump kink{u, std::vector<std::complex<double>>(endpoint_derivative_count)};
+        for (std::size_t k = 1; k < endpoint_derivative_count; ++k) {
+          kink.jumps[k] =
+              std::pow(-a, static_cast<double>(k)) - std::pow(a, static_cast<double>(k));
+        }
+        kinks.push_back(std::move(kink));
+      }
+      factors.push_back(endpoint::factor_of(at(0.0, u == 0.0), at(1.0, u < 1.0), 0.0, 1.0,
+                                            (-std::expm1(-a * u) - std::expm1(-a * (1.0 - u))) / a,
+                                            std::move(kinks)));
+    }
+    info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }

@@ -10,15 +10,21 @@
 // Metadata (integrand_info) travels with each function so that a convergence study never needs
 // to look a reference value up elsewhere: the exact integral, the smoothness class that decides
 // the theoretical rate, derivative bounds M_k = max|f^(k)| that the a-priori error bounds of
-// the rules need, and for a discontinuous f that is a product of one-variable pieces its jumps
-// (separable_factors), from which a rule's error envelope is bounded.
+// the rules need, for a discontinuous f that is a product of one-variable pieces its jumps
+// (separable_factors), from which a rule's error envelope is bounded, for a smooth or kinked f
+// that is (the real part of) a product of one-variable factors the end-point derivatives of each
+// factor (endpoint_derivatives), from which the Euler–Maclaurin expansion predicts a composite
+// rule's error (rules/euler_maclaurin.hpp), and the precision f is evaluated in, which sets the
+// rounding floor.
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/evaluation_precision.hpp"
 #include "quadmc/core/smoothness.hpp"
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <concepts>
 #include <cstddef>
 #include <optional>
@@ -64,6 +70,39 @@ struct piecewise_smooth_factor {
   double integral = NAN;  // ∫ g_j over its interval
 };
 
+// How many derivatives an endpoint_factor carries: g⁽ᵏ⁾ for k = 0 … endpoint_derivative_count − 1,
+// enough for the first three non-vanishing Euler–Maclaurin terms of every rule of rules/ even when
+// every other term vanishes (Simpson on 1/(1 + x²) needs f⁽¹³⁾).
+inline constexpr std::size_t endpoint_derivative_count = 24;
+
+// A point inside a factor's interval where g is continuous but a derivative jumps (a kink):
+// jumps[k] = g⁽ᵏ⁾(c+) − g⁽ᵏ⁾(c−) in the unit variable t of endpoint_factor (jumps[0] = 0).
+struct derivative_jump {
+  double location = NAN;  // c, in the factor's own coordinate x
+  std::vector<std::complex<double>> jumps;
+};
+
+// One factor g_j(x_j) of f(x) = Re[scale·Π_j g_j(x_j)] on [lower_j, upper_j], described in the
+// unit variable t = (x − lower)/(upper − lower), G(t) = g(lower + (upper − lower)·t), so that a
+// box of any width (10⁻¹⁰⁰, 10¹⁰⁰) carries finite numbers: at_lower[k] = G⁽ᵏ⁾(0), at_upper[k] =
+// G⁽ᵏ⁾(1) (one-sided, from inside), k = 0 … endpoint_derivative_count − 1. Complex so that
+// cos(φ + Σaⱼxⱼ) is the real part of a product of e^{iaⱼxⱼ}; a real factor has zero imaginary
+// parts.
+struct endpoint_factor {
+  std::complex<double> integral;  // ∫ g_j dx_j over [lower_j, upper_j] (x units, not t)
+  std::vector<std::complex<double>> at_lower;
+  std::vector<std::complex<double>> at_upper;
+  std::vector<derivative_jump> kinks;  // ascending interior kinks; empty where g is smooth
+};
+
+// f as Re[scale·Π_j g_j(x_j)], one factor per axis: the end-point data an Euler–Maclaurin error
+// prediction needs (rules/euler_maclaurin.hpp), exact in closed form. Re[scale·Π ∫g_j] is the
+// exact integral.
+struct separable_derivatives {
+  std::complex<double> scale{1.0, 0.0};
+  std::vector<endpoint_factor> factors;
+};
+
 struct integrand_info {
   std::string name;       // catalogue name as used in scenes, e.g. "genz_gaussian"
   std::string formula;    // one line, for `quadmc list` and the README catalogue
@@ -85,6 +124,13 @@ struct integrand_info {
   // grid. Empty where f is not of that form: jumps across curved or oblique surfaces (the disk and
   // the half-space for s ≥ 2, the occluded irradiance) keep the slope verdict only.
   std::vector<piecewise_smooth_factor> separable_factors{};
+  // For f smooth (or with kinks) and (the real part of) a product of one-variable factors: each
+  // factor's end-point derivatives, in closed form. Empty where f is not of that form or has
+  // jumps (separable_factors bound those), or where a derivative overflows.
+  std::optional<separable_derivatives> endpoint_derivatives{};
+  // The format f's values are computed in: float for the float twins of the stress scene (their
+  // rounding floor is float's, not double's: analysis/rounding_floor.hpp).
+  evaluation_precision precision = evaluation_precision::double_precision;
 
   std::size_t dimension() const noexcept { return domain.dimension(); }
 };

@@ -10,11 +10,14 @@
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/functions/endpoint_derivatives.hpp"
 #include "quadmc/functions/integrand.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -69,6 +72,21 @@ class sobol_g {
       slope = std::max(slope, peak * (4.0 / (1.0 + ai)) / ((2.0 + ai) / (1.0 + ai)));
     info.derivative_bound[0] = peak;
     info.derivative_bound[1] = slope;
+    // Each factor is linear on both sides of x = 1/2, where its slope jumps from −4/(1 + a) to
+    // +4/(1 + a): the end-point data of a kinked product (rules/euler_maclaurin.hpp).
+    std::vector<std::optional<endpoint_factor>> factors;
+    for (double ai : a_) {
+      const double s = 4.0 / (1.0 + ai), top = (2.0 + ai) / (1.0 + ai);
+      const auto end = [s, top](double slope_sign) {
+        return [s, top, slope_sign](std::size_t k) {
+          return k == 0 ? top : (k == 1 ? slope_sign * s : 0.0);
+        };
+      };
+      derivative_jump kink{0.5, std::vector<std::complex<double>>(endpoint_derivative_count)};
+      kink.jumps[1] = 2.0 * s;
+      factors.push_back(endpoint::factor_of(end(-1.0), end(1.0), 0.0, 1.0, 1.0, {std::move(kink)}));
+    }
+    info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }

@@ -40,6 +40,8 @@
 #pragma once
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/functions/classic_1d.hpp"
+#include "quadmc/functions/endpoint_derivatives.hpp"
 #include "quadmc/functions/integrand.hpp"
 
 #include <fmt/format.h>
@@ -48,6 +50,7 @@
 #include <cstddef>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -80,6 +83,13 @@ inline double cosc_integral() {
   return static_cast<double>(si - (1.0L - std::cos(1.0L)));
 }
 
+inline std::optional<separable_derivatives> cosc_endpoints(double exact) {
+  return endpoint::product_of(
+      1.0,
+      {endpoint::factor_of([](std::size_t k) { return endpoint::cosc(k, 0.0); },
+                           [](std::size_t k) { return endpoint::cosc(k, 1.0); }, 0.0, 1.0, exact)});
+}
+
 }  // namespace detail
 
 class shifted_exp_1d {
@@ -109,6 +119,13 @@ class shifted_exp_1d {
     for (int k = 0; k <= 4; ++k, bound /= width_) {
       if (std::isfinite(bound)) info.derivative_bound[k] = bound;
     }
+    // In the unit variable t every derivative of e^t/w is e^t/w: finite on any box (the
+    // x-derivatives e/w^(k+1) overflow on [0, 10⁻¹⁰⁰]), so the data are written in t directly.
+    endpoint_factor factor;
+    factor.integral = std::expm1(1.0);
+    factor.at_lower.assign(endpoint_derivative_count, 1.0 / width_);
+    factor.at_upper.assign(endpoint_derivative_count, std::numbers::e / width_);
+    info.endpoint_derivatives = separable_derivatives{1.0, {std::move(factor)}};
     return info;
   }
 
@@ -125,10 +142,14 @@ class cosc_naive_1d {
     }
   }
   integrand_info info() const {
-    return detail::stability_info("cosc_naive", "(1 − cos x)/x², computed as written (1/2 at 0)",
-                                  0.0, 1.0, detail::cosc_integral(),
-                                  "Si(1) − (1 − cos 1), Si by its Taylor series",
-                                  smoothness::analytic);
+    auto info = detail::stability_info(
+        "cosc_naive", "(1 − cos x)/x², computed as written (1/2 at 0)", 0.0, 1.0,
+        detail::cosc_integral(), "Si(1) − (1 − cos 1), Si by its Taylor series",
+        smoothness::analytic);
+    // The derivatives of the function it stands for (the rounding of 1 − cos x is in the
+    // values, not in f): its Taylor series, which has no cancellation.
+    info.endpoint_derivatives = detail::cosc_endpoints(info.exact);
+    return info;
   }
 };
 
@@ -146,10 +167,12 @@ class cosc_stable_1d {
     }
   }
   integrand_info info() const {
-    return detail::stability_info("cosc_stable", "2·sin²(x/2)/x² = (1 − cos x)/x² (1/2 at 0)", 0.0,
-                                  1.0, detail::cosc_integral(),
-                                  "Si(1) − (1 − cos 1), Si by its Taylor series",
-                                  smoothness::analytic);
+    auto info = detail::stability_info("cosc_stable", "2·sin²(x/2)/x² = (1 − cos x)/x² (1/2 at 0)",
+                                       0.0, 1.0, detail::cosc_integral(),
+                                       "Si(1) − (1 − cos 1), Si by its Taylor series",
+                                       smoothness::analytic);
+    info.endpoint_derivatives = detail::cosc_endpoints(info.exact);
+    return info;
   }
 };
 
@@ -202,6 +225,11 @@ class exp_float_1d {
                                        std::exp(hi_) - std::exp(lo_),
                                        "closed form of the double function", smoothness::analytic);
     info.derivative_bound[0] = peak_;
+    // The rule errs on the float values by its error on eˣ plus their rounding: the end-point
+    // data are eˣ's, the floor is float's.
+    info.endpoint_derivatives =
+        endpoint::product_of(1.0, {endpoint::exponential(1.0, lo_, hi_, info.exact)});
+    info.precision = evaluation_precision::single_precision;
     return info;
   }
 
@@ -220,9 +248,12 @@ class inverse_quadratic_float_1d {
     }
   }
   integrand_info info() const {
-    return detail::stability_info("inverse_quadratic_float", "1/(1 + x²) evaluated in float", 0.0,
-                                  1.0, std::numbers::pi / 4, "closed form of the double function",
-                                  smoothness::analytic);
+    auto info = detail::stability_info("inverse_quadratic_float", "1/(1 + x²) evaluated in float",
+                                       0.0, 1.0, std::numbers::pi / 4,
+                                       "closed form of the double function", smoothness::analytic);
+    info.endpoint_derivatives = inverse_quadratic_1d::endpoint_data();
+    info.precision = evaluation_precision::single_precision;
+    return info;
   }
 };
 

@@ -17,7 +17,9 @@
 #pragma once
 
 #include "quadmc/analysis/cell_statistics.hpp"
+#include "quadmc/analysis/error_prediction.hpp"
 #include "quadmc/analysis/theoretical_rate.hpp"
+#include "quadmc/core/summation.hpp"
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/option_reader.hpp"
@@ -126,6 +128,15 @@ class method {
   // An a-priori bound on |error| of a fixed-size cell on f (a rule on a jump:
   // rules/jump_error_envelope.hpp); NaN when the method has none for f.
   virtual double error_envelope(const integrand_info& f, const cell_size& size) const;
+
+  // The predicted error of its fixed-size cells on f, cell by cell (a composite rule on f with
+  // known end-point derivatives: its Euler–Maclaurin expansion, rules/euler_maclaurin.hpp), or
+  // nullopt when it has none.
+  virtual std::optional<error_prediction> predict_error(const integrand_info& f) const;
+
+  // How the method adds its terms, which sets its rounding floor (analysis/rounding_floor.hpp):
+  // the rules' `accumulator`; pairwise for every other method.
+  virtual summation summation_scheme() const { return summation::pairwise; }
 
   // One repetition of one cell. Throws what the kernels throw (invalid_argument,
   // non_finite_value naming the point).

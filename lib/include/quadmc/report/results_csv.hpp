@@ -5,11 +5,13 @@
 //     mean_abs_error, std_error_of_rmse, coverage_95, seconds, evals_per_second,
 //     then added columns: floor, smoothness, envelope, tolerance, error_estimate, estimate_covers,
 //     estimate_covers_3x, chi2_per_dof, q_value, replicate_std_error, l2_star_discrepancy,
-//     centered_discrepancy, wraparound_discrepancy
+//     centered_discrepancy, wraparound_discrepancy,
+//     predicted_error, prediction_ratio, local_slope, rounding_level
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
 //     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
-//     envelope_ratio
+//     envelope_ratio, verdict_reason, class_theory, asymptotic_from_n, asymptotic_slope,
+//     predicted_points, worst_prediction_ratio, rounding_model
 //
 // Contract: columns may be added at the end, never renamed or removed (compare reads old folders
 // with new code). Missing values (NaN: no std_error, no coverage for a deterministic rule, no
@@ -29,9 +31,23 @@
 // estimate_mean from the spread of the repetitions (empty for one repetition); the three
 // `*_discrepancy` columns the root mean square over the repetitions of the L2-star, centered and
 // wrap-around discrepancies of the points (sampling/discrepancy.hpp), computed by the
-// quasi-Monte Carlo methods at N ≤ 1024 and empty elsewhere.
-// `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit
-// (slope verdicts) or within_envelope, above_envelope (envelope verdicts).
+// quasi-Monte Carlo methods at N ≤ 1024 and empty elsewhere. `predicted_error` is the |error| a
+// rule's Euler–Maclaurin expansion predicts for the cell (analysis/convergence_table.hpp), empty
+// where there is no prediction or the next term moves it by more than 1%; `prediction_ratio` the
+// measured/predicted error (signed for a deterministic rule: (estimate − I)/(predicted estimate −
+// I)); `local_slope` d log(error)/d log N from the previous distinct N; `rounding_level` ℓ(N) of
+// the series' rounding model (analysis/rounding_floor.hpp: the evaluation precision and the
+// accumulator).
+// `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit,
+// superconvergent, pre_asymptotic, at_floor (slope verdicts) or within_envelope, above_envelope
+// (envelope verdicts); `verdict_reason` says why in one line. `theory` is the rate judged against
+// (for a superconvergent series the order of the first non-vanishing Euler–Maclaurin term),
+// `class_theory` the method's rate for the smoothness class; `asymptotic_from_n` the N from which
+// the predicted local slope stays within 10% of `theory` (it may exceed the ladder's last N),
+// `asymptotic_slope` the slope fitted over the points from there (empty with fewer than three);
+// `predicted_points` how many cells were judged against the prediction and
+// `worst_prediction_ratio` the judged ratio farthest from 1 (empty when none); `rounding_model`
+// e.g. "float evaluation, pairwise sum".
 //
 // Use the readers for compare and tests; they accept added columns and throw naming the file and
 // the column when one of the contract's columns is missing.
@@ -55,7 +71,7 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 13> convergence_csv_added_columns = {
+inline constexpr std::array<std::string_view, 17> convergence_csv_added_columns = {
     "floor",
     "smoothness",
     "envelope",
@@ -68,12 +84,18 @@ inline constexpr std::array<std::string_view, 13> convergence_csv_added_columns 
     "replicate_std_error",
     "l2_star_discrepancy",
     "centered_discrepancy",
-    "wraparound_discrepancy"};
+    "wraparound_discrepancy",
+    "predicted_error",
+    "prediction_ratio",
+    "local_slope",
+    "rounding_level"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
-inline constexpr std::array<std::string_view, 5> slopes_csv_added_columns = {
-    "smoothness", "fit_status", "attainable_accuracy", "theory_note", "envelope_ratio"};
+inline constexpr std::array<std::string_view, 12> slopes_csv_added_columns = {
+    "smoothness",       "fit_status",       "attainable_accuracy",    "theory_note",
+    "envelope_ratio",   "verdict_reason",   "class_theory",           "asymptotic_from_n",
+    "asymptotic_slope", "predicted_points", "worst_prediction_ratio", "rounding_model"};
 
 // Text of the two files (header line first).
 std::string convergence_csv_text(std::string_view scene, std::span<const convergence_table> tables);
@@ -108,6 +130,8 @@ struct convergence_record {
   double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();     // NaN: or absent
   double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();    // NaN: or absent
   double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();  // NaN: or absent
+  double predicted_error = std::numeric_limits<double>::quiet_NaN();         // NaN: none, or absent
+  double prediction_ratio = std::numeric_limits<double>::quiet_NaN();        // NaN: none, or absent
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.
@@ -124,6 +148,8 @@ struct slope_record {
   std::size_t points_used = 0;
   std::size_t floor_points = 0;
   double envelope_ratio = std::numeric_limits<double>::quiet_NaN();  // NaN: empty or absent
+  std::string verdict_reason;                                        // empty when absent
+  double class_theory = std::numeric_limits<double>::quiet_NaN();    // NaN: empty or absent
 };
 
 // Throw invalid_argument naming file, line and column for a missing column or unparsable value.
