@@ -68,7 +68,7 @@ unindented=$(tail -n +2 <<<"$description" | grep -v '^ ' || true)
 [ -z "$unindented" ] || fail "Description: long-part line not indented: $(head -n 1 <<<"$unindented")"
 
 # Depends as a list of package names (versions and alternatives stripped).
-depends=$(field Depends | tr ',|' '\n\n' | sed 's/(.*)//; s/:any//; s/^[ \t]*//; s/[ \t]*$//' |
+depends=$(field Depends | tr ',|' '\n' | sed 's/(.*)//; s/:any//; s/^[ \t]*//; s/[ \t]*$//' |
   sed '/^$/d' | sort -u)
 depends_on() { grep -Fqx "$1" <<<"$depends"; }
 
