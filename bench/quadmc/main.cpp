@@ -33,6 +33,7 @@
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
 
+#include "build_provenance.hpp"
 #include "catalogue_listing.hpp"
 #include "interruption.hpp"
 #include "plot_script.hpp"
@@ -255,7 +256,7 @@ int run_command(const run_request& request, standard_output& out) {
     info.threads = result.threads;
     info.threads_allowed = result.threads_allowed;
     info.machine = machine_description();
-    info.build = quadmc_cli::build_provenance();
+    info.build = quadmc::bench::build_provenance();
     info.run_seconds = result.seconds;
     for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
     for (const auto& skip : result.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
