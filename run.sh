@@ -8,6 +8,8 @@
 #   ./run.sh format     check that every C++ file is clang-format clean
 #   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
 #   ./run.sh consumer   install the package into a prefix and build an outside find_package user
+#   ./run.sh package    build the Debian package (cpack -G DEB) → build/package/deb/quadmc_*.deb
+#                       and check it extracted into a scratch root (tests/package/check_package.sh)
 #   ./run.sh deps       only install what is missing (idempotent: does nothing when all is present)
 #   ./run.sh packages   print every package of every install list, one per line (.ci/run uses it)
 #
@@ -39,6 +41,11 @@ BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubatur
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)
+# The Debian package: the library and the command (no tests, no benchmarks), CPack's DEB generator
+# with dpkg-shlibdeps (dpkg-dev) and `file` to declare the shared libraries it needs, and the
+# plots, since its check runs the extracted command with plots on.
+PACKAGE_PACKAGES=(build-essential cmake ninja-build pkg-config libboost-dev libfmt-dev libcli11-dev
+                  libtomlplusplus-dev librandom123-dev dpkg-dev file "${PLOT_PACKAGES[@]}")
 
 install_missing() {
   local missing=()
@@ -55,11 +62,12 @@ install_missing() {
 
 case "${1:-}" in
   deps)
-    install_missing "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" "${FORMAT_PACKAGES[@]}"
+    install_missing "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" "${FORMAT_PACKAGES[@]}" \
+      "${PACKAGE_PACKAGES[@]}"
     ;;
   packages)
     printf '%s\n' "${BENCH_PACKAGES[@]}" "${TEST_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
-      "${FORMAT_PACKAGES[@]}" | sort -u
+      "${FORMAT_PACKAGES[@]}" "${PACKAGE_PACKAGES[@]}" | sort -u
     ;;
   bench)
     install_missing "${BENCH_PACKAGES[@]}"
@@ -100,8 +108,21 @@ case "${1:-}" in
     cmake --build build/consumer
     ./build/consumer/consumer
     ;;
+  package)
+    install_missing "${PACKAGE_PACKAGES[@]}"
+    cmake --preset package >/dev/null
+    cmake --build --preset package
+    rm -rf build/package/deb
+    cpack -G DEB --config build/package/CPackConfig.cmake -B build/package/deb >/dev/null
+    debs=(build/package/deb/quadmc_*.deb)
+    if [ ${#debs[@]} -ne 1 ] || [ ! -f "${debs[0]}" ]; then
+      echo "run.sh: expected one build/package/deb/quadmc_*.deb, found: ${debs[*]}" >&2
+      exit 1
+    fi
+    tests/package/check_package.sh "${debs[0]}" build/package-check
+    ;;
   *)
-    echo "usage: ./run.sh bench | test | sanitize | format | fuzz [SECONDS] | consumer | deps | packages" >&2
+    echo "usage: ./run.sh bench | test | sanitize | format | fuzz [SECONDS] | consumer | package | deps | packages" >&2
     exit 2
     ;;
 esac

@@ -5,7 +5,7 @@
 // of coordinates) with the same references, for s ∈ {1, 2, 4, 8}: evaluations per second, time to
 // 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the answer.
 //
-//   quadmc_peers [--out DIR] [--quick]        writes DIR/peers.csv and DIR/README.md
+//   quadmc_peers [--out DIR] [--quick]        writes DIR/peers.csv, DIR/meta.csv, DIR/README.md
 //   quadmc_peers --one METHOD INTEGRAND S N THREADS
 //                                             one method once; prints its peak RSS in KiB
 //   /usr/bin/python3 bench/peers/plot_peers.py DIR   then draws DIR/work_precision_*.svg
@@ -15,6 +15,7 @@
 // report.hpp (CSV and Markdown). Not a test and not part of CI: the full run takes about two
 // minutes on 2 cores, and nothing in it is asserted (targets are reported, met or not).
 // Exit status: 0 done, 1 a failed run (one line on stderr), 2 a command-line error.
+#include "build_provenance.hpp"
 #include "measurement.hpp"
 #include "peak_memory.hpp"
 #include "report.hpp"
@@ -73,6 +74,7 @@ int study_command(const std::filesystem::path& out, bool quick) {
   const auto start = std::chrono::steady_clock::now();
   const configuration c = quick ? quick_configuration() : configuration{};
   study st;
+  st.build = quadmc::bench::build_provenance();
   st.load_before = load_average();
   measure_methods(c, st);
   measure_peak_memory(c, st);
@@ -81,8 +83,9 @@ int study_command(const std::filesystem::path& out, bool quick) {
 
   std::filesystem::create_directories(out);
   write_csv(out / "peers.csv", st.rows);
+  write_meta_csv(out / quadmc::meta_csv_file, st);
   write_markdown_report(out / "README.md", c, st);
-  std::cerr << fmt::format("wrote {}/peers.csv and README.md in {:.0f} s\n", out.string(),
+  std::cerr << fmt::format("wrote {}/peers.csv, meta.csv and README.md in {:.0f} s\n", out.string(),
                            st.wall_seconds);
   return 0;
 }

@@ -6,6 +6,7 @@
 #include "quadmc/core/simd_level.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gsl/gsl_version.h>
 #include <boost/version.hpp>
 
@@ -127,6 +128,10 @@ class report {
         cpu_model(), std::thread::hardware_concurrency(),
         quadmc::to_string(quadmc::active_simd_level()), __VERSION__, QUADMC_PEERS_BUILD,
         GSL_VERSION, BOOST_LIB_VERSION, st_.wall_seconds, st_.load_before, st_.load_after);
+    // The same fields, in the same words, as the header of a `quadmc run` page and meta.csv.
+    o << fmt::format("- quadmc: {}, commit {}\n- compiler: {}\n- SIMD levels available: {}\n\n",
+                     st_.build.version, st_.build.commit, st_.build.compiler,
+                     fmt::join(st_.build.simd_levels_available, ", "));
     o << "How it is timed: std::chrono::steady_clock around one whole call of each method "
          "(set-up included: point-set construction, GSL state and generator allocation). "
          "**Throughput** rows: N ≥ 4·10⁶ evaluations (2^22 for the Monte Carlo methods; "
@@ -427,6 +432,14 @@ void write_csv(const std::filesystem::path& path, const std::vector<row>& rows) 
         r.run, r.family, r.control, r.repetitions,
         r.run == "throughput" ? fmt::format("{:.6g}", r.cpu_seconds) : std::string());
   }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");
+}
+
+void write_meta_csv(const std::filesystem::path& path, const study& st) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out << quadmc::meta_csv_text(st.build);
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");
 }

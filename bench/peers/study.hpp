@@ -6,6 +6,8 @@
 // (report.hpp). Not the place for how anything is measured or printed.
 #pragma once
 
+#include "quadmc/report/provenance.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -88,6 +90,7 @@ struct study {
   std::vector<rss_row> rss;
   long rss_baseline_kib = 0;  // the same child doing no integration
   double wall_seconds = 0.0;  // the whole run
+  quadmc::provenance build;   // what made the numbers (meta.csv, the README's machine paragraph)
 };
 
 }  // namespace quadmc::peers

@@ -44,8 +44,12 @@ void kill_child(pid_t child) {
 
 [[noreturn]] void on_signal(int signal) {
   shared_state& s = state();
-  // Kill first, without the mutex: the main thread waits for the child without holding it.
-  kill_child(s.child.load());
+  // The mutex before the kill, never after: the main thread, waiting for the child without the
+  // mutex, wakes when the child dies and takes the mutex to clear the child, so a child killed
+  // first let it win the mutex, report the plot as failed (exit status 137) and exit 1 before
+  // this thread could clean up and exit 128 + signal. Holding the mutex first, the kill makes
+  // the main thread stop at that step. It is never held while a child runs, so the kill is not
+  // delayed past the short step (a write, a progress-bar update) the main thread may be in.
   s.mutex.lock();  // never unlocked: this thread ends the process
   const pid_t child = s.child.load();
   kill_child(child);

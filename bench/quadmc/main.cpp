@@ -33,12 +33,15 @@
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
 
+#include "build_provenance.hpp"
 #include "catalogue_listing.hpp"
 #include "interruption.hpp"
+#include "plot_script.hpp"
 #include "points_command.hpp"
 #include "progress_bar.hpp"
 #include "results_staging.hpp"
 #include "subprocess.hpp"
+#include "version.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -110,12 +113,13 @@ std::string machine_description() {
 // Before the run, not after it: a missing matplotlib found by the plot step would throw away the
 // whole computation.
 void check_plotting() {
-  const std::string python = quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, "").front();
+  const fs::path script = quadmc_cli::plot_script_path();
+  const std::string python = quadmc::plot_command_line(script, "").front();
   std::error_code ec;
-  if (!fs::is_regular_file(QUADMC_PLOT_SCRIPT, ec)) {
+  if (!fs::is_regular_file(script, ec)) {
     throw std::runtime_error(fmt::format(
         "plots need the plot script {}, which is missing (or set plots = false in [output])",
-        QUADMC_PLOT_SCRIPT));
+        script.string()));
   }
   if (::access(python.c_str(), X_OK) != 0) {
     throw std::runtime_error(fmt::format(
@@ -136,7 +140,10 @@ void check_plotting() {
 std::vector<std::string> result_file_names(const quadmc::plan& p) {
   std::vector<std::string> files;
   const quadmc::output_spec& output = p.source.output;
-  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
+  if (output.csv) {
+    files.insert(files.end(),
+                 {"convergence.csv", "slopes.csv", std::string(quadmc::meta_csv_file)});
+  }
   if (output.markdown) files.emplace_back("README.md");
   if (output.plots) {
     std::set<std::pair<std::string, std::size_t>> groups;
@@ -250,7 +257,7 @@ int run_command(const run_request& request, standard_output& out) {
     info.threads = result.threads;
     info.threads_allowed = result.threads_allowed;
     info.machine = machine_description();
-    info.compiler = fmt::format("{} ({})", QUADMC_COMPILER, QUADMC_BUILD_TYPE);
+    info.build = quadmc::bench::build_provenance();
     info.run_seconds = result.seconds;
     for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
     for (const auto& skip : result.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
@@ -262,7 +269,8 @@ int run_command(const run_request& request, standard_output& out) {
       quadmc::write_results_folder(staging.staging(), info, tables, files);
     }
     if (outputs.plots) {
-      quadmc_cli::run_subprocess(quadmc::plot_command_line(QUADMC_PLOT_SCRIPT, staging.staging()));
+      quadmc_cli::run_subprocess(
+          quadmc::plot_command_line(quadmc_cli::plot_script_path(), staging.staging()));
     }
     {
       const auto held = interruption::hold();
@@ -325,6 +333,10 @@ int main(int argc, char** argv) {
   CLI::App app{"quadmc: convergence of quadrature rules against Monte Carlo"};
   app.footer(std::string(exit_status_help));
   app.require_subcommand(1);
+  // Handled below, not by CLI11, so that its output is checked like every other (standard_output).
+  app.set_version_flag("--version", std::string(),
+                       "Print the version, git commit, compiler, SIMD levels and plot script");
+  bool version = false;
 
   run_request request;
   unsigned threads = 0;
@@ -359,6 +371,8 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForVersion&) {
+    version = true;
   } catch (const CLI::ParseError& e) {
     // --help is a ParseError with exit code 0: CLI11 prints the help on stdout.
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
@@ -371,6 +385,11 @@ int main(int argc, char** argv) {
   try {
     // A bad QUADMC_SIMD is reported before any work, not from inside the first batch.
     (void)quadmc::active_simd_level();
+    if (version) {
+      out.print(quadmc_cli::version_text());
+      if (out.failed()) throw std::runtime_error(out.message());
+      return 0;
+    }
     if (*run) return run_command(request, out);
     if (*plan) return plan_command(plan_file, out);
     if (*list) {

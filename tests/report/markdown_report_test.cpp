@@ -218,12 +218,39 @@ TEST(MarkdownReport, DescriptionAndThreadsUsedAreOnThePage) {
   EXPECT_NE(render_results_markdown(info, tables).find("- threads: 1\n"), std::string::npos);
 }
 
+TEST(MarkdownReport, HeaderNamesWhatMadeThePage) {
+  run_info info;
+  info.scene = "traced";
+  info.machine = "2 hardware threads, SIMD level avx2 (QUADMC_SIMD to choose)";
+  info.build.version = "0.1.0";
+  info.build.commit = "0123456789abcdef0123456789abcdef01234567";
+  info.build.compiler = "GNU 12.2.0 (Release)";
+  info.build.simd_levels_available = {"scalar", "sse2", "avx2"};
+  info.build.simd_level = "avx2";
+  const std::string page = render_results_markdown(info, sample_tables());
+  EXPECT_NE(page.find("- quadmc: 0.1.0, commit 0123456789abcdef0123456789abcdef01234567\n"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("- compiler: GNU 12.2.0 (Release)\n"), std::string::npos) << page;
+  EXPECT_NE(page.find("- SIMD levels available: scalar, sse2, avx2\n"), std::string::npos) << page;
+  // .ci/run reads the level a page ran at from its first "SIMD level <name>": the machine line,
+  // which the list of available levels must not precede or imitate.
+  const std::size_t first = page.find("SIMD level ");
+  ASSERT_NE(first, std::string::npos) << page;
+  EXPECT_EQ(page.substr(first, std::string("SIMD level avx2 ").size()), "SIMD level avx2 ");
+  EXPECT_EQ(page.find("SIMD level ", first + 1), std::string::npos) << page;
+  // A caller that does not know (a library user's own run_info) gets no such lines.
+  const std::string bare = render_results_markdown(run_info{}, sample_tables());
+  EXPECT_EQ(bare.find("- quadmc:"), std::string::npos) << bare;
+  EXPECT_EQ(bare.find("SIMD levels available"), std::string::npos) << bare;
+}
+
 TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   run_info info;
   info.scene = "default";
   info.seed = 42;
   info.threads = 2;
-  info.compiler = "GCC 12.2.0";
+  info.build.compiler = "GCC 12.2.0";
   info.run_seconds = 12.5;
   info.skipped = {"simpson s = 6: 7^6 > budget"};
   const auto tables = sample_tables();

@@ -1,8 +1,9 @@
-// Tests for results_folder.hpp: the three files appear together and agree.
+// Tests for results_folder.hpp: the files appear together and agree.
 #include "quadmc/report/results_folder.hpp"
 
 #include "../analysis/series_builder.hpp"
 
+#include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
 
 #include <fmt/format.h>
@@ -51,9 +52,25 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   const std::vector<convergence_table> tables = {analyse_convergence(s)};
   run_info info;
   info.scene = "unit";
+  info.build.version = "9.8.7";
+  info.build.commit = "unknown";
+  info.build.compiler = "GNU 12.2.0 (RelWithDebInfo)";
+  info.build.simd_levels_available = {"scalar", "sse2"};
+  info.build.simd_level = "scalar";
   const fs::path folder = dir.path / "results" / "unit";  // nested: created on demand
   write_results_folder(folder, info, tables);
   EXPECT_TRUE(fs::exists(folder / "README.md"));
+  // What made the CSV files is recorded beside them, and the page says the same.
+  const provenance meta = read_meta_csv(folder / "meta.csv");
+  EXPECT_EQ(meta.version, "9.8.7");
+  EXPECT_EQ(meta.commit, "unknown");
+  EXPECT_EQ(meta.compiler, "GNU 12.2.0 (RelWithDebInfo)");
+  EXPECT_EQ(meta.simd_levels_available, (std::vector<std::string>{"scalar", "sse2"}));
+  EXPECT_EQ(meta.simd_level, "scalar");
+  std::ifstream readme(folder / "README.md");
+  const std::string page((std::istreambuf_iterator<char>(readme)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("- quadmc: 9.8.7, commit unknown\n"), std::string::npos) << page;
   EXPECT_EQ(read_convergence_csv(folder / "convergence.csv").size(), 4u);
   const auto slopes = read_slopes_csv(folder / "slopes.csv");
   ASSERT_EQ(slopes.size(), 1u);
@@ -111,6 +128,7 @@ TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
   EXPECT_TRUE(fs::exists(dir.path / "README.md"));
   EXPECT_FALSE(fs::exists(dir.path / "convergence.csv"));
   EXPECT_FALSE(fs::exists(dir.path / "slopes.csv"));
+  EXPECT_FALSE(fs::exists(dir.path / "meta.csv")) << "meta.csv describes the CSV files";
 }
 
 TEST(ResultsFolder, PlotCommandLine) {
@@ -122,13 +140,13 @@ TEST(ResultsFolder, PlotCommandLine) {
 }
 
 TEST(ResultsFolder, ResultsFileNamesAreWhatARunWrites) {
-  for (const char* name : {"convergence.csv", "slopes.csv", "README.md", "error_exp_s=1.svg",
-                           "exp_s1.svg", "work_precision_gaussian_s3.svg"}) {
+  for (const char* name : {"convergence.csv", "slopes.csv", "meta.csv", "README.md",
+                           "error_exp_s=1.svg", "exp_s1.svg", "work_precision_gaussian_s3.svg"}) {
     EXPECT_TRUE(is_results_file_name(name)) << name;
   }
   // Near misses: other cases, other files, a bare extension (a hidden file, not a plot).
   for (const char* name : {"readme.md", "README.txt", "notes.txt", "thesis.tex", ".svg", "svg",
-                           "plot.svg.bak", "convergence.csv~", ""}) {
+                           "plot.svg.bak", "convergence.csv~", "meta.csv.bak", "Meta.csv", ""}) {
     EXPECT_FALSE(is_results_file_name(name)) << name;
   }
 }

@@ -4,6 +4,7 @@
 #include "quadmc/analysis/estimate_reliability.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -267,7 +268,16 @@ std::string render_results_markdown(const run_info& info,
                            info.threads, info.threads_allowed)
              : fmt::format("- threads: {}\n", info.threads);
   if (!info.machine.empty()) out += fmt::format("- machine: {}\n", info.machine);
-  if (!info.compiler.empty()) out += fmt::format("- compiler: {}\n", info.compiler);
+  // What made the page, as `quadmc --version` says it and meta.csv records it.
+  if (!info.build.version.empty()) {
+    out += fmt::format("- quadmc: {}, commit {}\n", info.build.version,
+                       info.build.commit.empty() ? "unknown" : info.build.commit);
+  }
+  if (!info.build.compiler.empty()) out += fmt::format("- compiler: {}\n", info.build.compiler);
+  if (!info.build.simd_levels_available.empty()) {
+    out += fmt::format("- SIMD levels available: {}\n",
+                       fmt::join(info.build.simd_levels_available, ", "));
+  }
   out += fmt::format("- run time: {:.3g} s\n\n", info.run_seconds);
   out +=
       "Slopes are of the RMSE over repetitions (|error| for a deterministic rule, which runs "

@@ -1,7 +1,8 @@
-// write_results_folder: the three text files of a results folder (results_folder.hpp).
+// write_results_folder: the text files of a results folder (results_folder.hpp).
 #include "quadmc/report/results_folder.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
 
 #include <fstream>
@@ -28,13 +29,14 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
   if (outputs.csv) {
     write_text(folder / "convergence.csv", convergence_csv_text(info.scene, tables));
     write_text(folder / "slopes.csv", slopes_csv_text(info.scene, tables));
+    write_text(folder / meta_csv_file, meta_csv_text(info.build));
   }
   if (outputs.markdown) write_text(folder / "README.md", render_results_markdown(info, tables));
 }
 
 bool is_results_file_name(std::string_view name) {
-  return name == "convergence.csv" || name == "slopes.csv" || name == "README.md" ||
-         (name.size() > 4 && name.ends_with(".svg"));
+  return name == "convergence.csv" || name == "slopes.csv" || name == meta_csv_file ||
+         name == "README.md" || (name.size() > 4 && name.ends_with(".svg"));
 }
 
 std::vector<std::string> plot_command_line(const std::filesystem::path& script,

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/report/provenance.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -25,7 +26,7 @@ struct run_info {
   unsigned threads = 0;              // threads the run really used (run_output::threads)
   unsigned threads_allowed = 0;      // the limit it had; 0 or equal to threads: not repeated
   std::string machine;               // e.g. "x86_64, 2 cores"
-  std::string compiler;              // e.g. "GCC 12.2.0 -O2"
+  provenance build;                  // version, commit, compiler, SIMD levels (also meta.csv)
   double run_seconds = 0.0;          // wall time of the whole run
   std::vector<std::string> skipped;  // the plan's skipped cells, with their reason
 };

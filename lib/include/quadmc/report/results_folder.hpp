@@ -1,8 +1,8 @@
-// Writes a results folder: results/<scene>/{convergence.csv, slopes.csv, README.md}; the SVGs
-// are added by bench/plot.py, run as plot_command_line(script, folder) after this.
+// Writes a results folder: results/<scene>/{convergence.csv, slopes.csv, meta.csv, README.md};
+// the SVGs are added by bench/plot.py, run as plot_command_line(script, folder) after this.
 //
 // Use it once per run, after analyse_convergence on every series. Not for partial output: the
-// three files are written together from the same tables, so they never disagree.
+// files are written together from the same tables and run_info, so they never disagree.
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
@@ -20,7 +20,8 @@ namespace quadmc {
 // docs/design.md#skip-what-a-scene-does-not-need). bench/plot.py reads the CSV files, so a scene
 // that wants plots needs csv = true.
 struct results_outputs {
-  bool csv = true;       // convergence.csv and slopes.csv
+  bool csv = true;       // convergence.csv, slopes.csv and meta.csv (provenance.hpp: what made
+                         // them, from run_info::build)
   bool markdown = true;  // README.md
 };
 
@@ -31,7 +32,8 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
                           const results_outputs& outputs = {});
 
 // True for the names of the files a run writes into a results folder: convergence.csv,
-// slopes.csv, README.md and plots (*.svg, including the names of earlier versions). Only the
+// slopes.csv, meta.csv, README.md and plots (*.svg, including the names of earlier versions).
+// The output-folder rules of `quadmc run` replace a folder only when every entry passes. Only the
 // name: whether the entry is a regular file (a folder "figures.svg" is not a plot) is the
 // caller's check, since it needs the file system.
 bool is_results_file_name(std::string_view name);
