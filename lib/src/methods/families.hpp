@@ -21,6 +21,12 @@ point_set_option read_point_set(option_reader& options);
 // N → the largest count the set holds (k^s for stratified sets): a cell size for Monte Carlo.
 sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s);
 
+// Where a cell's error bars come from for points of this error source: a randomized
+// quasi-Monte Carlo set's single run has no error estimate of its own, its replicates do.
+inline error_bars error_bars_of(error_source source) noexcept {
+  return source == error_source::replicates ? error_bars::replicates : error_bars::own;
+}
+
 // A Monte Carlo estimate as one repetition: its standard error is also its own error estimate.
 repetition_result from_estimate(const estimate& e);
 

@@ -108,11 +108,7 @@ class importance_method final : public method {
     return point_set_sizing(*points_.set, N, s);
   }
 
-  // A quasi-Monte Carlo set's u give one run no error estimate: the replicates do.
-  quadmc::error_bars error_bars() const override {
-    return points_.set->errors == error_source::replicates ? error_bars::replicates
-                                                           : error_bars::own;
-  }
+  quadmc::error_bars error_bars() const override { return error_bars_of(points_.set->errors); }
 
   theoretical_rate theory(const integrand_class& f) const override {
     return root_n_rate(f, "(∫f²/p − I²)/N; zero variance (no slope, rounding floor) iff p ∝ f ≥ 0",

@@ -31,11 +31,7 @@ class irradiance_method final : public method {
     return point_set_sizing(*points_.set, N, s);
   }
 
-  // A quasi-Monte Carlo set's u give one run no error estimate: the replicates do.
-  quadmc::error_bars error_bars() const override {
-    return points_.set->errors == error_source::replicates ? error_bars::replicates
-                                                           : error_bars::own;
-  }
+  quadmc::error_bars error_bars() const override { return error_bars_of(points_.set->errors); }
 
   // Uniform-hemisphere, cosine-weighted and light-area sampling are importance sampling with
   // bounded weights: finite variance, so σ/√N; only the constant σ differs

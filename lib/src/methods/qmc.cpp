@@ -59,8 +59,7 @@ class qmc_method final : public method {
   }
 
   quadmc::error_bars error_bars() const override {
-    return set_->errors_with(options_.set) == error_source::replicates ? error_bars::replicates
-                                                                       : error_bars::own;
+    return error_bars_of(set_->errors_with(options_.set));
   }
 
   std::string label_suffix() const override {
