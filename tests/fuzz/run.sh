@@ -43,7 +43,7 @@ for source in $(ls lib/src/{core,functions,rules,sampling,estimators,analysis,me
 done
 wait
 "$CXX" "${flags[@]}" -fsanitize=fuzzer tests/fuzz/scene_parser_fuzz.cpp "${objects[@]}" \
-  -lfmt -lmvec -lpthread -o "$out/scene_parser_fuzz"
+  -lfmt -lquadrule -lQuantLib -lmvec -lpthread -o "$out/scene_parser_fuzz"
 
 # Seed corpus: the real scenes and the inputs that once broke the parser (regressions/), copied
 # fresh each run (the fuzzer adds its finds beside them).
