@@ -3,6 +3,7 @@
 // bars, and the rates on integrands no other test names: Owen-scrambled Sobol' at −3/2 on a Genz
 // Gaussian in s = 2, the baker's lattice at −2, the digital shift and the two anti-patterns
 // clearly shallower than the scramble.
+#include "method_error.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/functions/catalogue.hpp"
@@ -17,15 +18,6 @@
 
 namespace quadmc {
 namespace {
-
-std::string error_of(std::string_view method, const option_table& options) {
-  try {
-    make_method(method, options);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 TEST(QmcMethods, MapNToThePowerOfTwoBelowUnlessAskedNotTo) {
   const auto sobol = make_method("sobol");

@@ -1,5 +1,6 @@
 // Tests of registry.hpp and option_map.hpp: the one table of methods, configured from C++.
 #include "quadmc/methods/registry.hpp"
+#include "method_error.hpp"
 
 #include "quadmc/core/errors.hpp"
 
@@ -62,15 +63,6 @@ TEST(MethodRegistry, DeterministicMethodsAreTheRules) {
                       d->name == "adaptive_sparse_grid" || d->name == "genz_malik";
     EXPECT_EQ(d->kind == method_kind::deterministic, rule) << d->name;
   }
-}
-
-std::string error_of(std::string_view method, const option_table& options) {
-  try {
-    make_method(method, options);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(MethodRegistry, MakeMethodChecksNameAndKeys) {

@@ -1,5 +1,6 @@
 // Tests of the tensor-rule methods (lib/src/methods/tensor_rules.cpp): the exact N → grid mapping,
 // explicit panels, the options' checks, and that a method runs its rule.
+#include "method_error.hpp"
 #include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/integer_powers.hpp"
@@ -147,15 +148,6 @@ TEST(TensorRuleMethods, ExplicitPanelsReplaceTheLadder) {
   const sizing too_big = huge->explicit_sizes(3).front();
   EXPECT_FALSE(too_big.size);
   EXPECT_NE(too_big.reason.find("do not fit in 64 bits"), std::string::npos) << too_big.reason;
-}
-
-std::string error_of(std::string_view method, const option_table& options) {
-  try {
-    make_method(method, options);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(TensorRuleMethods, OptionsAreCheckedWithTheirReasons) {
