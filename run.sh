@@ -50,7 +50,9 @@ PACKAGE_PACKAGES=(build-essential cmake ninja-build pkg-config libboost-dev libf
 install_missing() {
   local missing=()
   for p in "$@"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    # No `| grep -q`: with pipefail, grep leaving early can SIGPIPE the writer (exit 141).
+    [ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" = "install ok installed" ] ||
+      missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
   echo "run.sh: installing ${missing[*]}" >&2

@@ -24,6 +24,10 @@
 # Not for: the install rules under any prefix (tests/cli/installed_layout_test.cpp) or the
 # package's reproducibility; it does not install the package into the system.
 set -euo pipefail
+# Under pipefail a reader that stops early (grep -q, head, awk's exit) can kill the writer with
+# SIGPIPE and fail the whole pipeline with 141, depending on how much the writer had buffered:
+# CI once stopped here at `ldconfig -p | awk ... exit`. So every early-stopping reader below reads
+# a file or a here-string, never a pipe.
 
 if [ $# -ne 2 ]; then
   echo "usage: tests/package/check_package.sh PACKAGE.deb SCRATCH_FOLDER" >&2
@@ -81,8 +85,9 @@ libdir=usr/lib/$multiarch
 # Every shared library the command needs at run time comes from a package it depends on.
 readelf -d "$root/usr/bin/quadmc" | sed -n 's/.*(NEEDED).*\[\(.*\)\].*/\1/p' >"$scratch/needed.txt"
 [ -s "$scratch/needed.txt" ] || fail "usr/bin/quadmc: readelf found no NEEDED library"
+ldconfig -p >"$scratch/ldconfig.txt"
 while read -r soname; do
-  path=$(ldconfig -p | awk -v soname="$soname" '$1 == soname { print $NF; exit }')
+  path=$(awk -v soname="$soname" '$1 == soname { print $NF; exit }' "$scratch/ldconfig.txt")
   if [ -z "$path" ]; then
     fail "usr/bin/quadmc needs $soname, which this machine cannot find (ldconfig -p)"
     continue
@@ -104,8 +109,9 @@ for dev in libfmt-dev libboost-dev libtomlplusplus-dev librandom123-dev libquadr
   libquantlib0-dev; do
   depends_on "$dev" || fail "Depends: expected $dev (quadmcConfig.cmake needs it), got: $(field Depends)"
 done
+recommends=$(field Recommends | tr ',' '\n' | sed 's/^[ \t]*//; s/[ \t(].*//')
 for recommended in python3 python3-matplotlib; do
-  field Recommends | tr ',' '\n' | sed 's/^[ \t]*//; s/[ \t(].*//' | grep -qx "$recommended" ||
+  grep -qx "$recommended" <<<"$recommends" ||
     fail "Recommends: expected $recommended (the plots), got '$(field Recommends)'"
 done
 
@@ -152,9 +158,9 @@ unexpected=$(cd "$root" && find usr/bin -type f ! -name quadmc)
 # The peers (GPL: GSL, cubature) stay out by name and by link; the library's own Genz-Malik
 # header rules/adaptive_cubature.hpp is no peer, so file names alone cannot say "cubature".
 grep -Eq 'quadmc_peers|/peers/|_tests|_bench' "$scratch/contents.txt" &&
-  fail "file list: a peer, test or benchmark file is in the package: $(grep -E 'quadmc_peers|/peers/|_tests|_bench' "$scratch/contents.txt" | head -n 1)"
+  fail "file list: a peer, test or benchmark file is in the package: $(grep -m 1 -E 'quadmc_peers|/peers/|_tests|_bench' "$scratch/contents.txt")"
 grep -Eq '^lib(gsl|cubature)' "$scratch/needed.txt" &&
-  fail "usr/bin/quadmc links a GPL peer library: $(grep -E '^lib(gsl|cubature)' "$scratch/needed.txt" | head -n 1)"
+  fail "usr/bin/quadmc links a GPL peer library: $(grep -m 1 -E '^lib(gsl|cubature)' "$scratch/needed.txt")"
 
 # --- the extracted files at work --------------------------------------------------------------
 quadmc=$root/usr/bin/quadmc
