@@ -102,6 +102,19 @@ TEST(PointSetCatalogue, AcceptsSizeFollowsTheStratificationPolicy) {
                invalid_argument);
 }
 
+// The planner maps N to the largest k² for padded_jittered (largest_point_count); the set itself
+// holds exactly those counts, so `quadmc points` and the methods agree on which N exist.
+TEST(PointSetCatalogue, PaddedJitteredHoldsSquaresInTwoOrMoreDimensions) {
+  const point_set_entry& padded = *find_point_set("padded_jittered");
+  EXPECT_TRUE(accepts_size(padded, 2, 100));
+  EXPECT_TRUE(accepts_size(padded, 5, 961));
+  EXPECT_TRUE(accepts_size(padded, 1, 96));
+  EXPECT_FALSE(accepts_size(padded, 2, 96));
+  EXPECT_FALSE(accepts_size(padded, 3, 13));
+  EXPECT_NE(size_problem(padded, 2, 96).find("nearest valid sizes 81 and 100"), std::string::npos)
+      << size_problem(padded, 2, 96);
+}
+
 TEST(PointSetCatalogue, LargestCountIsAPerfectPowerOrSquare) {
   EXPECT_EQ(largest_point_count(point_count::perfect_power, 4096, 3).per_axis, 16u);
   EXPECT_EQ(largest_point_count(point_count::perfect_power, 4095, 3).points, 3375u);

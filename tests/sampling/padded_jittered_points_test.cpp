@@ -2,13 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
 
 using namespace quadmc;
 
-// Every 2D group (axes 2g, 2g+1) is stratified on the kx × ky grid and a trailing 1D group on N
+// Every 2D group (axes 2g, 2g+1) is stratified on the k × k grid and a trailing 1D group on N
 // rows, for any s.
 void expect_groups_stratified(std::size_t s, std::uint64_t n) {
   const padded_jittered_points p(s, n, 3, 3);
@@ -36,13 +38,33 @@ TEST(PaddedJitteredPoints, EveryGroupIsStratified) {
   expect_groups_stratified(2, 64);
   expect_groups_stratified(5, 256);
   expect_groups_stratified(6, 100);
-  expect_groups_stratified(3, 96);  // not a square: 8 × 12
+  expect_groups_stratified(3, 81);
 }
 
-TEST(PaddedJitteredPoints, NonSquareNUsesTheMostSquareFactorisation) {
-  EXPECT_EQ(padded_jittered_points(2, 96, 1, 1).grid_columns(), 8u);
-  EXPECT_EQ(padded_jittered_points(2, 13, 1, 1).grid_columns(), 1u);  // prime: 1 × 13
-  expect_groups_stratified(4, 13);
+// N = k² in s ≥ 2, as the planner maps N (point_count::perfect_square): a non-square N would
+// need a kx × ky grid, 1 × N for prime N, which is not the stratification the rate assumes. The
+// message names the nearest squares.
+TEST(PaddedJitteredPoints, RejectsNonSquareNInTwoOrMoreDimensions) {
+  for (const std::size_t s : {2u, 3u, 4u}) {
+    try {
+      padded_jittered_points(s, 96, 1, 1);
+      ADD_FAILURE() << "N = 96 accepted in s = " << s;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("81 = 9² or 100 = 10²"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(padded_jittered_points(2, 13, 1, 1), std::invalid_argument);
+  EXPECT_EQ(padded_jittered_points(2, 100, 1, 1).grid_columns(), 10u);
+  EXPECT_EQ(padded_jittered_points(2, 100, 1, 1).grid_rows(), 10u);
+  EXPECT_TRUE(padded_jittered_points::is_valid_size(2, 1));
+  EXPECT_FALSE(padded_jittered_points::is_valid_size(5, 2));
+}
+
+// In 1D the one group is N strata of width 1/N: any N.
+TEST(PaddedJitteredPoints, AcceptsAnyNInOneDimension) {
+  EXPECT_TRUE(padded_jittered_points::is_valid_size(1, 13));
+  expect_groups_stratified(1, 13);
+  expect_groups_stratified(1, 96);
 }
 
 // Groups are associated at random: the strata of group 0 and group 1 of the same point do not

@@ -393,6 +393,14 @@ std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_
       }
       break;
     case point_count::perfect_square:
+      if (!padded_jittered_points::is_valid_size(s, n)) {
+        const std::uint64_t k = integer_root(n, 2);
+        return fmt::format(
+            "N = k² in s ≥ 2 (k × k strata per pair of dimensions), nearest valid "
+            "sizes {} and {}",
+            k * k, (k + 1) * (k + 1));
+      }
+      break;
     case point_count::any:
       break;
   }

@@ -5,18 +5,23 @@
 //
 // Use it when s is too high for k^s strata but the integrand's important interactions are
 // between pairs of coordinates (dimensions 2g and 2g+1 form group g): each group's projection is
-// stratified, for any N and any s. Not a stratification of the whole cube: interactions across
-// groups are sampled like plain Monte Carlo.
+// stratified, for any s. Not a stratification of the whole cube: interactions across groups are
+// sampled like plain Monte Carlo.
 //
-// Any N: a 2D group uses the kx × ky grid with kx·ky = N and kx the largest divisor of N with
-// kx ≤ √N, found once at construction in O(√N) steps (a square grid when N is a square; for
-// prime N it degrades to 1 × N, i.e. stratified in one coordinate only — documented, not
-// hidden). A 1D group is N strata of width 1/N.
+// N = k² in s ≥ 2 (a 2D group is the k × k grid), any N in 1D (N strata of width 1/N); other N
+// are rejected with the nearest squares, as stratum_grid rejects N ≠ k^s. The one-point-per-
+// stratum rate of a 2D group (docs/theory.md#padded-jittered) needs strata of width O(N^−1/2)
+// along both axes; a kx × ky grid with kx·ky = N would degrade to 1 × N for prime N (stratified
+// in one coordinate only) and give a rate that depends on N's factors, not on N. The planner maps
+// a scene's N to the largest k² (estimators/point_set_catalogue.hpp, point_count::perfect_square),
+// so a method never asks for another N.
 // Point i takes stratum π_g(i) in group g, with π_0 = identity and π_g (g ≥ 1) independent random
 // permutations (random_permutation: O(1) per point, memory constant in N) — the shuffle that
 // decorrelates the groups. Jitter of coordinate j of point i: uniform number i·s + j.
 #pragma once
 
+#include "quadmc/core/errors.hpp"
+#include "quadmc/core/integer_powers.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/sampling/point_set.hpp"
 #include "quadmc/sampling/random_permutation.hpp"
@@ -26,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace quadmc {
@@ -36,16 +42,30 @@ class padded_jittered_points {
                          std::uint64_t stream)
       : s_(dimension), n_(n), rng_(seed, stream) {
     require_point_set_size(dimension, n);
-    kx_ = 1;
-    for (std::uint64_t d = 1; d * d <= n_; ++d) {
-      if (n_ % d == 0) kx_ = d;
+    if (!is_valid_size(s_, n_)) {
+      const std::uint64_t k = integer_root(n_, 2);
+      throw invalid_argument("number of points N", quote(n_),
+                             "N = k² for padded jittered points in s ≥ 2 (k × k strata per pair "
+                             "of dimensions); nearest valid: " +
+                                 std::to_string(k * k) + " = " + std::to_string(k) + "² or " +
+                                 std::to_string((k + 1) * (k + 1)) + " = " + std::to_string(k + 1) +
+                                 "²");
     }
+    kx_ = s_ == 1 ? 1 : integer_root(n_, 2);
     ky_ = n_ / kx_;
     const std::size_t groups = (s_ + 1) / 2;
     permutations_.reserve(groups);
     for (std::size_t g = 0; g < groups; ++g) {
       permutations_.emplace_back(n_, rng_.bits(std::numeric_limits<std::uint64_t>::max() - g));
     }
+  }
+
+  // Whether the set holds exactly n points in s dimensions: n = k² for s ≥ 2, any n ≥ 1 in 1D.
+  static bool is_valid_size(std::size_t s, std::uint64_t n) noexcept {
+    if (s == 0 || n == 0) return false;
+    if (s == 1) return true;
+    const std::uint64_t k = integer_root(n, 2);
+    return k * k == n;
   }
 
   std::uint64_t size() const noexcept { return n_; }
