@@ -3,6 +3,7 @@
 #include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
+#include "quadmc/scene/parse.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -22,9 +23,15 @@ std::string catalogue_listing() {
     if (!e.parameters.empty())
       fmt::format_to(line, "  {:<24} {:<14} keys: {}\n", "", "", e.parameters);
   }
-  fmt::format_to(line,
-                 "\nmethods ([[method]] name = …; every method also takes label, integrands, "
-                 "repetitions, control, tolerances):\n");
+  std::vector<std::string_view> common;
+  for (const quadmc::scene_table_keys& t : quadmc::scene_keys()) {
+    if (t.table != "method") continue;
+    for (const std::string_view k : t.keys) {
+      if (k != "name") common.push_back(k);
+    }
+  }
+  fmt::format_to(line, "\nmethods ([[method]] name = …; every method also takes {}):\n",
+                 fmt::join(common, ", "));
   for (const quadmc::method_descriptor* m : quadmc::method_registry()) {
     std::vector<std::string_view> controls;
     for (const quadmc::cell_control c : m->controls) controls.push_back(quadmc::to_string(c));
@@ -39,6 +46,11 @@ std::string catalogue_listing() {
   fmt::format_to(line, "\npoint sets ([[method]] point_set = …, for importance/irradiance):\n");
   for (const auto& p : quadmc::point_set_catalogue()) {
     fmt::format_to(line, "  {:<30} {}\n", p.name, p.description);
+  }
+  fmt::format_to(line, "\nwarps ([[method]] warp = …, for importance):\n");
+  for (const quadmc::warp_descriptor& w : quadmc::importance_warps()) {
+    fmt::format_to(line, "  {:<30} {}; {{ name = \"{}\", {} = … }} (default {:g})\n", w.name,
+                   w.description, w.name, w.parameter, w.default_value);
   }
   return out;
 }

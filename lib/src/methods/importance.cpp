@@ -3,6 +3,7 @@
 // density and the stratification can be studied apart.
 #include "families.hpp"
 
+#include "quadmc/methods/registry.hpp"
 #include "quadmc/sampling/inversion_warps.hpp"
 
 #include <fmt/format.h>
@@ -15,28 +16,20 @@
 namespace quadmc::methods {
 namespace {
 
-// A warp a scene may name: its one parameter, the parameter's default and its valid range (the
-// warps' own bounds, sampling/inversion_warps.hpp explains them, checked when the scene is read
-// so that a run never reaches a warp that refuses its parameter).
-struct warp_choice {
-  std::string_view name;
-  unit_warp_kind kind;
-  std::string_view parameter;
-  double default_value;
-};
-constexpr std::array<warp_choice, 2> warps{{
-    {"power", unit_warp_kind::power, "exponent", 1.0},
-    {"exponential", unit_warp_kind::truncated_exponential, "rate", 1.0},
-}};
+// A warp a scene may name (registry.hpp's warp_descriptor): its one parameter, the parameter's
+// default and its valid range (the warps' own bounds, sampling/inversion_warps.hpp explains
+// them, checked when the scene is read so that a run never reaches a warp that refuses its
+// parameter).
+using warp_choice = warp_descriptor;
 
 std::string warp_names() {
   std::vector<std::string_view> names;
-  for (const warp_choice& w : warps) names.push_back(w.name);
+  for (const warp_choice& w : importance_warps()) names.push_back(w.name);
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
 const warp_choice* find_warp(std::string_view name) {
-  for (const warp_choice& w : warps) {
+  for (const warp_choice& w : importance_warps()) {
     if (w.name == name) return &w;
   }
   return nullptr;
@@ -130,8 +123,9 @@ class importance_method final : public method {
 constexpr std::array<option_doc, 2> option_docs{{
     {"warp",
      "required: \"power\", \"exponential\", or { name = \"power\", exponent = k } (p(x) = (k+1) "
-     "x^k on [0,1], -1 < k <= 1e5, default 1) / { name = \"exponential\", rate = l } (p(x) = l "
-     "e^(l x)/(e^l - 1) on [0,1], 0 < |l| <= 700, default 1); the label gets \"_<warp>\""},
+     "x^k on [0,1], -1 < k <= 1e5, default 1) / { name = \"exponential\", rate = l } (the "
+     "truncated exponential p(x) = l e^(l x)/(e^l - 1) on [0,1], 0 < |l| <= 700, default 1); the "
+     "label gets \"_<warp>\""},
     {"point_set",
      "the pattern of the uniforms fed to the warp (independent [default], jittered, unjittered, "
      "padded_jittered, latin_hypercube, sobol, halton, lattice: their default randomization); "
@@ -156,3 +150,19 @@ std::span<const method_descriptor> importance_methods() noexcept {
 }
 
 }  // namespace quadmc::methods
+
+namespace quadmc {
+
+namespace {
+constexpr std::array<warp_descriptor, 2> warps{{
+    {"power", "p(x) = (k+1) x^k on [0,1], -1 < k <= 1e5", unit_warp_kind::power, "exponent", 1.0},
+    {"exponential", "truncated exponential p(x) = l e^(l x)/(e^l - 1) on [0,1], 0 < |l| <= 700",
+     unit_warp_kind::truncated_exponential, "rate", 1.0},
+}};
+}  // namespace
+
+std::span<const warp_descriptor> importance_warps() noexcept {
+  return warps;
+}
+
+}  // namespace quadmc

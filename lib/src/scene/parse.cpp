@@ -25,6 +25,28 @@ namespace quadmc {
 
 namespace {
 
+// The keys each table of a scene may hold, as the checks below use them (scene_keys() lists
+// them). A method's own keys are its descriptor's options; an integrand's other keys are its
+// family's parameters (catalogue_entry's keys).
+constexpr std::array<std::string_view, 8> top_level_keys{
+    "name", "description", "seed", "threads", "integrand", "method", "budget", "output"};
+constexpr std::array<std::string_view, 5> integrand_keys{"family", "name", "dimension",
+                                                         "dimensions", "ensemble"};
+// The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
+constexpr std::array<std::string_view, 6> common_method_keys{
+    "name", "label", "integrands", "repetitions", "control", "tolerances"};
+constexpr std::array<std::string_view, 3> budget_keys{"N", "max_evaluations", "max_seconds"};
+constexpr std::array<std::string_view, 3> range_keys{"from", "to", "factor"};
+constexpr std::array<std::string_view, 3> output_keys{"csv", "markdown", "plots"};
+constexpr std::array<scene_table_keys, 6> key_tables{{
+    {"", top_level_keys},
+    {"integrand", integrand_keys},
+    {"method", common_method_keys},
+    {"budget", budget_keys},
+    {"budget.N", range_keys},
+    {"output", output_keys},
+}};
+
 // Counts above 2^53 are not exactly representable as doubles, which the analysis layer uses for
 // N; point sets also need N·s < 2^62 (sampling/point_set.hpp), which make_plan checks per cell.
 constexpr std::uint64_t max_count = std::uint64_t{1} << 53;
@@ -235,7 +257,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
   // Every other key is a family parameter; the catalogue decides which ones the family takes.
   for (auto&& [key, value] : t) {
     const std::string_view k = key.str();
-    if (k == "family" || k == "name" || k == "dimension" || k == "dimensions" || k == "ensemble") {
+    if (std::find(integrand_keys.begin(), integrand_keys.end(), k) != integrand_keys.end()) {
       continue;
     }
     const entry e{&key, &value, scene_reader::path(prefix, k)};
@@ -451,10 +473,6 @@ void parse_control(const scene_reader& r, const toml::table& t, const std::strin
   }
 }
 
-// The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
-constexpr std::array<std::string_view, 6> common_method_keys{
-    "name", "label", "integrands", "repetitions", "control", "tolerances"};
-
 // The names a method's `integrands` list may use: display names and the `name` of a
 // `dimensions` table. A set, so that long lists cost n·log n, not n × integrands.
 using integrand_names = std::set<std::string, std::less<>>;
@@ -551,8 +569,7 @@ std::vector<std::uint64_t> parse_ladder(const scene_reader& r, const entry& e) {
   }
   const auto* t = e.value->as_table();
   if (t == nullptr) r.expected(e, "an array of counts or { from = …, to = …, factor = … }");
-  constexpr std::array<std::string_view, 3> keys{"from", "to", "factor"};
-  r.check_keys(*t, keys, e.path, "a geometric range");
+  r.check_keys(*t, range_keys, e.path, "a geometric range");
   const auto from = r.find(*t, "from", e.path);
   const auto to = r.find(*t, "to", e.path);
   const auto factor = r.find(*t, "factor", e.path);
@@ -605,8 +622,7 @@ std::vector<std::uint64_t> parse_ladder(const scene_reader& r, const entry& e) {
 
 budget_spec parse_budget(const scene_reader& r, const entry& e) {
   const toml::table& t = r.table(e, "a [budget] table");
-  constexpr std::array<std::string_view, 3> keys{"N", "max_evaluations", "max_seconds"};
-  r.check_keys(t, keys, "budget", "[budget]");
+  r.check_keys(t, budget_keys, "budget", "[budget]");
   budget_spec b;
   const auto N = r.find(t, "N", "budget");
   if (!N) r.fail(r.at(t.source()), "budget.N", "missing required key (the N ladder)");
@@ -626,8 +642,7 @@ budget_spec parse_budget(const scene_reader& r, const entry& e) {
 
 output_spec parse_output(const scene_reader& r, const entry& e) {
   const toml::table& t = r.table(e, "an [output] table");
-  constexpr std::array<std::string_view, 3> keys{"csv", "markdown", "plots"};
-  r.check_keys(t, keys, "output", "[output]");
+  r.check_keys(t, output_keys, "output", "[output]");
   output_spec o;
   if (const auto v = r.find(t, "csv", "output")) o.csv = r.boolean(*v);
   if (const auto v = r.find(t, "markdown", "output")) o.markdown = r.boolean(*v);
@@ -652,9 +667,7 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
     r.fail(file_start, "",
            "empty scene: expected at least [[integrand]], [[method]] and [budget] tables");
   }
-  constexpr std::array<std::string_view, 8> keys{"name",      "description", "seed",   "threads",
-                                                 "integrand", "method",      "budget", "output"};
-  r.check_keys(root, keys, "", "the scene");
+  r.check_keys(root, top_level_keys, "", "the scene");
 
   scene sc;
   sc.file = r.file();
@@ -715,6 +728,10 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
 }
 
 }  // namespace
+
+std::span<const scene_table_keys> scene_keys() noexcept {
+  return key_tables;
+}
 
 scene parse_scene(std::string_view toml_text, std::string_view file_name) {
   const scene_reader reader{std::string(file_name)};

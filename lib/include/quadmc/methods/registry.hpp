@@ -6,6 +6,7 @@
 // there and one line in registry.cpp. Nothing outside this layer names a method.
 #pragma once
 
+#include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/methods/method.hpp"
 #include "quadmc/methods/option_map.hpp"
 
@@ -19,6 +20,20 @@ namespace quadmc {
 std::span<const method_descriptor* const> method_registry();
 const method_descriptor* find_method(std::string_view name) noexcept;  // nullptr when unknown
 std::string method_names();  // comma-separated, for "expected one of …" messages
+
+// The warps importance's `warp` key names, in listing order: the name a scene writes, the
+// density on [0, 1] it samples by inversion (sampling/inversion_warps.hpp), and its one parameter
+// with the default. `exponential` is the truncated exponential λe^(λx)/(e^λ − 1) on [0, 1]
+// (truncated_exponential_warp), not exponential_warp on [0, ∞): every catalogue integrand that
+// importance takes lives on a finite interval.
+struct warp_descriptor {
+  std::string_view name;
+  std::string_view description;
+  unit_warp_kind kind;
+  std::string_view parameter;
+  double default_value;
+};
+std::span<const warp_descriptor> importance_warps() noexcept;
 
 // The method `name` configured by `options` (the same checks as a scene's [[method]] table;
 // unknown keys are refused). Throws invalid_argument for an unknown name or a bad option.

@@ -13,7 +13,8 @@
 // Top level
 //   name = "example"      results go to results/<name>/; letters, digits, '_', '-', '.'.
 //                         Optional: defaults to the file name without extension.
-//   description = "…"     optional free text, copied into the report.
+//   description = "…"     optional free text, printed as Markdown under the title of the results
+//                         folder's README.md (not in the CSV files).
 //   seed = 42             integer ≥ 0 (default 0): the key of every random stream of the run.
 //   threads = 2           integer 0…4096 (default 0 = all cores). Results do not depend on it.
 //
@@ -48,9 +49,9 @@
 //                         at most 2^25 over all cells (the runner keeps each result). A
 //                         deterministic method runs once per cell; the plan notes the key is
 //                         ignored.
-//   control = "fixed"     how its cells run, one the method supports (`quadmc list`): "fixed"
-//                         (N mapped to a size used exactly; the default of every method so
-//                         far), "budget" (N is the most it may spend), "tolerance" (until its own
+//   control = "fixed"     how its cells run, one the method supports (`quadmc list`; the first
+//                         it lists is its default): "fixed" (N mapped to a size used exactly),
+//                         "budget" (N is the most it may spend), "tolerance" (until its own
 //                         error estimate is at most each of `tolerances`).
 //   tolerances = [1e-3, 1e-6]   control = "tolerance" only, required there: absolute errors,
 //                         positive and decreasing, ≤ 256. Each is a cell that may spend
@@ -61,12 +62,13 @@
 //   panels = [2, 4, 8]    explicit n per axis (an integer or an increasing list of ≤ 256),
 //                         replacing budget.N for this method; even for Simpson.
 //   m = 3                 Gauss–Legendre nodes per panel, one of 2 3 4 5 7 10 15 20 25 30.
-//   point_set = "jittered"  the pattern of the uniform points fed to the warp (independent
-//                         [default], jittered, unjittered, padded_jittered, latin_hypercube);
-//                         counts are mapped as for the method of the same name (N → k^s).
+//   point_set = "jittered"  the pattern of the uniform points fed to the warp (a name of
+//                         estimators/point_set_catalogue.hpp, independent by default); counts
+//                         are mapped as for the method over that set (N → k^s for jittered).
 //   warp = "power"        importance (required): a 1D density on [0,1], so s = 1 only;
 //   warp = { name = "power", exponent = 2.0 }      p(x) = (k+1) x^k, −1 < k ≤ 1e5 (default 1)
-//   warp = { name = "exponential", rate = 1.0 }    p(x) = λ e^{λx}/(e^λ − 1), 0 < |λ| ≤ 700
+//   warp = { name = "exponential", rate = 1.0 }    the truncated exponential on [0,1] (C++
+//                         truncated_exponential_warp): p(x) = λ e^{λx}/(e^λ − 1), 0 < |λ| ≤ 700
 //                         (default 1). Beyond these the warp is not accurate: every sample of
 //                         x^k rounds to 1 for k ≳ 1e16, and e^λ overflows above 709.78
 //                         (sampling/inversion_warps.hpp derives both bounds).
@@ -117,6 +119,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 namespace quadmc {
@@ -134,6 +137,17 @@ struct scene_limits {
   static constexpr std::uint64_t max_ladder_steps = 4096;  // k of from·factor^k
   static constexpr std::size_t max_dimension = 1024;
 };
+
+// The keys the parser accepts in each table of a scene, exactly as it checks them: `table` is ""
+// for the top level, "integrand", "method", "budget", "output", or "budget.N" for the range
+// { from, to, factor }. A method's own keys are its descriptor's `options` (methods/registry.hpp)
+// and an integrand's family parameters its catalogue entry's keys (functions/catalogue.hpp), so
+// with those this is every key a scene may hold (`quadmc list` and the README test read it).
+struct scene_table_keys {
+  std::string_view table;
+  std::span<const std::string_view> keys;
+};
+std::span<const scene_table_keys> scene_keys() noexcept;
 
 // `file_name` is used in messages only (and as the default scene name).
 scene parse_scene(std::string_view toml_text, std::string_view file_name);
