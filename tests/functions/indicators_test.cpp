@@ -22,7 +22,7 @@ using test::relative_error;
 TEST(Ball, AreaAndVolumeMatchNestedIntegration) {
   // 2D: ∫ over x of the measured chord {y : f(x, y) = 1}, integrated by GK split at the two
   // boundary points c₂ ± √(r² − (x − c₁)²) (so the inner integrand is smooth on each piece).
-  const ball_indicator disk({0.5, 0.45}, 0.4);
+  const disk_indicator disk({0.5, 0.45}, 0.4);
   const double r = 0.4;
   const double area = boost::math::quadrature::tanh_sinh<double>().integrate(
       [&](double x) {
@@ -36,7 +36,7 @@ TEST(Ball, AreaAndVolumeMatchNestedIntegration) {
       0.5 - r, 0.5 + r);
   const double e2 = relative_error(area, disk.info().exact);
   // 3D: the volume as ∫∫_disk 2√(r² − ρ²), polar-free nested tanh–sinh (square-root endpoints).
-  const ball_indicator ball({0.5, 0.5, 0.5}, 0.3);
+  const disk_indicator ball({0.5, 0.5, 0.5}, 0.3);
   const double R = 0.3;
   boost::math::quadrature::tanh_sinh<double> ts;
   const double volume = ts.integrate(
@@ -53,17 +53,17 @@ TEST(Ball, AreaAndVolumeMatchNestedIntegration) {
   EXPECT_LT(e3, 1e-10);
   // Recurrence V_s(r) = V_{s−2}(r)·2πr²/s, an identity independent of the Γ formula.
   for (std::size_t s = 3; s <= 12; ++s) {
-    EXPECT_NEAR(ball_indicator::ball_volume(s, 0.4),
-                ball_indicator::ball_volume(s - 2, 0.4) * 2 * std::numbers::pi * 0.16 / s,
-                1e-14 * ball_indicator::ball_volume(s, 0.4));
+    EXPECT_NEAR(disk_indicator::ball_volume(s, 0.4),
+                disk_indicator::ball_volume(s - 2, 0.4) * 2 * std::numbers::pi * 0.16 / s,
+                1e-14 * disk_indicator::ball_volume(s, 0.4));
   }
-  EXPECT_DOUBLE_EQ(ball_indicator({0.5}, 0.25).info().exact, 0.5);
+  EXPECT_DOUBLE_EQ(disk_indicator({0.5}, 0.25).info().exact, 0.5);
 }
 
 TEST(Ball, BadParametersAreNamed) {
   auto message = [](std::vector<double> c, double r) -> std::string {
     try {
-      ball_indicator b(std::move(c), r);
+      disk_indicator b(std::move(c), r);
     } catch (const invalid_argument& e) {
       return e.what();
     }
@@ -114,11 +114,11 @@ TEST(HalfSpace, VolumeMatchesNestedIntegration) {
 
 TEST(Indicators, OneDimensionalCasesCarryTheirJumpsHigherOnesNone) {
   // 1D ball: the interval [c − r, c + r], jumps of size 1 at both ends inside (0, 1).
-  const ball_indicator interval({0.5}, 0.3);
+  const disk_indicator interval({0.5}, 0.3);
   test::expect_factors_describe(interval, {0.0}, {1.0});
   ASSERT_EQ(interval.info().separable_factors.at(0).jumps.size(), 2u);
   // An end of the interval at an end of [0, 1]: f is 1 up to it, no jump there.
-  const ball_indicator touching({0.25}, 0.25);
+  const disk_indicator touching({0.25}, 0.25);
   test::expect_factors_describe(touching, {0.0}, {1.0});
   EXPECT_EQ(touching.info().separable_factors.at(0).jumps.size(), 1u);
   // 1D half-space 1{w·x ≤ t}: one jump at t/w.
@@ -126,7 +126,7 @@ TEST(Indicators, OneDimensionalCasesCarryTheirJumpsHigherOnesNone) {
   test::expect_factors_describe(half, {0.0}, {1.0});
   EXPECT_EQ(half.info().separable_factors.at(0).jumps.at(0).location, 0.35);
   // Curved and oblique boundaries in s ≥ 2 are not products of 1D factors: none claimed.
-  EXPECT_TRUE(ball_indicator({0.5, 0.5}, 0.45).info().separable_factors.empty());
+  EXPECT_TRUE(disk_indicator({0.5, 0.5}, 0.45).info().separable_factors.empty());
   EXPECT_TRUE(half_space_indicator({1.0, 1.0}, 1.2).info().separable_factors.empty());
 }
 
@@ -179,9 +179,9 @@ TEST(HalfSpace, HugeWeightsGiveTheVolumeOfTheScaledProblem) {
 // The volume of a ball of radius 1/2 is below 1e-308 from s ≈ 340 on (Γ(s/2 + 1) overflows too):
 // such a reference was 0 and is now refused.
 TEST(Ball, VolumesBelowTheNormalRangeAreRefused) {
-  EXPECT_GT(ball_indicator(std::vector<double>(300, 0.5), 0.5).info().exact, 1e-300);
+  EXPECT_GT(disk_indicator(std::vector<double>(300, 0.5), 0.5).info().exact, 1e-300);
   try {
-    ball_indicator f(std::vector<double>(400, 0.5), 0.5);
+    disk_indicator f(std::vector<double>(400, 0.5), 0.5);
     FAIL();
   } catch (const invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("invalid r = 0.5"), std::string::npos) << e.what();

@@ -161,7 +161,7 @@ TEST(JumpErrorEnvelope, HoldsOnGenzDiscontinuousWithItsSmoothPart) {
   // the envelope at small n.
   expect_within(genz_discontinuous({-8.0}, {0.9}), 1.0);
   // The 1D disk and half-space: two jumps, one jump.
-  expect_within(ball_indicator({0.4}, 0.3), 1.0);
+  expect_within(disk_indicator({0.4}, 0.3), 1.0);
   expect_within(half_space_indicator({3.0}, 1.7), 1.0);
 }
 
@@ -189,7 +189,7 @@ TEST(JumpErrorEnvelope, HoldsOnGenzDiscontinuousAsATensorProduct) {
 
 TEST(JumpErrorEnvelope, NoEnvelopeWithoutSeparableJumpsOrBounds) {
   // Curved boundary, smooth f: no factors or no jump, so the slope verdict stays.
-  EXPECT_FALSE(jump_error_envelope(midpoint_rule{}, ball_indicator({0.5, 0.5}, 0.4).info(), 8));
+  EXPECT_FALSE(jump_error_envelope(midpoint_rule{}, disk_indicator({0.5, 0.5}, 0.4).info(), 8));
   EXPECT_FALSE(jump_error_envelope(midpoint_rule{}, exp_1d().info(), 8));
   EXPECT_FALSE(jump_error_envelope(midpoint_rule{}, genz_discontinuous({1.0}, {1.0}).info(), 8));
   // A jump without M₁: the cut cells cannot be bounded.

@@ -115,7 +115,7 @@ any_integrand make_located(const integrand_params& p) {
 
 any_integrand make_disk(const integrand_params& p) {
   const std::size_t s = dimension_or(p, 1);
-  return any_integrand(ball_indicator(vector_of_length(p, "center", s, std::vector<double>(s, 0.5)),
+  return any_integrand(disk_indicator(vector_of_length(p, "center", s, std::vector<double>(s, 0.5)),
                                       scalar_or(p, "r", 0.45)));
 }
 

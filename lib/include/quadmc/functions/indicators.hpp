@@ -1,7 +1,8 @@
 // Indicator functions of regions of [0,1]^s with exact volumes: the discontinuous integrands of
 // geometric Monte Carlo (the "area of a disk" experiment of every Monte Carlo course).
 //
-//   ball        1 if ‖x − c‖ ≤ r          volume π^{s/2} r^s / Γ(s/2 + 1)   (ball inside the cube)
+//   disk_indicator  1 if ‖x − c‖ ≤ r   volume π^{s/2} r^s / Γ(s/2 + 1)   (inside the cube; a
+//                                      disk in 2D, a ball otherwise: one name in every s)
 //   half_space  1 if Σ wᵢxᵢ ≤ t, wᵢ > 0   volume Σ_{v∈{0,1}^s} (−1)^{|v|} (t − w·v)₊^s / (s!·Π wᵢ)
 //
 // The half-space volume is the cube-slice formula (Barrow & Smith, "Spline notation applied to a
@@ -29,10 +30,10 @@
 
 namespace quadmc {
 
-class ball_indicator {
+class disk_indicator {
  public:
   // The ball must lie inside [0,1]^s (cⱼ − r ≥ 0 and cⱼ + r ≤ 1) so its volume is the formula.
-  ball_indicator(std::vector<double> center, double radius)
+  disk_indicator(std::vector<double> center, double radius)
       : center_(std::move(center)), radius_(radius) {
     require(!center_.empty(), "center", center_.size(),
             "a non-empty vector (its length is the dimension s ≥ 1)");
