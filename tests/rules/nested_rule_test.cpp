@@ -1,11 +1,14 @@
 // nested_rule: the Clenshaw–Curtis, Gauss–Patterson and periodic trapezoid tables — node counts,
-// nesting, weights (against quadrule's independent Clenshaw–Curtis code), degree of exactness.
+// nesting, weights (against quadrule's independent Clenshaw–Curtis code), degree of exactness,
+// and the by-node tables of weights and differences against the by-level ones.
 #include "quadmc/rules/nested_rule.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -154,6 +157,37 @@ TEST(NestedRule, NamesRoundTrip) {
     EXPECT_EQ(parse_nested_rule_kind(to_string(kind)), kind);
   }
   EXPECT_FALSE(parse_nested_rule_kind("gauss_legendre").has_value());
+}
+
+// The by-node tables are the by-level weights and their differences bit for bit (the walk of
+// smolyak_grid.hpp reads them in place of the subtraction it made at every visit), and the
+// differences telescope: Σ_{m ≤ l − b} d_(b+m) = weight(l, id), to the rounding of the l − b + 1
+// additions (each at most ε·Σ|d|/2, Higham §4.2 — the bound below is (l − b + 1)·ε·Σ|d|).
+TEST(NestedRule, ByNodeTablesAreTheByLevelWeightsAndTheirDifferences) {
+  const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  for (const nested_rule_kind kind : all_kinds) {
+    const nested_rule& rule = nested_rule_table(kind);
+    const unsigned top = rule.max_level();
+    for (std::size_t id = 0; id < rule.count(top); ++id) {
+      const unsigned b = rule.birth(id);
+      const double* w = rule.weights_from_birth(id);
+      const double* d = rule.differences_from_birth(id);
+      ASSERT_EQ(bits(d[0]), bits(rule.weight(b, id))) << to_string(kind) << " id " << id;
+      double sum = 0.0, magnitude = 0.0;
+      for (unsigned l = b; l <= top; ++l) {
+        const unsigned m = l - b;
+        ASSERT_EQ(bits(w[m]), bits(rule.weight(l, id))) << to_string(kind) << " id " << id;
+        if (m > 0) {
+          ASSERT_EQ(bits(d[m]), bits(rule.weight(l, id) - rule.weight(l - 1, id)))
+              << to_string(kind) << " id " << id << " level " << l;
+        }
+        sum += d[m];
+        magnitude += std::abs(d[m]);
+        ASSERT_LE(std::abs(sum - rule.weight(l, id)), (m + 1) * eps * magnitude)
+            << to_string(kind) << " id " << id << " level " << l;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // smolyak_grid: the Smolyak sparse grid as a weighted point set — point counts, the weights
 // against the combination technique built independently, exactness for total degree ≤ 2L + 1
 // [Novak & Ritter 1996], thread and batch independence, distinct nodes in the cube, the fast
-// path, and Σ|w| with the rounding floor it implies.
+// path, the weights bit for bit those of the surplus formula on the by-level tables, and Σ|w|
+// with the rounding floor it implies.
 #include "quadmc/rules/smolyak_grid.hpp"
 
 #include "quadmc/rules/weighted_sum.hpp"
@@ -17,6 +18,7 @@
 #include <limits>
 #include <map>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -223,6 +225,79 @@ TEST(SmolyakGrid, WeightsSumToOne) {
         EXPECT_NEAR(sum.value(), 1.0, 16 * eps * abs_sum)
             << to_string(kind) << " s " << s << " L " << L;
       }
+    }
+  }
+}
+
+// The weight of the surplus form, w(x) = Σ_{u ≤ R} P[u]·C(R − u) (smolyak_grid.hpp), computed
+// here from the by-level tables alone, in the order the header documents: P_{j+1}[t] =
+// Σ_{m ≤ t} P_j[t − m]·(weight(b + m) − weight(b + m − 1)) for the leading axes, then the last
+// axis. The walk reads the by-node tables and copies coordinates by fixed-length moves; this
+// pins that its weights are this formula bit for bit, in every dimension the copy is specialised
+// for and beyond (s = 17: the loop), and that each node is visited once.
+double surplus_weight(const nested_rule& rule, const std::vector<std::size_t>& id, unsigned L) {
+  const std::size_t s = id.size();
+  std::vector<double> product(L + 1, 0.0);
+  product[0] = 1.0;
+  unsigned budget = L;
+  for (std::size_t j = 0; j + 1 < s; ++j) {
+    const unsigned b = rule.birth(id[j]);
+    const unsigned rest = budget - b;
+    std::vector<double> next(L + 1, 0.0);
+    for (unsigned t = 0; t <= rest; ++t) {
+      double sum = 0.0;
+      for (unsigned m = 0; m <= t; ++m) {
+        const double previous = m > 0 ? rule.weight(b + m - 1, id[j]) : 0.0;
+        sum += product[t - m] * (rule.weight(b + m, id[j]) - previous);
+      }
+      next[t] = sum;
+    }
+    product = next;
+    budget = rest;
+  }
+  const std::size_t node = id[s - 1];
+  const unsigned b = rule.birth(node);
+  const unsigned R = budget - b;
+  double w = 0.0;
+  for (unsigned u = 0; u <= R; ++u) w += product[u] * rule.weight(b + R - u, node);
+  return w;
+}
+
+TEST(SmolyakGrid, WeightsAreTheSurplusFormulaBitForBitAndEachNodeComesOnce) {
+  for (const nested_rule_kind kind :
+       {nested_rule_kind::clenshaw_curtis, nested_rule_kind::gauss_patterson,
+        nested_rule_kind::trapezoid}) {
+    const nested_rule& rule = nested_rule_table(kind);
+    std::map<double, std::size_t> id_of;  // a node's coordinate → its id
+    for (std::size_t id = 0; id < rule.count(rule.max_level()); ++id) id_of[rule.node(id)] = id;
+    for (const auto& [s, L] : {std::pair<std::size_t, unsigned>{1, 7},
+                               {2, 6},
+                               {3, 5},
+                               {5, 4},
+                               {8, 4},
+                               {16, 2},
+                               {17, 2}}) {
+      const smolyak_grid g(rule, s, L);
+      const grid_points p = all_points(g);
+      std::map<std::vector<std::size_t>, int> visits;
+      for (std::uint64_t i = 0; i < g.size(); ++i) {
+        std::vector<std::size_t> id(s);
+        unsigned births = 0;
+        for (std::size_t j = 0; j < s; ++j) {
+          const auto it = id_of.find(p.x[i * s + j]);
+          ASSERT_NE(it, id_of.end()) << "s " << s << " point " << i << " axis " << j;
+          id[j] = it->second;
+          births += rule.birth(id[j]);
+        }
+        ASSERT_LE(births, L) << "s " << s << " point " << i;
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(p.w[i]),
+                  std::bit_cast<std::uint64_t>(surplus_weight(rule, id, L)))
+            << to_string(kind) << " s " << s << " L " << L << " point " << i;
+        ++visits[id];
+      }
+      // Every tuple visited once, and as many tuples as the grid has nodes.
+      for (const auto& [tuple, n] : visits) ASSERT_EQ(n, 1) << to_string(kind) << " s " << s;
+      EXPECT_EQ(visits.size(), g.size()) << to_string(kind) << " s " << s;
     }
   }
 }

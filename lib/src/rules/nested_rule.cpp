@@ -196,6 +196,17 @@ nested_rule::nested_rule(nested_rule_kind kind) : kind_(kind) {
       break;
     }
   }
+  // The by-node tables: node id's weights and differences in the levels birth(id) … max_level.
+  const unsigned top = max_level();
+  by_node_offset_.reserve(nodes_.size());
+  for (std::size_t id = 0; id < nodes_.size(); ++id) {
+    by_node_offset_.push_back(by_node_weights_.size());
+    for (unsigned l = birth_[id]; l <= top; ++l) {
+      by_node_weights_.push_back(weight(l, id));
+      by_node_differences_.push_back(l == birth_[id] ? weight(l, id)
+                                                     : weight(l, id) - weight(l - 1, id));
+    }
+  }
 }
 
 unsigned nested_rule::degree(unsigned level) const noexcept {

@@ -22,10 +22,11 @@
 //
 // Node ids are in birth order: the nodes of level l are ids [0, count(l)), the new ones of level
 // l are [count(l − 1), count(l)). A node's coordinate and its weight in every level that holds it
-// are table lookups. Memory: Σ_l count(l) weights, < 2·count(Lmax) + Lmax for these families
-// (count doubles per level), plus count(Lmax) nodes — 16385 nodes and about 33 000 weights for
-// Clenshaw–Curtis at level 14, the largest tabulated (its cosine sums cost O(n²) once per process,
-// ~0.1 s at n = 2^14).
+// are table lookups, by level or by node (weights_from_birth, differences_from_birth). Memory:
+// Σ_l count(l) weights, < 2·count(Lmax) + Lmax for these families (count doubles per level),
+// held three times (by level; by node; the differences by node), plus count(Lmax) nodes — 16385
+// nodes and 3 × about 33 000 weights (0.8 MB) for Clenshaw–Curtis at level 14, the largest
+// tabulated (its cosine sums cost O(n²) once per process, ~0.1 s at n = 2^14).
 #pragma once
 
 #include <cstddef>
@@ -71,6 +72,22 @@ class nested_rule {
   // Degree of polynomial exactness of the rule of level l.
   unsigned degree(unsigned level) const noexcept;
 
+  // The same weights by node: for m = 0 … max_level() − birth(id),
+  //   weights_from_birth(id)[m] = weight(birth(id) + m, id),
+  //   differences_from_birth(id)[m] = d_(birth + m)(id) = weight(birth + m, id) − weight(birth + m
+  //   − 1, id), with d_birth(id) = weight(birth, id) (the node is in no rule below its birth),
+  // the factors of the hierarchical-surplus (Δ_l = U^l − U^(l−1)) form of a Smolyak grid
+  // [Gerstner & Griebel 1998]. Contiguous per node, so a sparse grid's walk reads a node's factors
+  // from one place instead of one table per level; the differences are the subtractions it would
+  // otherwise repeat at every visit of the node, made once per process (the same operation on the
+  // same operands, so the same bits).
+  const double* weights_from_birth(std::size_t id) const noexcept {
+    return by_node_weights_.data() + by_node_offset_[id];
+  }
+  const double* differences_from_birth(std::size_t id) const noexcept {
+    return by_node_differences_.data() + by_node_offset_[id];
+  }
+
  private:
   void add_level(std::span<const double> nodes_in_birth_order, std::span<const double> weights);
 
@@ -80,6 +97,9 @@ class nested_rule {
   std::vector<double> nodes_;
   std::vector<std::size_t> weight_offset_;
   std::vector<double> weights_;
+  std::vector<std::size_t> by_node_offset_;
+  std::vector<double> by_node_weights_;
+  std::vector<double> by_node_differences_;
 };
 
 // The tables of each kind, built on first use (thread-safe) and kept for the process.

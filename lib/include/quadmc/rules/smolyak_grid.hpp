@@ -29,7 +29,13 @@
 //    batch then walks like an odometer;
 //  - the truncated products P_j = Π_{i<j} A_i are kept per axis and recomputed only when axis j
 //    moves (O(L²) at a carry), so a node costs the R + 1 multiply-adds of its last axis and the
-//    copy of its coordinates: most nodes have R = 0 or 1;
+//    copy of its coordinates: most nodes have R = 0 or 1. The factors d_l(x) and C(t) are read
+//    from the 1D rule's by-node tables (nested_rule.hpp: a node's weights and differences from
+//    its birth on, contiguous, the differences computed once per process), and a point's s − 1
+//    leading coordinates are copied with a length fixed at compile time; both because runs along
+//    the last axis are short (2 to 4 nodes on average at s = 4 to 8), so the per-run and
+//    per-point overheads, not the arithmetic, set the speed (measured with callgrind on the Genz
+//    Gaussian: bench/rules_bench.cpp, equal_n);
 //  - the weights are a pure function of the node (every product is formed from the same factors
 //    in the same order, wherever a batch starts), so the sum is bitwise the same on any thread
 //    count;
@@ -52,6 +58,8 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace quadmc {
@@ -129,6 +137,34 @@ class smolyak_grid {
   std::uint64_t total_ = 0;
 };
 
+namespace detail {
+
+// smolyak_grid's walk copies a point's s − 1 leading coordinates with a length fixed at compile
+// time for s − 1 < max_fixed_axes (straight-line moves; a loop of variable length is turned into
+// a call to memcpy per point by GCC, which cost more than the point's weight); dynamic_axes is
+// the loop for larger s.
+inline constexpr std::size_t max_fixed_axes = 16;
+inline constexpr std::size_t dynamic_axes = std::numeric_limits<std::size_t>::max();
+
+template <std::size_t... J>
+void copy_fixed(double* to, const double* from, std::index_sequence<J...>) noexcept {
+  ((to[J] = from[J]), ...);
+}
+
+// f(std::integral_constant<std::size_t, m>{}) for m < max_fixed_axes, else
+// f(std::integral_constant<std::size_t, dynamic_axes>{}): one switch per run of the walk.
+template <class F>
+void with_leading_axes(std::size_t m, const F& f) {
+  [&]<std::size_t... M>(std::index_sequence<M...>) {
+    const bool fixed =
+        ((m == M ? (f(std::integral_constant<std::size_t, M>{}), true) : false) || ...);
+    if (!fixed) f(std::integral_constant<std::size_t, dynamic_axes>{});
+  }
+  (std::make_index_sequence<max_fixed_axes>{});
+}
+
+}  // namespace detail
+
 template <class Coordinate, class Last>
 void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<double> weights,
                         const Coordinate& coordinate, const Last& last_coordinate) const {
@@ -142,31 +178,30 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
   const nested_rule& rule = *rule_;
 
   // Per axis j: its id, the budget r_j = L − Σ_{i<j} birth(id_i), its coordinate, and the
-  // truncated product P_{j+1} = P_j·A_j (degree ≤ r_j − birth(id_j)); P_0 = 1. One allocation per
-  // batch, never per point.
-  std::vector<std::size_t> id(s);
-  std::vector<unsigned> budget(s + 1);
-  std::vector<double> axis_coordinate(s);
-  std::vector<double> product((s + 1) * width, 0.0);
+  // truncated product P_{j+1} = P_j·A_j (degree ≤ r_j − birth(id_j)); P_0 = 1. Two allocations
+  // per batch, never per point.
+  std::vector<std::size_t> state(2 * s + 1);
+  std::size_t* id = state.data();
+  std::size_t* budget = state.data() + s;
+  std::vector<double> values(s + (s + 1) * width, 0.0);
+  double* axis_coordinate = values.data();
+  double* product = values.data() + s;
   product[0] = 1.0;
   budget[0] = L;
 
-  // P_{j+1} from P_j and axis j's node: P_{j+1}[t] = Σ_{u+m=t} P_j[u]·d_{b+m}(id), t ≤ r_{j+1}.
+  // P_{j+1} from P_j and axis j's node: P_{j+1}[t] = Σ_{u+m=t} P_j[u]·d_{b+m}(id), t ≤ r_{j+1},
+  // the differences d read from the node's contiguous table (nested_rule.hpp).
   auto place = [&](std::size_t j) {
     const std::size_t node = id[j];
-    const unsigned b = rule.birth(node);
-    const unsigned rest = budget[j] - b;
+    const std::size_t rest = budget[j] - rule.birth(node);
     budget[j + 1] = rest;
     if (j < last) axis_coordinate[j] = coordinate(j, node);
-    const double* in = &product[j * width];
-    double* out = &product[(j + 1) * width];
-    for (unsigned t = 0; t <= rest; ++t) {
+    const double* d = rule.differences_from_birth(node);
+    const double* in = product + j * width;
+    double* out = product + (j + 1) * width;
+    for (std::size_t t = 0; t <= rest; ++t) {
       double sum = 0.0;
-      for (unsigned m = 0; m <= t; ++m) {
-        const unsigned level = b + m;
-        const double previous = level > b ? rule.weight(level - 1, node) : 0.0;
-        sum += in[t - m] * (rule.weight(level, node) - previous);
-      }
+      for (std::size_t m = 0; m <= t; ++m) sum += in[t - m] * d[m];
       out[t] = sum;
     }
   };
@@ -174,7 +209,7 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
   // tuples(j + 1, r − b) tuples each.
   std::uint64_t rest = first;
   for (std::size_t j = 0; j < s; ++j) {
-    const unsigned r = budget[j];
+    const auto r = static_cast<unsigned>(budget[j]);
     std::size_t base = 0;
     for (unsigned b = 0; b <= r; ++b) {
       const std::uint64_t per_id = tuples(j + 1, r - b);
@@ -191,28 +226,43 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
   }
 
   // The batch in runs along the last axis (its ids 0 … count(r_last) − 1 for the current leading
-  // ids), then a carry into the leading axes.
-  std::size_t k = id[last];
-  for (std::size_t i = 0; i < count;) {
-    const unsigned r = budget[last];
-    const auto end = static_cast<std::size_t>(rule.count(r));
-    const std::size_t run = std::min<std::size_t>(end - k, count - i);
-    const double* leading = &product[last * width];
+  // ids), then a carry into the leading axes. Runs are short (2 to 4 points on average at s = 4 to
+  // 8: most leading tuples use up most of the budget), so a point is written row by row — its
+  // s − 1 leading coordinates copied from axis_coordinate, then the last one — and not column by
+  // column per run as in tensor_product_grid.hpp, whose loop overhead per column was paid for
+  // every 2 points here. The copy has a length fixed at compile time for s ≤ max_fixed_axes (a
+  // few vector moves; a variable length is a call to memcpy per point, which cost more than the
+  // point's weight), chosen once per run.
+  auto emit_run = [&](auto leading_axes, std::size_t i, std::size_t k, std::size_t run) {
+    constexpr std::size_t M = decltype(leading_axes)::value;
+    const std::size_t r = budget[last];
+    const double* leading = product + last * width;
     double* row = x.data() + i * s;
+    double* w_out = weights.data() + i;
     for (std::size_t q = 0; q < run; ++q) {
       const std::size_t node = k + q;
-      const unsigned b = rule.birth(node);
-      const unsigned R = r - b;
-      // Σ_{u ≤ R} P[u]·C(R − u), C(t) = weight of the node in U^(b + t).
-      double w = 0.0;
-      for (unsigned u = 0; u <= R; ++u) w += leading[u] * rule.weight(b + R - u, node);
-      weights[i + q] = w;
-      row[q * s + last] = last_coordinate(node);
+      const std::size_t R = r - rule.birth(node);
+      // Σ_{u ≤ R} P[u]·C(R − u), C(t) = weight of the node in U^(b + t), summed from u = 0 as
+      // the sum w = 0 + …: 0.0 + the first term keeps the bits of a sum that starts at zero.
+      const double* c = rule.weights_from_birth(node);
+      double w = 0.0 + leading[0] * c[R];
+      for (std::size_t u = 1; u <= R; ++u) w += leading[u] * c[R - u];
+      w_out[q] = w;
+      double* point = row + q * s;
+      if constexpr (M == detail::dynamic_axes) {
+        for (std::size_t j = 0; j < last; ++j) point[j] = axis_coordinate[j];
+      } else {
+        detail::copy_fixed(point, axis_coordinate, std::make_index_sequence<M>{});
+      }
+      point[last] = last_coordinate(node);
     }
-    for (std::size_t j = 0; j < last; ++j) {
-      const double c = axis_coordinate[j];
-      for (std::size_t q = 0; q < run; ++q) row[q * s + j] = c;
-    }
+  };
+  std::size_t k = id[last];
+  for (std::size_t i = 0; i < count;) {
+    const std::size_t r = budget[last];
+    const auto end = static_cast<std::size_t>(rule.count(static_cast<unsigned>(r)));
+    const std::size_t run = std::min<std::size_t>(end - k, count - i);
+    detail::with_leading_axes(last, [&](auto M) { emit_run(M, i, k, run); });
     i += run;
     k += run;
     if (k == end && i < count) {
@@ -220,7 +270,7 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
       // after it restart at id 0 (birth 0 always fits).
       std::size_t j = last;
       while (j-- > 0) {
-        if (id[j] + 1 < rule.count(budget[j])) break;
+        if (id[j] + 1 < rule.count(static_cast<unsigned>(budget[j]))) break;
       }
       // j wraps past 0 only at the grid's end, which the batch check excludes.
       ++id[j];
