@@ -162,7 +162,8 @@ TEST(NestedRule, NamesRoundTrip) {
 // The by-node tables are the by-level weights and their differences bit for bit (the walk of
 // smolyak_grid.hpp reads them in place of the subtraction it made at every visit), and the
 // differences telescope: Σ_{m ≤ l − b} d_(b+m) = weight(l, id), to the rounding of the l − b + 1
-// additions (each at most ε·Σ|d|/2, Higham §4.2 — the bound below is (l − b + 1)·ε·Σ|d|).
+// additions (each at most ε·Σ|d|/2: Higham, "Accuracy and Stability of Numerical Algorithms",
+// 2nd ed., §4.2; the bound below is (l − b + 1)·ε·Σ|d|).
 TEST(NestedRule, ByNodeTablesAreTheByLevelWeightsAndTheirDifferences) {
   const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
   for (const nested_rule_kind kind : all_kinds) {
