@@ -72,7 +72,8 @@ struct point_agreement {
 //  - GSL niederreiter_2 and scipy's scrambled Sobol: their first 2^12 points in s = 2 form a
 //    (0, 12, 2)-net in base 2, as quadmc's Sobol' points (unrandomized and LMS-scrambled) do;
 //  - GSL halton: point i equals quadmc's unrandomized Halton point i + 1 to within 2^−52
-//    (it skips the origin; both sum digits in floating point);
+//    (it skips the origin and accumulates digits in floating point; quadmc rounds r/b^K once or
+//    twice, halton_points.hpp);
 //  - GSL reversehalton and scipy's scrambled Halton: digit-permuted Halton points like quadmc's
 //    `permutation`: in every coordinate (base b) the first b^k points ≤ 4096 hit each interval
 //    [i/b^k, (i + 1)/b^k) once;
