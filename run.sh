@@ -36,8 +36,9 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
 PLOT_PACKAGES=(python3 python3-matplotlib)
 # What the tests need: the library, and the plots of the end-to-end runs.
 TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}")
-# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/.
-BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev)
+# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/
+# (python3-scipy: scipy.stats.qmc's Sobol and Halton, run by bench/peers/scipy_qmc.py).
+BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev python3-scipy)
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)

@@ -5,6 +5,7 @@
 #include "cubature_methods.hpp"
 #include "gsl_monte_methods.hpp"
 #include "peer_method.hpp"
+#include "qmc_point_peers.hpp"
 #include "quadmc_methods.hpp"
 #include "sum_of_coordinates.hpp"
 
@@ -29,6 +30,13 @@
 #include <optional>
 #include <utility>
 #include <vector>
+
+#ifndef QUADMC_PEERS_PYTHON
+#define QUADMC_PEERS_PYTHON "/usr/bin/python3"
+#endif
+#ifndef QUADMC_PEERS_SCIPY_SCRIPT
+#define QUADMC_PEERS_SCIPY_SCRIPT "bench/peers/scipy_qmc.py"
+#endif
 
 namespace quadmc::peers {
 namespace {
@@ -285,6 +293,73 @@ void measure_methods(const configuration& c, study& out) {
     if (r.run == "throughput" && it != reference.end())
       r.ratio_to_scalar_loop = r.rate / it->second;
   }
+}
+
+void measure_qmc_points(const configuration& c, study& out) {
+  const std::vector<point_generator> generators =
+      qmc_point_generators(QUADMC_PEERS_PYTHON, QUADMC_PEERS_SCIPY_SCRIPT);
+  std::cerr << "QMC points: agreement" << std::flush;
+  out.agreement = check_point_agreement(generators);
+  const std::uint64_t n = c.qmc_points;
+  const std::uint64_t seed = stream_id({base_seed, 0x9c});
+  for (std::size_t s : c.qmc_dimensions) {
+    std::cerr << fmt::format(" s={}", s) << std::flush;
+    struct best_run {
+      double seconds = INFINITY;
+      double cpu_seconds = NAN;  // NaN for scipy: its CPU time is the child's
+    };
+    std::vector<std::optional<best_run>> best(generators.size());
+    std::vector<bool> failed(generators.size(), false);
+    auto attempt = [&](std::size_t k, int runs) {
+      const point_generator& g = generators[k];
+      try {
+        const double cpu_start = process_cpu_seconds();
+        const generated_points p = g.generate(n, s, seed, runs, false);
+        const double cpu = process_cpu_seconds() - cpu_start;
+        if (!best[k] || p.seconds < best[k]->seconds) {
+          best[k] = best_run{p.seconds, g.in_process ? cpu : NAN};
+        }
+      } catch (const std::exception& e) {
+        failed[k] = true;
+        out.skipped.push_back(fmt::format("{} at s = {}, N = {}: {}", g.name, s, n, e.what()));
+      }
+    };
+    for (std::size_t k = 0; k < generators.size(); ++k) {
+      if (s > generators[k].max_dimension) {
+        failed[k] = true;
+        out.skipped.push_back(fmt::format("{} at s = {}: at most {} dimensions", generators[k].name,
+                                          s, generators[k].max_dimension));
+      } else if (!generators[k].in_process) {
+        attempt(k, c.throughput_runs);
+      }
+    }
+    for (int round = 0; round < c.throughput_runs; ++round) {
+      for (std::size_t k = 0; k < generators.size(); ++k) {
+        if (generators[k].in_process && !failed[k]) attempt(k, 1);
+      }
+      std::cerr << "." << std::flush;
+    }
+    for (std::size_t k = 0; k < generators.size(); ++k) {
+      if (!best[k]) continue;
+      row r;
+      r.run = "points";
+      r.method = generators[k].name;
+      r.family = generators[k].family;
+      r.integrand = "(points only)";
+      r.s = s;
+      r.threads = 1;
+      r.n = n;
+      r.control = "N points";
+      r.evaluations = static_cast<double>(n);
+      r.seconds = best[k]->seconds;
+      r.cpu_seconds = best[k]->cpu_seconds;
+      r.rate = static_cast<double>(n) / r.seconds;
+      r.abs_error = NAN;
+      r.repetitions = c.throughput_runs;
+      out.rows.push_back(r);
+    }
+  }
+  std::cerr << "\n";
 }
 
 std::string load_average() {

@@ -28,6 +28,13 @@ namespace quadmc::peers {
 // message) and sets out.repro.
 void measure_methods(const configuration& c, study& out);
 
+// Points per second of quadmc's quasi-Monte Carlo sets and of Boost.Random's, GSL's and scipy's
+// generators (qmc_point_peers.hpp) for each s of c.qmc_dimensions at N = c.qmc_points, one
+// thread: rows with run = "points" (evaluations = points, rate = points per second), in rounds
+// like the throughput rows (scipy: one subprocess with every run, its best time); first
+// out.agreement, the checks that each peer's points are of the kind it is compared with.
+void measure_qmc_points(const configuration& c, study& out);
+
 // /proc/loadavg as "1 / 5 / 15 min": how busy the shared machine was.
 std::string load_average();
 

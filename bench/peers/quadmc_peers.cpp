@@ -3,7 +3,9 @@
 // xoshiro256+ loop, GSL plain/MISER/VEGAS, Boost.Math naive_monte_carlo and its 1D rules,
 // cubature's hcubature/pcubature — on the same integrands (Genz oscillatory and Gaussian, the sum
 // of coordinates) with the same references, for s ∈ {1, 2, 4, 8}: evaluations per second, time to
-// 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the answer.
+// 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the answer; and quasi-Monte Carlo
+// point generation (quadmc's Sobol', Halton and lattice sets beside Boost.Random, GSL and
+// scipy.stats.qmc: qmc_point_peers.hpp) in points per second.
 //
 //   quadmc_peers [--out DIR] [--quick]        writes DIR/peers.csv, DIR/meta.csv, DIR/README.md
 //   quadmc_peers --one METHOD INTEGRAND S N THREADS
@@ -77,6 +79,7 @@ int study_command(const std::filesystem::path& out, bool quick) {
   st.build = quadmc::bench::build_provenance();
   st.load_before = load_average();
   measure_methods(c, st);
+  measure_qmc_points(c, st);
   measure_peak_memory(c, st);
   st.load_after = load_average();
   st.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -88,6 +88,13 @@ class report {
  public:
   report(const configuration& c, const study& st) : c_(c), st_(st) {
     for (const row& r : st.rows) {
+      if (r.run == "points") {  // no integrand: the QMC section reads them itself
+        points_[{r.method, r.s}] = r;
+        if (std::find(generators_.begin(), generators_.end(), r.method) == generators_.end()) {
+          generators_.push_back(r.method);
+        }
+        continue;
+      }
       if (r.run == "throughput") {
         rate_[{r.method, r.threads, r.integrand, r.s}] = r.rate;
         cores_[{r.method, r.threads, r.integrand, r.s}] = r.cpu_seconds / r.seconds;
@@ -118,7 +125,7 @@ class report {
          "(f.info().exact), measured in one process. Written by `bench/peers/quadmc_peers`; "
          "every number below is in `peers.csv`.\n\n";
     o << "Regenerate (from the repository root; needs libgsl-dev, libcubature-dev, "
-         "python3-matplotlib):\n\n```sh\n"
+         "python3-matplotlib, python3-scipy):\n\n```sh\n"
       << regenerate_command << "\n```\n\n";
     o << fmt::format(
         "Machine: {}, {} hardware threads (shared with other work while measuring); quadmc's "
@@ -159,6 +166,7 @@ class report {
          "evaluations are counted in every adapter, never assumed.\n\n";
     targets(o);
     throughput(o);
+    qmc_points(o);
     accuracy(o);
     memory(o);
     determinism(o);
@@ -303,6 +311,87 @@ class report {
     }
   }
 
+  // Points per second of the QMC generators, the ratios of quadmc's sets to the peer of the
+  // same kind, and whether each peer's points were checked to be of that kind.
+  void qmc_points(std::ostringstream& o) const {
+    if (generators_.empty() && st_.agreement.empty()) return;
+    o << "## Quasi-Monte Carlo points per second\n\n"
+      << fmt::format(
+             "Million points per second, one thread, N = {} points in each s, best of {} runs "
+             "(bench/peers/qmc_point_peers.hpp): every generator writes the same N × s doubles "
+             "into an array it allocates inside the timed call, set-up included (scrambles, "
+             "GSL's state, scipy's engine). quadmc's sets are generated in batches of 256 "
+             "points, as its estimators call them. Boost.Random `sobol_engine<uint32_t, 32>` "
+             "(one output per coordinate, × 2^−32), GSL `gsl_qrng_get` (one point per call), "
+             "scipy {} `scipy.stats.qmc.Sobol/Halton(d, scramble, seed).random(N)` timed inside "
+             "a `/usr/bin/python3` subprocess (interpreter start and import not timed; runs in "
+             "one process, not in rounds). No integrand: only point generation.\n\n",
+             c_.qmc_points, c_.throughput_runs, "1.10 (Debian python3-scipy)");
+    if (!generators_.empty()) {
+      o << "| generator | family |";
+      for (std::size_t s : c_.qmc_dimensions) o << " s = " << s << " |";
+      o << "\n|---|---|";
+      for (std::size_t i = 0; i < c_.qmc_dimensions.size(); ++i) o << "---:|";
+      o << "\n";
+      for (const std::string& g : generators_) {
+        std::string family;
+        std::string line;
+        for (std::size_t s : c_.qmc_dimensions) {
+          const auto it = points_.find({g, s});
+          if (it == points_.end()) {
+            line += " — |";
+            continue;
+          }
+          family = it->second.family;
+          const double cores = it->second.cpu_seconds / it->second.seconds;
+          line += fmt::format(" {}{} |", format_rate(it->second.rate),
+                              cores < 0.75 ? fmt::format(" ⚠ ({:.2f} cores)", cores) : "");
+        }
+        o << fmt::format("| {} | {} |{}\n", g, family, line);
+      }
+      o << "\n⚠: the kept run got less than 0.75 of a core (CPU time / wall time), so it "
+           "measured the machine's other work too.\n\n";
+      // quadmc's set of the same kind as each peer (what check_point_agreement compares).
+      const std::vector<std::pair<std::string, std::string>> pairs{
+          {"quadmc sobol none", "Boost.Random sobol_engine"},
+          {"quadmc sobol none", "GSL sobol"},
+          {"quadmc sobol none", "GSL niederreiter_2"},
+          {"quadmc sobol none", "scipy Sobol"},
+          {"quadmc sobol lms_shift", "scipy Sobol scrambled"},
+          {"quadmc halton none", "GSL halton"},
+          {"quadmc halton none", "scipy Halton"},
+          {"quadmc halton permutation", "GSL reversehalton"},
+          {"quadmc halton permutation", "scipy Halton scrambled"}};
+      o << "quadmc / peer, points per second (> 1: quadmc is faster):\n\n| quadmc | peer |";
+      for (std::size_t s : c_.qmc_dimensions) o << " s = " << s << " |";
+      o << "\n|---|---|";
+      for (std::size_t i = 0; i < c_.qmc_dimensions.size(); ++i) o << "---:|";
+      o << "\n";
+      for (const auto& [ours, peer] : pairs) {
+        o << fmt::format("| {} | {} |", ours, peer);
+        for (std::size_t s : c_.qmc_dimensions) {
+          const auto a = points_.find({ours, s});
+          const auto b = points_.find({peer, s});
+          if (a == points_.end() || b == points_.end()) {
+            o << " — |";
+          } else {
+            o << fmt::format(" {:.2f}× |", a->second.rate / b->second.rate);
+          }
+        }
+        o << "\n";
+      }
+      o << "\n";
+    }
+    if (!st_.agreement.empty()) {
+      o << "Same kind of points (checked in this run on the generators' own output, and by "
+           "tests/peers/qmc_point_peers_test.cpp):\n\n";
+      for (const point_agreement& a : st_.agreement) {
+        o << fmt::format("- {} **{}**: {} ({})\n", a.holds ? "✅" : "❌", a.peer, a.claim, a.detail);
+      }
+      o << "\n";
+    }
+  }
+
   void accuracy(std::ostringstream& o) const {
     o << "## Time to reach an absolute error of 10⁻³ and 10⁻⁵\n\n"
          "Interpolated on the work-precision ladder (one thread; log time against log error "
@@ -415,6 +504,8 @@ class report {
   std::map<key, std::vector<ladder_point>> ladder_;
   std::vector<std::string> integrands_;
   std::vector<std::pair<std::string, unsigned>> methods_;
+  std::map<std::pair<std::string, std::size_t>, row> points_;  // QMC rows by (generator, s)
+  std::vector<std::string> generators_;                        // in order of first appearance
 };
 
 }  // namespace
@@ -426,11 +517,14 @@ void write_csv(const std::filesystem::path& path, const std::vector<row>& rows) 
          "ratio_to_scalar_loop,run,family,control,repetitions,cpu_seconds\n";
   for (const row& r : rows) {
     out << fmt::format(
-        "{},{},{},{},{},{:.0f},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{}\n", r.method, r.integrand,
-        r.s, r.threads, r.n, r.evaluations, r.seconds, r.rate, r.abs_error,
+        "{},{},{},{},{},{:.0f},{:.6g},{:.6g},{},{},{},{},{},{},{}\n", r.method, r.integrand, r.s,
+        r.threads, r.n, r.evaluations, r.seconds, r.rate,
+        std::isnan(r.abs_error) ? std::string() : fmt::format("{:.6g}", r.abs_error),
         r.ratio_to_scalar_loop ? fmt::format("{:.4f}", *r.ratio_to_scalar_loop) : std::string(),
         r.run, r.family, r.control, r.repetitions,
-        r.run == "throughput" ? fmt::format("{:.6g}", r.cpu_seconds) : std::string());
+        (r.run == "throughput" || r.run == "points") && !std::isnan(r.cpu_seconds)
+            ? fmt::format("{:.6g}", r.cpu_seconds)
+            : std::string());
   }
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");

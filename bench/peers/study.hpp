@@ -6,6 +6,8 @@
 // (report.hpp). Not the place for how anything is measured or printed.
 #pragma once
 
+#include "qmc_point_peers.hpp"
+
 #include "quadmc/report/provenance.hpp"
 
 #include <cstddef>
@@ -32,6 +34,11 @@ struct configuration {
   int repetitions = 3;      // seeds per ladder point of a random method
   int throughput_runs = 5;  // best of
   std::vector<std::uint64_t> rss_sizes{1000000, 100000000};
+  // Quasi-Monte Carlo point generation (qmc_point_peers.hpp): N points in each s, best of
+  // throughput_runs. 2^18: the slowest generators (digit-scrambled Halton, scipy) then take
+  // 1–4 s per run at s = 8 under load, and the fastest still run for ≥ 10 ms.
+  std::vector<std::size_t> qmc_dimensions{2, 8};
+  std::uint64_t qmc_points = std::uint64_t{1} << 18;
 };
 
 // `--quick`: a smoke run (small N, seconds); its numbers are not for the record.
@@ -45,12 +52,13 @@ inline configuration quick_configuration() {
   c.repetitions = 2;
   c.throughput_runs = 2;
   c.rss_sizes = {10000, 1000000};
+  c.qmc_points = std::uint64_t{1} << 12;
   return c;
 }
 
 // One line of peers.csv.
 struct row {
-  std::string run;  // "throughput" or "ladder"
+  std::string run;  // "throughput", "ladder" or "points" (QMC point generation, no integrand)
   std::string method;
   std::string family;
   std::string integrand;
@@ -88,9 +96,10 @@ struct study {
   std::optional<reproducibility> repro;
   std::vector<std::string> skipped;
   std::vector<rss_row> rss;
-  long rss_baseline_kib = 0;  // the same child doing no integration
-  double wall_seconds = 0.0;  // the whole run
-  quadmc::provenance build;   // what made the numbers (meta.csv, the README's machine paragraph)
+  std::vector<point_agreement> agreement;  // QMC peers: same kind of points as quadmc's
+  long rss_baseline_kib = 0;               // the same child doing no integration
+  double wall_seconds = 0.0;               // the whole run
+  quadmc::provenance build;  // what made the numbers (meta.csv, the README's machine paragraph)
 };
 
 }  // namespace quadmc::peers

@@ -100,6 +100,52 @@ TEST(MarkdownReport, EnvelopeSeriesShowsItsVerdictRatioAndEnvelopeColumn) {
   expect_rectangular_tables(page);
 }
 
+// A quasi-Monte Carlo series whose small-N cells carry discrepancies: its table shows the three
+// beside the RMSE (each the root mean square over the repetitions), "—" where N was too large
+// to compute them; a series without discrepancies gets no such columns.
+TEST(MarkdownReport, DiscrepancyColumnsStandBesideTheErrorOfQuasiMonteCarloCells) {
+  convergence_series qmc = series_of("genz|odd", 1, "sobol", smoothness::analytic, 2.0,
+                                     monte_carlo_theory(smoothness::analytic));
+  for (const std::uint64_t n : {16u, 64u, 4096u}) {
+    std::vector<repetition_result> reps;
+    for (const double sign : {1.0, -1.0}) {
+      repetition_result r = repetition(2.0 + sign / static_cast<double>(n), nan, n, 1e-6);
+      if (n <= 64) {
+        // Repetition 1: (0.03, 0.3, 3); repetition 2: (0.04, 0.4, 4), divided by N.
+        const double k = (sign > 0 ? 3.0 : 4.0) / static_cast<double>(n);
+        r.l2_star_discrepancy = 0.01 * k;
+        r.centered_discrepancy = 0.1 * k;
+        r.wraparound_discrepancy = k;
+      }
+      reps.push_back(r);
+    }
+    qmc.cells.push_back(cell_at(n, reps));
+  }
+  convergence_series mc = series_of("genz|odd", 1, "plain_mc", smoothness::analytic, 2.0,
+                                    monte_carlo_theory(smoothness::analytic));
+  for (const std::uint64_t n : {16u, 64u, 4096u}) {
+    const double e = 1.0 / std::sqrt(static_cast<double>(n));
+    mc.cells.push_back(
+        cell_at(n, {repetition(2.0 + e, e, n, 1e-6), repetition(2.0 - e, e, n, 1e-6)}));
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(qmc), analyse_convergence(mc)};
+  const std::string page = render_results_markdown(run_info{}, tables);
+  const std::string header =
+      "| N | evaluations | RMSE | L2-star discrepancy | centered discrepancy | wrap-around "
+      "discrepancy | std error |";
+  ASSERT_NE(page.find(header), std::string::npos) << page;
+  EXPECT_EQ(page.find(header), page.rfind(header)) << "only the sobol table has the columns";
+  // N = 16: RMSE 1/16; discrepancies √((3² + 4²)/2)/16 = 5/(√2·16) = 0.2209709… times 0.01,
+  // 0.1 and 1.
+  EXPECT_NE(page.find("| 16 | 16 | 6.250e-02 | 2.210e-03 | 2.210e-02 | 2.210e-01 |"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("| 4096 | 4096 | 2.441e-04 | — | — | — |"), std::string::npos) << page;
+  // The plain MC table keeps its own layout.
+  EXPECT_NE(page.find("| N | evaluations | RMSE | std error |"), std::string::npos) << page;
+  expect_rectangular_tables(page);
+}
+
 // Two methods on one family in s = 2 and 4 (a `dimensions` list: names end in _s<s>): the table
 // names at each N the method of smaller error, with that error; a method without a cell at N
 // competes with its cell of the largest N' < N ("at N = N'"), an N where only one method

@@ -259,6 +259,32 @@ N = [1000]
   EXPECT_EQ(c[2].per_axis, 6u);
   EXPECT_EQ(c[2].evaluations, 49u);
   EXPECT_EQ(c[2].nominal_N, 49u);
+  ASSERT_EQ(p.notes.size(), 1u);
+  EXPECT_NE(p.notes[0].find("scene.toml:6: method[1] (simpson): explicit panels replace budget.N"),
+            std::string::npos)
+      << p.notes[0];
+}
+
+// A quasi-Monte Carlo method's explicit sizes are its `points` (point counts, not panels per
+// axis): the plan's note names that key and its line, as the panels note does.
+TEST(MakePlan, ExplicitPointsOfAQuasiMonteCarloMethodAreNamedAsPoints) {
+  const plan p = plan_of(R"([[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "sobol"
+points = [256, 1024]
+[budget]
+N = [1000]
+)");
+  const auto c = cells_of(p, "sobol");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[1].evaluations, 1024u);
+  ASSERT_EQ(p.notes.size(), 1u);
+  EXPECT_NE(p.notes[0].find("scene.toml:6: method[1] (sobol): explicit points replace budget.N"),
+            std::string::npos)
+      << p.notes[0];
+  EXPECT_EQ(p.notes[0].find("panels"), std::string::npos) << p.notes[0];
 }
 
 TEST(MakePlan, EnsembleInstancesHaveTheirOwnSeedsAndCells) {

@@ -97,6 +97,7 @@ class qmc_method final : public method {
     for (const std::uint64_t n : options_.points) out.push_back({cell_size{n, 0, 0, 0}, {}});
     return out;
   }
+  std::string explicit_sizes_key() const override { return "points"; }
 
   theoretical_rate theory(const integrand_class& f) const override {
     const randomization r = *set_->randomization_of(options_.set);

@@ -125,6 +125,7 @@ class tensor_rule_method final : public method {
     for (const std::uint64_t n : options_.panels) out.push_back(grid(n, s));
     return out;
   }
+  std::string explicit_sizes_key() const override { return "panels"; }
 
   theoretical_rate theory(const integrand_class& f) const override {
     theoretical_rate rate = composite_rule_rate(rule_.order(), f);

@@ -91,19 +91,35 @@ void append_method_table(std::string& out, const convergence_table& t) {
   const bool predicted = std::any_of(t.rows.begin(), t.rows.end(), [](const convergence_row& r) {
     return !std::isnan(r.predicted_error);
   });
+  // The L2 discrepancies of a quasi-Monte Carlo cell's points beside its error (computed for
+  // small N only, sampling/discrepancy.hpp), so the page shows both without the CSV.
+  const bool discrepant = std::any_of(t.rows.begin(), t.rows.end(), [](const convergence_row& r) {
+    return !std::isnan(r.stats.l2_star_discrepancy) || !std::isnan(r.stats.centered_discrepancy) ||
+           !std::isnan(r.stats.wraparound_discrepancy);
+  });
+  if (discrepant) {
+    out +=
+        "Discrepancies: the root mean square over the repetitions of the L2-star (Warnock's "
+        "formula), centered and wrap-around L2 discrepancy of each cell's points; — where N is "
+        "too large to compute them (O(N²·s)).\n\n";
+  }
   out += fmt::format(
-      "| {} | evaluations | {} |{}{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
+      "| {} | evaluations | {} |{}{}{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
       to_tolerance ? "tolerance" : "N", deterministic ? "\\|error\\|" : "RMSE",
+      discrepant ? " L2-star discrepancy | centered discrepancy | wrap-around discrepancy |" : "",
       predicted ? " predicted | measured/predicted |" : "", estimated ? " error estimate |" : "",
       enveloped ? " envelope |" : "");
-  out += fmt::format("|---:|---:|---:|{}{}{}---:|---:|---:|---:|:---:|\n",
-                     predicted ? "---:|---:|" : "", estimated ? "---:|" : "",
-                     enveloped ? "---:|" : "");
+  out += fmt::format("|---:|---:|---:|{}{}{}{}---:|---:|---:|---:|:---:|\n",
+                     discrepant ? "---:|---:|---:|" : "", predicted ? "---:|---:|" : "",
+                     estimated ? "---:|" : "", enveloped ? "---:|" : "");
   for (const convergence_row& row : t.rows) {
     const cell_statistics& c = row.stats;
     out += fmt::format(
-        "| {} | {} | {} |{}{}{} {} | {} | {} | {} | {} |\n",
+        "| {} | {} | {} |{}{}{}{} {} | {} | {} | {} | {} |\n",
         to_tolerance ? sci(row.tolerance) : fmt::format("{}", row.n), c.evaluations, sci(c.rmse),
+        discrepant ? fmt::format(" {} | {} | {} |", sci(c.l2_star_discrepancy),
+                                 sci(c.centered_discrepancy), sci(c.wraparound_discrepancy))
+                   : "",
         predicted ? fmt::format(" {} | {} |", sci(row.predicted_error),
                                 std::isnan(row.prediction_ratio)
                                     ? std::string("—")

@@ -502,8 +502,11 @@ plan make_plan(const scene& input) {
                       method.table_index, method.label, method.repetitions));
     }
     if (!method.configured->explicit_sizes(1).empty()) {
-      p.notes.push_back(fmt::format("method[{}] ({}): explicit panels replace budget.N",
-                                    method.table_index, method.label));
+      // Named by the method's own key: a rule's panels per axis, a quasi-Monte Carlo set's points.
+      const std::string key = method.configured->explicit_sizes_key();
+      p.notes.push_back(fmt::format("{}:{}: method[{}] ({}): explicit {} replace budget.N", sc.file,
+                                    key_location(method.keys, key, method.table).line,
+                                    method.table_index, method.label, key));
     }
     if (method.control == cell_control::tolerance) {
       p.notes.push_back(fmt::format(

@@ -121,6 +121,9 @@ class method {
   // Explicit sizes replacing the ladder (the rules' `panels`), each as a size; empty when the
   // method follows budget.N.
   virtual std::vector<sizing> explicit_sizes(std::size_t s) const;
+  // The [[method]] key those sizes come from ("panels" per axis for a rule, "points" for a
+  // quasi-Monte Carlo set), for the plan's note; empty when the method has none.
+  virtual std::string explicit_sizes_key() const { return {}; }
 
   // The convergence rate theory predicts on f (analysis/theoretical_rate.hpp).
   virtual theoretical_rate theory(const integrand_class& f) const = 0;
