@@ -360,6 +360,10 @@ CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request) {
       "K ≥ 0");
   gallery->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key, default 2026)")
       ->check(non_negative);
+  gallery
+      ->add_option("--threads", request.threads,
+                   "Threads, 0 = all cores, at most 4096 (default 0; one point set per thread)")
+      ->check(CLI::Range(0u, 4096u));
   return gallery;
 }
 
@@ -409,8 +413,8 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
   } cleanup_at_exit{staging};
   check_plotting(gallery_script_path(), "to draw the gallery");
 
-  const unsigned threads = std::max(
-      1u, std::min(std::thread::hardware_concurrency(), static_cast<unsigned>(sets.size())));
+  const unsigned cores = r.threads == 0 ? std::thread::hardware_concurrency() : r.threads;
+  const unsigned threads = std::max(1u, std::min(cores, static_cast<unsigned>(sets.size())));
   std::string plan = fmt::format(
       "gallery: {} point sets in s = 2 (seed {}), {} threads → {}\n"
       "  scatter, strata and 1D projections at N = 16, 64, 256 (stream 0)\n"

@@ -1,5 +1,5 @@
-// `quadmc gallery [--out DIR] [--realizations R] [--seed K]`: the pictures of every point set of
-// the catalogue (estimators/point_set_catalogue.hpp) in s = 2, side by side the way
+// `quadmc gallery [--out DIR] [--realizations R] [--seed K] [--threads T]`: the pictures of every
+// point set of the catalogue (estimators/point_set_catalogue.hpp) in s = 2, side by side the way
 // [Pharr et al. 2016, §7.2–7.3] compares sampling patterns, written to results/gallery/ (or DIR).
 //
 // Use it to see what a point set does before reading its error slopes: where its points fall,
@@ -19,8 +19,9 @@
 //    discrepancy.hpp) of the pictured points and their root mean square over min(R, 32)
 //    realizations, at N = 16, 64, 256, 1024;
 //  - README.md (the page), meta.csv (what built the command), gallery.png and spectra.png.
-// Same (K, R) → the same numbers, bit for bit. The folder is replaced by the rules of
-// results_staging.hpp (a folder holding anything else is refused). Errors are one line.
+// Same (K, R) → the same numbers, bit for bit, for any T (each set is computed by one thread). The
+// folder is replaced by the rules of results_staging.hpp (a folder holding anything else is
+// refused). Errors are one line.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -36,6 +37,7 @@ struct gallery_request {
   std::string out;  // empty: results/gallery
   std::uint64_t realizations = 256;
   std::uint64_t seed = 2026;
+  unsigned threads = 0;  // 0: all cores; never more than the point sets
 };
 
 // Adds the `gallery` subcommand to `app`, filling `request` when it is parsed.

@@ -28,8 +28,8 @@ class GalleryCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = std::make_unique<scratch_folder>();
-    result_ = std::make_unique<command_result>(
-        run_quadmc(*dir_, {"gallery", "--out", "g", "--realizations", "3", "--seed", "5"}));
+    result_ = std::make_unique<command_result>(run_quadmc(
+        *dir_, {"gallery", "--out", "g", "--realizations", "3", "--seed", "5", "--threads", "3"}));
   }
   static void TearDownTestSuite() {
     result_.reset();
@@ -46,7 +46,7 @@ std::unique_ptr<command_result> GalleryCommand::result_;
 
 TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
   ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
-  EXPECT_EQ(result_->out.rfind("gallery: 8 point sets in s = 2 (seed 5)", 0), 0u)
+  EXPECT_EQ(result_->out.rfind("gallery: 8 point sets in s = 2 (seed 5), 3 threads", 0), 0u)
       << describe(*result_);
   EXPECT_NE(result_->out.find("over 3 realizations per set"), std::string::npos);
   EXPECT_NE(result_->out.find("jittered         strata: N = 16: 4 × 4 cells"), std::string::npos)
@@ -124,10 +124,11 @@ TEST_F(GalleryCommand, StratifiedSetsPutExactlyOnePointPerStratum) {
   }
 }
 
-TEST_F(GalleryCommand, SameSeedGivesTheSameNumbersAndReplacesItsOwnFolder) {
+TEST_F(GalleryCommand, SameSeedGivesTheSameNumbersOnAnyThreadCountAndReplacesItsOwnFolder) {
   ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
-  const command_result again =
-      run_quadmc(*dir_, {"gallery", "--out", "g2", "--realizations", "3", "--seed", "5"});
+  // On one thread instead of all cores (the fixture's run): the same bytes.
+  const command_result again = run_quadmc(
+      *dir_, {"gallery", "--out", "g2", "--realizations", "3", "--seed", "5", "--threads", "1"});
   ASSERT_EQ(again.exit_status, 0) << describe(again);
   for (const std::string file : {"scatter.csv", "spectrum.csv", "discrepancy.csv", "strata.csv"}) {
     EXPECT_EQ(read_text(*dir_ / "g2" / file), read_text(*dir_ / "g" / file)) << file;
@@ -158,7 +159,9 @@ TEST(GalleryErrors, BadArgumentsGetOneLine) {
   expect_one_line_error({"gallery", "--realizations", "1"}, 2, "--realizations");
   expect_one_line_error({"gallery", "--realizations", "many"}, 2, "--realizations");
   expect_one_line_error({"gallery", "--realizations", "100001"}, 2, "--realizations");
-  expect_one_line_error({"gallery", "--seed", "-3"}, 2, "--seed");
+  expect_one_line_error({"gallery", "--seed", "-3"}, 2,
+                        "--seed: expected an integer K ≥ 0, got -3");
+  expect_one_line_error({"gallery", "--threads", "5000"}, 2, "--threads");
   expect_one_line_error({"gallery", "extra"}, 2, "extra");
   expect_one_line_error({"gallery", "--out"}, 2, "--out");
 }
