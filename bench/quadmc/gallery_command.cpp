@@ -289,6 +289,10 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
       "±2 standard errors. Independent points are white noise, flat at 1; stratified points have "
       "low power below the frequency of their strata (√N = 32, dotted), blue noise, and the "
       "grid of centres (unjittered) has all its power in spikes at the multiples of √N.\n"
+      "- **padded_jittered equals jittered here**: in s = 2 the padded set is one 2D group, whose "
+      "permutation is the identity and whose jitter uses the same uniform numbers, so its points "
+      "are the jittered points; padding shuffles strata across dimension pairs only from s = 3 "
+      "on.\n"
       "- **Discrepancy table** below: the discrepancies of the pictured points and their root "
       "mean square over min(R, 32) realizations, beside the expected value for independent "
       "points, √((2⁻ˢ − 3⁻ˢ)/N) etc. (sampling/discrepancy.hpp).\n\n",
