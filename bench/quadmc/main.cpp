@@ -1,5 +1,6 @@
 // The `quadmc` command: run a scene, print its plan, list what scenes may name, compare two
-// result folders, write a point set's points (points_command.hpp).
+// result folders, write a point set's points (points_command.hpp), draw the point-set gallery
+// (gallery_command.hpp).
 //
 // Exit status (also in `quadmc --help`):
 //   0        success; for `compare`, no slope regression
@@ -35,6 +36,7 @@
 
 #include "build_provenance.hpp"
 #include "catalogue_listing.hpp"
+#include "gallery_command.hpp"
 #include "interruption.hpp"
 #include "plot_script.hpp"
 #include "points_command.hpp"
@@ -108,32 +110,6 @@ std::string machine_description() {
   return fmt::format("{} hardware threads, SIMD level {} (QUADMC_SIMD to choose)",
                      std::thread::hardware_concurrency(),
                      quadmc::to_string(quadmc::active_simd_level()));
-}
-
-// Before the run, not after it: a missing matplotlib found by the plot step would throw away the
-// whole computation.
-void check_plotting() {
-  const fs::path script = quadmc_cli::plot_script_path();
-  const std::string python = quadmc::plot_command_line(script, "").front();
-  std::error_code ec;
-  if (!fs::is_regular_file(script, ec)) {
-    throw std::runtime_error(fmt::format(
-        "plots need the plot script {}, which is missing (or set plots = false in [output])",
-        script.string()));
-  }
-  if (::access(python.c_str(), X_OK) != 0) {
-    throw std::runtime_error(fmt::format(
-        "plots need Python with matplotlib, but {} cannot be run ({}): install python3 and "
-        "python3-matplotlib (./run.sh deps) or set plots = false in [output]",
-        python, std::strerror(errno)));
-  }
-  if (quadmc_cli::subprocess_status({python, "-c", "import matplotlib"},
-                                    quadmc_cli::child_output::none) != 0) {
-    throw std::runtime_error(
-        fmt::format("plots need matplotlib, but `{} -c 'import matplotlib'` failed: install "
-                    "python3-matplotlib (./run.sh deps) or set plots = false in [output]",
-                    python));
-  }
 }
 
 // The names the run will write into its folder, for the name-length checks made before it.
@@ -219,7 +195,10 @@ int run_command(const run_request& request, standard_output& out) {
                            s->folder().string());
       });
     }
-    if (outputs.plots) check_plotting();
+    if (outputs.plots) {
+      quadmc_cli::check_plotting(quadmc_cli::plot_script_path(),
+                                 "or set plots = false in [output]");
+    }
   }
 
   out.print(quadmc::format_plan(p) + "\n");
@@ -369,6 +348,9 @@ int main(int argc, char** argv) {
   quadmc_cli::points_request points_request;
   auto* points = quadmc_cli::add_points_subcommand(app, points_request);
 
+  quadmc_cli::gallery_request gallery_request;
+  auto* gallery = quadmc_cli::add_gallery_subcommand(app, gallery_request);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForVersion&) {
@@ -404,6 +386,12 @@ int main(int argc, char** argv) {
         return !out.failed();
       });
       if (out.failed()) throw std::runtime_error(out.message());
+      return 0;
+    }
+    if (*gallery) {
+      quadmc_cli::run_gallery(gallery_request, [&out](std::string_view text) { out.print(text); });
+      if (out.failed())
+        throw std::runtime_error(out.message() + "; the gallery itself was written");
       return 0;
     }
   } catch (const std::exception& e) {

@@ -13,9 +13,20 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 
 namespace quadmc_cli {
 
 std::filesystem::path plot_script_path();
+
+// bench/gallery.py, the script that draws `quadmc gallery`'s PNGs: beside plot.py, by the same
+// rule.
+std::filesystem::path gallery_script_path();
+
+// Checks before any computation that `script` exists and that Debian's python3 can import
+// matplotlib: a missing plotting stack found after the run would throw away the whole
+// computation. `remedy` ends the message ("or set plots = false in [output]"). Throws
+// std::runtime_error with a one-line message.
+void check_plotting(const std::filesystem::path& script, std::string_view remedy);
 
 }  // namespace quadmc_cli

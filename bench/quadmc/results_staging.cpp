@@ -35,14 +35,15 @@ std::string error_text(int error) {
 
 // What makes `folder` not a results folder (its first such entry), or nothing. Only regular
 // files count as results files: a folder named "figures.svg" is somebody's folder.
-std::optional<std::string> first_foreign_entry(const fs::path& folder) {
+std::optional<std::string> first_foreign_entry(const fs::path& folder,
+                                               results_file_predicate is_results_file) {
   std::error_code ec;
   fs::directory_iterator it(folder, ec);
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
     const std::string name = it->path().filename().string();
     std::error_code status_ec;
     const bool regular = fs::is_regular_file(it->symlink_status(status_ec));
-    if (!regular || !quadmc::is_results_file_name(name)) {
+    if (!regular || !is_results_file(name)) {
       return fmt::format("it holds '{}', which a run does not write", name);
     }
   }
@@ -81,8 +82,12 @@ fs::path results_folder_path(const std::string& out, const std::string& scene_na
 }
 
 results_staging::results_staging(std::string parameter, std::string given, fs::path folder,
-                                 const std::vector<std::string>& files)
-    : parameter_(std::move(parameter)), given_(std::move(given)), folder_(std::move(folder)) {
+                                 const std::vector<std::string>& files,
+                                 results_file_predicate is_results_file)
+    : parameter_(std::move(parameter)),
+      given_(std::move(given)),
+      folder_(std::move(folder)),
+      is_results_file_(is_results_file) {
   std::error_code ec;
   if (fs::is_symlink(fs::symlink_status(folder_, ec))) {
     // Followed, not replaced: renaming a folder onto the link would turn the link into a copy
@@ -99,7 +104,7 @@ results_staging::results_staging(std::string parameter, std::string given, fs::p
   const fs::file_status status = fs::status(folder_, ec);
   if (fs::exists(status)) {
     if (!fs::is_directory(status)) refuse("a file, not a folder");
-    if (const auto foreign = first_foreign_entry(folder_)) {
+    if (const auto foreign = first_foreign_entry(folder_, is_results_file_)) {
       refuse(
           fmt::format("not a results folder: {}, so it is not replaced (choose a new folder "
                       "or an earlier results folder)",
@@ -255,7 +260,7 @@ std::string results_staging::commit() {
     if (!fs::is_directory(status)) {
       keep_and_refuse("it was replaced by a file or a link during the run, so it is not replaced");
     }
-    if (const auto foreign = first_foreign_entry(folder_)) {
+    if (const auto foreign = first_foreign_entry(folder_, is_results_file_)) {
       keep_and_refuse(
           fmt::format("it changed during the run: {}, so it is not replaced", *foreign));
     }
@@ -294,8 +299,7 @@ std::string results_staging::commit() {
     for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
       const std::string name = it->path().filename().string();
       std::error_code status_ec;
-      if (fs::is_regular_file(it->symlink_status(status_ec)) &&
-          quadmc::is_results_file_name(name)) {
+      if (fs::is_regular_file(it->symlink_status(status_ec)) && is_results_file_(name)) {
         if (::unlink(it->path().c_str()) != 0 && problem.empty()) {
           problem = fmt::format("cannot remove '{}': {}", name, error_text(errno));
         }

@@ -43,11 +43,18 @@
 // since it did not create it.
 #pragma once
 
+#include "quadmc/report/results_folder.hpp"
+
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc_cli {
+
+// Which names a folder of this command's results may hold (only those are replaced or removed):
+// quadmc::is_results_file_name for `run`, the gallery's own names for `gallery`.
+using results_file_predicate = bool (*)(std::string_view name);
 
 // The folder a run writes: `out` when given, else results/<scene_name>; absolute, normalised and
 // without a trailing separator (with "out/" the staging folder would otherwise be looked for
@@ -59,9 +66,11 @@ class results_staging {
   // `parameter` and `given` name the folder in messages ("--out", "mine/"); `folder` is the
   // absolute, normalised path (results_folder_path); `files` the names the run will write into
   // it. Throws quadmc::invalid_argument with a one-line message on any refusal above, having
-  // removed whatever it created.
+  // removed whatever it created. `is_results_file` says which entries of an existing folder are
+  // results this kind of run writes.
   results_staging(std::string parameter, std::string given, std::filesystem::path folder,
-                  const std::vector<std::string>& files);
+                  const std::vector<std::string>& files,
+                  results_file_predicate is_results_file = &quadmc::is_results_file_name);
   results_staging(const results_staging&) = delete;
   results_staging& operator=(const results_staging&) = delete;
   ~results_staging() { finish(); }
@@ -93,6 +102,7 @@ class results_staging {
 
   std::string parameter_, given_;
   std::filesystem::path folder_, link_, staging_, lock_file_;
+  results_file_predicate is_results_file_;
   std::vector<std::filesystem::path> created_parents_;  // outermost first
   int lock_fd_ = -1;
   bool created_lock_file_ = false;

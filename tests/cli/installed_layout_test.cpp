@@ -53,6 +53,7 @@ TEST(InstalledLayoutTest, InstalledCommandUsesItsInstalledPlotScript) {
   const fs::path libdir = prefix / QUADMC_INSTALL_LIBDIR;
   for (const fs::path& file :
        {prefix / "bin" / "quadmc", prefix / "share" / "quadmc" / "plot.py",
+        prefix / "share" / "quadmc" / "gallery.py",
         prefix / "share" / "quadmc" / "scenes" / "default.toml",
         prefix / "share" / "doc" / "quadmc" / "copyright",
         prefix / "share" / "doc" / "quadmc" / "CHANGELOG.md",

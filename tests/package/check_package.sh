@@ -119,6 +119,7 @@ done
 expected_files=(
   usr/bin/quadmc
   usr/share/quadmc/plot.py
+  usr/share/quadmc/gallery.py
   usr/share/quadmc/scenes/default.toml
   usr/share/quadmc/scenes/minimal.toml
   usr/share/doc/quadmc/copyright

@@ -1,0 +1,497 @@
+// `quadmc gallery`: see gallery_command.hpp. Each point set is computed by one thread from its
+// own streams, so the numbers do not depend on how many threads share the sets.
+#include "gallery_command.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/estimators/point_set_catalogue.hpp"
+#include "quadmc/report/csv.hpp"
+#include "quadmc/report/provenance.hpp"
+#include "quadmc/report/results_folder.hpp"
+#include "quadmc/sampling/discrepancy.hpp"
+#include "quadmc/sampling/periodogram.hpp"
+
+#include "build_provenance.hpp"
+#include "interruption.hpp"
+#include "plot_script.hpp"
+#include "progress_bar.hpp"
+#include "results_staging.hpp"
+#include "subprocess.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace quadmc_cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t dimension = 2;
+constexpr std::array<std::uint64_t, 3> scatter_sizes{16, 64, 256};
+constexpr std::uint64_t spectrum_size = 1024;
+// √1024 = 32 is the mean point spacing's frequency; twice that shows the high-frequency plateau.
+constexpr std::size_t spectrum_radius = 64;
+constexpr std::uint64_t max_discrepancy_realizations = 32;
+constexpr std::array<std::string_view, 8> gallery_files{
+    "README.md",       "meta.csv",     "scatter.csv", "strata.csv",
+    "discrepancy.csv", "spectrum.csv", "gallery.png", "spectra.png"};
+
+enum class strata_kind { cells, rows_and_columns };
+
+struct strata {
+  strata_kind kind = strata_kind::cells;
+  std::uint64_t columns = 0;
+  std::uint64_t rows = 0;
+};
+
+// The grid a set fills with one point per stratum at N points in 2D, if it has one by
+// construction: the k^s grid of jittered/unjittered, the k × k group of padded points (N = k²),
+// the N × N rows and columns of a Latin hypercube ([McKay et al. 1979]) and of a
+// rank-1 lattice with N = 2^m (coordinates {i/N + Δ₁}, {i·z₂/N + Δ₂}, z₂ odd, so both are
+// permutations of the N columns), and the elementary intervals of a (0, m, 2)-net: the first two
+// Sobol' coordinates are one, and Owen scrambling keeps it ([Owen 1995]); the k × k square grid is
+// the elementary interval of shape 2^(m/2) × 2^(m/2). The gallery's tests count the points per
+// stratum of every grid listed here.
+std::optional<strata> strata_of(const quadmc::point_set_entry& set, std::uint64_t n) {
+  const auto k = static_cast<std::uint64_t>(std::llround(std::sqrt(static_cast<double>(n))));
+  const bool square = k * k == n;
+  if ((set.counts == quadmc::point_count::perfect_power ||
+       set.counts == quadmc::point_count::perfect_square) &&
+      square) {
+    return strata{strata_kind::cells, k, k};
+  }
+  if (set.name == "sobol" && square) return strata{strata_kind::cells, k, k};
+  if (set.name == "latin_hypercube" || set.name == "lattice") {
+    return strata{strata_kind::rows_and_columns, n, n};
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(strata_kind k) {
+  return k == strata_kind::cells ? "cells" : "rows_and_columns";
+}
+
+struct discrepancy_row {
+  std::uint64_t n = 0;
+  quadmc::l2_discrepancies shown;  // of stream 0, the pictured points
+  quadmc::l2_discrepancies rms;    // root mean square over the realizations
+  std::uint64_t realizations = 0;
+};
+
+struct set_result {
+  const quadmc::point_set_entry* set = nullptr;
+  std::vector<std::vector<double>> scatter;  // per scatter size, row-major (x, y)
+  std::vector<discrepancy_row> discrepancy;
+  std::vector<quadmc::radial_power_bin> spectrum;
+  double seconds = 0.0;
+};
+
+std::vector<double> points_of(const quadmc::point_set_entry& set, std::uint64_t n,
+                              std::uint64_t seed, std::uint64_t stream) {
+  std::vector<double> x(n * dimension);
+  set.points(dimension, n, {seed, stream}, [&](std::uint64_t first, std::span<const double> b) {
+    std::copy(b.begin(), b.end(), x.begin() + static_cast<std::ptrdiff_t>(first * dimension));
+  });
+  return x;
+}
+
+// The expected squares for N independent uniform points in s = 2 (sampling/discrepancy.hpp):
+// the reference the table sets every row beside.
+quadmc::l2_discrepancies independent_rms(std::uint64_t n) {
+  const double N = static_cast<double>(n);
+  return {std::sqrt((1.0 / 4 - 1.0 / 9) / N), std::sqrt((25.0 / 16 - 169.0 / 144) / N),
+          std::sqrt((9.0 / 4 - 16.0 / 9) / N)};
+}
+
+class gallery_progress {
+ public:
+  explicit gallery_progress(std::uint64_t total) : total_(total) {}
+  void add(std::uint64_t done, bool set_finished) {
+    const std::lock_guard lock(mutex_);
+    done_ += done;
+    if (set_finished) ++sets_done_;
+    const auto held = interruption::hold();
+    bar_.update({sets_done_, sets_total, done_, total_});
+  }
+  void finish() {
+    const std::lock_guard lock(mutex_);
+    const auto held = interruption::hold();
+    bar_.finish();
+  }
+  std::size_t sets_total = 0;
+
+ private:
+  std::mutex mutex_;
+  progress_bar bar_;
+  std::uint64_t total_;
+  std::uint64_t done_ = 0;
+  std::size_t sets_done_ = 0;
+};
+
+set_result compute_set(const quadmc::point_set_entry& set, const gallery_request& r,
+                       gallery_progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  set_result out;
+  out.set = &set;
+  const std::uint64_t d_realizations = std::min(r.realizations, max_discrepancy_realizations);
+  std::vector<std::uint64_t> sizes(scatter_sizes.begin(), scatter_sizes.end());
+  sizes.push_back(spectrum_size);
+  for (const std::uint64_t n : sizes) {
+    discrepancy_row row;
+    row.n = n;
+    row.realizations = d_realizations;
+    std::array<double, 3> squares{0.0, 0.0, 0.0};
+    for (std::uint64_t stream = 0; stream < d_realizations; ++stream) {
+      const std::vector<double> x = points_of(set, n, r.seed, stream);
+      const quadmc::l2_discrepancies d = quadmc::discrepancies(x, dimension);
+      if (stream == 0) {
+        row.shown = d;
+        if (n != spectrum_size) out.scatter.push_back(x);
+      }
+      squares[0] += d.l2_star * d.l2_star;
+      squares[1] += d.centered * d.centered;
+      squares[2] += d.wraparound * d.wraparound;
+    }
+    const double R = static_cast<double>(d_realizations);
+    row.rms = {std::sqrt(squares[0] / R), std::sqrt(squares[1] / R), std::sqrt(squares[2] / R)};
+    out.discrepancy.push_back(row);
+  }
+  quadmc::radial_periodogram spectrum(spectrum_radius);
+  for (std::uint64_t stream = 0; stream < r.realizations; ++stream) {
+    spectrum.add(points_of(set, spectrum_size, r.seed, stream));
+    progress.add(1, stream + 1 == r.realizations);
+  }
+  out.spectrum = spectrum.bins();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+}
+
+std::string line(std::initializer_list<std::string> fields) {
+  const std::vector<std::string> v(fields);
+  return quadmc::csv_line(v);
+}
+
+std::string number(double x) {
+  return fmt::format("{}", x);
+}
+
+std::string scatter_csv(const std::vector<set_result>& results) {
+  std::string text = line({"set", "n", "index", "x1", "x2"});
+  for (const set_result& r : results) {
+    for (std::size_t k = 0; k < scatter_sizes.size(); ++k) {
+      const std::vector<double>& x = r.scatter[k];
+      for (std::size_t i = 0; i < x.size() / dimension; ++i) {
+        text += line({std::string(r.set->name), std::to_string(scatter_sizes[k]), std::to_string(i),
+                      number(x[2 * i]), number(x[2 * i + 1])});
+      }
+    }
+  }
+  return text;
+}
+
+std::string strata_csv(const std::vector<set_result>& results) {
+  std::string text = line({"set", "n", "kind", "columns", "rows"});
+  for (const set_result& r : results) {
+    for (const std::uint64_t n : scatter_sizes) {
+      if (const auto g = strata_of(*r.set, n)) {
+        text += line({std::string(r.set->name), std::to_string(n), std::string(to_string(g->kind)),
+                      std::to_string(g->columns), std::to_string(g->rows)});
+      }
+    }
+  }
+  return text;
+}
+
+std::string discrepancy_csv(const std::vector<set_result>& results) {
+  std::string text = line({"set", "n", "realizations", "l2_star", "centered", "wraparound",
+                           "l2_star_rms", "centered_rms", "wraparound_rms"});
+  for (const set_result& r : results) {
+    for (const discrepancy_row& d : r.discrepancy) {
+      text += line({std::string(r.set->name), std::to_string(d.n), std::to_string(d.realizations),
+                    number(d.shown.l2_star), number(d.shown.centered), number(d.shown.wraparound),
+                    number(d.rms.l2_star), number(d.rms.centered), number(d.rms.wraparound)});
+    }
+  }
+  return text;
+}
+
+std::string spectrum_csv(const std::vector<set_result>& results, std::uint64_t realizations) {
+  std::string text =
+      line({"set", "n", "realizations", "radius", "frequencies", "mean_power", "standard_error"});
+  for (const set_result& r : results) {
+    for (const quadmc::radial_power_bin& b : r.spectrum) {
+      text += line({std::string(r.set->name), std::to_string(spectrum_size),
+                    std::to_string(realizations), std::to_string(b.radius),
+                    std::to_string(b.frequencies), number(b.mean_power), number(b.standard_error)});
+    }
+  }
+  return text;
+}
+
+// Mean power over the bins lo … hi (inclusive), weighted by their frequency counts.
+double band_power(const std::vector<quadmc::radial_power_bin>& bins, std::size_t lo,
+                  std::size_t hi) {
+  double sum = 0.0;
+  double count = 0.0;
+  for (const auto& b : bins) {
+    if (b.radius < lo || b.radius > hi) continue;
+    sum += b.mean_power * static_cast<double>(b.frequencies);
+    count += static_cast<double>(b.frequencies);
+  }
+  return sum / count;
+}
+
+std::string readme(const std::vector<set_result>& results, const gallery_request& r,
+                   const quadmc::provenance& build, double seconds, unsigned threads) {
+  std::string t;
+  t += "# Point-set gallery\n\n";
+  t += fmt::format(
+      "Every point set of the suite in s = 2, side by side: where the points fall, their "
+      "projections, their power spectrum and their L2 discrepancies. Made by `quadmc gallery` "
+      "(seed {}, {} realizations for the spectra) in {:.1f} s on {} threads; quadmc {} "
+      "(commit {}, {}).\n\n",
+      r.seed, r.realizations, seconds, threads, build.version, build.commit, build.compiler);
+  t += "![Scatter plots at N = 16, 64, 256 with strata, projections and spectra](gallery.png)\n\n";
+  t += "## How to read it\n\n";
+  t += fmt::format(
+      "- **Scatter** (columns N = 16, 64, 256): the points of one realization. Grey lines are the "
+      "strata the set fills with exactly one point each, where it has them by construction: a "
+      "k × k grid (jittered, unjittered, padded; Sobol', a (0, m, 2)-net, at N = 4^j) or N rows "
+      "and N columns (Latin hypercube, rank-1 lattice; drawn up to N = 64). The ticks below and "
+      "left of each square are the 1D projections on x₁ and x₂: evenly spaced ticks mean a "
+      "stratified projection, clumps and gaps mean an independent one. The numbers under a square "
+      "are its L2-star, centered and wrap-around discrepancies D*, CD, WD.\n"
+      "- **Spectrum** (last column, and `spectra.png` with every set on one plot): the radially "
+      "averaged periodogram P(f) = |Σⱼ exp(−2πi f·xⱼ)|²/N over integer frequencies f with "
+      "round(|f|) = r, averaged over {} independent realizations of N = {} points, with a band of "
+      "±2 standard errors. Independent points are white noise, flat at 1; stratified points have "
+      "low power below the frequency of their strata (√N = 32, dotted), blue noise, and the "
+      "grid of centres (unjittered) has all its power in spikes at the multiples of √N.\n"
+      "- **padded_jittered equals jittered here**: in s = 2 the padded set is one 2D group, whose "
+      "permutation is the identity and whose jitter uses the same uniform numbers, so its points "
+      "are the jittered points; padding shuffles strata across dimension pairs only from s = 3 "
+      "on.\n"
+      "- **Discrepancy table** below: the discrepancies of the pictured points and their root "
+      "mean square over min(R, 32) realizations, beside the expected value for independent "
+      "points, √((2⁻ˢ − 3⁻ˢ)/N) etc. (sampling/discrepancy.hpp).\n\n",
+      r.realizations, spectrum_size);
+  t += "![Radially averaged power spectra of all point sets](spectra.png)\n\n";
+  t += fmt::format("## Power spectrum at N = {}, {} realizations\n\n", spectrum_size,
+                   r.realizations);
+  t += "Mean power (frequency-weighted) in three bands of |f|; 1 is white noise.\n\n";
+  t += "| point set | 1 ≤ \\|f\\| ≤ 8 | 9 ≤ \\|f\\| ≤ 24 | 25 ≤ \\|f\\| ≤ 40 | 41 ≤ \\|f\\| ≤ 64 "
+       "|\n";
+  t += "|---|---|---|---|---|\n";
+  for (const set_result& s : results) {
+    t += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", s.set->name,
+                     band_power(s.spectrum, 1, 8), band_power(s.spectrum, 9, 24),
+                     band_power(s.spectrum, 25, 40), band_power(s.spectrum, 41, 64));
+  }
+  t += "\n## L2 discrepancies\n\n";
+  t += "Pictured realization (root mean square over the realizations in brackets).\n\n";
+  t += "| point set | N | D* | CD | WD |\n|---|---|---|---|---|\n";
+  std::vector<std::uint64_t> sizes(scatter_sizes.begin(), scatter_sizes.end());
+  sizes.push_back(spectrum_size);
+  for (const std::uint64_t n : sizes) {
+    const quadmc::l2_discrepancies e = independent_rms(n);
+    t += fmt::format("| *independent, expected* | {} | {:.4f} | {:.4f} | {:.4f} |\n", n, e.l2_star,
+                     e.centered, e.wraparound);
+    for (const set_result& s : results) {
+      for (const discrepancy_row& d : s.discrepancy) {
+        if (d.n != n) continue;
+        t += fmt::format("| {} | {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) |\n",
+                         s.set->name, n, d.shown.l2_star, d.rms.l2_star, d.shown.centered,
+                         d.rms.centered, d.shown.wraparound, d.rms.wraparound);
+      }
+    }
+  }
+  t += "\n## Files\n\n";
+  t += "`scatter.csv` (set, n, index, x1, x2), `strata.csv` (set, n, kind, columns, rows), "
+       "`spectrum.csv` (set, n, realizations, radius, frequencies, mean_power, standard_error), "
+       "`discrepancy.csv` (set, n, realizations, l2_star, centered, wraparound and their _rms), "
+       "`meta.csv` (what built the command). Regenerate with `quadmc gallery` "
+       "(`build/release/bench/quadmc gallery`).\n";
+  t += "\nTime per point set (one thread each): ";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    t += fmt::format("{}{} {:.1f} s", i == 0 ? "" : ", ", results[i].set->name, results[i].seconds);
+  }
+  t += ".\n";
+  return t;
+}
+
+}  // namespace
+
+CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request) {
+  auto* gallery = app.add_subcommand(
+      "gallery",
+      "Draw every point set in 2D (scatter, strata, projections, power spectrum, discrepancies) "
+      "into results/gallery/");
+  gallery->add_option("--out", request.out, "Output folder (default: results/gallery)");
+  gallery
+      ->add_option("--realizations", request.realizations,
+                   "Independent realizations averaged in each power spectrum, 2 to 100000 "
+                   "(default 256)")
+      ->check(CLI::Range(std::uint64_t{2}, std::uint64_t{100000}));
+  // CLI11 would otherwise read "-3" into the unsigned seed as 2^64 − 3.
+  const CLI::Validator non_negative(
+      [](std::string& text) {
+        return text.find('-') == std::string::npos
+                   ? std::string()
+                   : fmt::format("expected an integer K ≥ 0, got {}", text);
+      },
+      "K ≥ 0");
+  gallery->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key, default 2026)")
+      ->check(non_negative);
+  gallery
+      ->add_option("--threads", request.threads,
+                   "Threads, 0 = all cores, at most 4096 (default 0; one point set per thread)")
+      ->check(CLI::Range(0u, 4096u));
+  return gallery;
+}
+
+bool is_gallery_file_name(std::string_view name) {
+  return std::find(gallery_files.begin(), gallery_files.end(), name) != gallery_files.end();
+}
+
+void run_gallery(const gallery_request& r, const std::function<void(std::string_view)>& print) {
+  const quadmc::provenance build = quadmc::bench::build_provenance();
+  std::vector<const quadmc::point_set_entry*> sets;
+  std::vector<std::string> skipped;
+  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
+    std::string problem;
+    for (const std::uint64_t n :
+         {std::uint64_t{16}, std::uint64_t{64}, std::uint64_t{256}, spectrum_size}) {
+      if (problem.empty()) problem = quadmc::size_problem(set, dimension, n);
+    }
+    if (problem.empty()) {
+      sets.push_back(&set);
+    } else {
+      skipped.push_back(fmt::format("{}: {}", set.name, problem));
+    }
+  }
+
+  const bool given = !r.out.empty();
+  const fs::path folder = results_folder_path(r.out, "gallery");
+  const std::vector<std::string> files(gallery_files.begin(), gallery_files.end());
+  std::unique_ptr<results_staging> staging;
+  {
+    const auto held = interruption::hold();
+    staging = std::make_unique<results_staging>(given ? "--out" : "results folder",
+                                                given ? r.out : std::string("results/gallery"),
+                                                folder, files, &is_gallery_file_name);
+    interruption::set_cleanup([s = staging.get()] {
+      s->finish();
+      return fmt::format("removed this gallery's unfinished results; {} is untouched",
+                         s->folder().string());
+    });
+  }
+  struct cleanup {
+    std::unique_ptr<results_staging>& staging;
+    ~cleanup() {
+      const auto held = interruption::hold();
+      interruption::set_cleanup({});
+      staging.reset();
+    }
+  } cleanup_at_exit{staging};
+  check_plotting(gallery_script_path(), "to draw the gallery");
+
+  const unsigned cores = r.threads == 0 ? std::thread::hardware_concurrency() : r.threads;
+  const unsigned threads = std::max(1u, std::min(cores, static_cast<unsigned>(sets.size())));
+  std::string plan = fmt::format(
+      "gallery: {} point sets in s = 2 (seed {}), {} threads → {}\n"
+      "  scatter, strata and 1D projections at N = 16, 64, 256 (stream 0)\n"
+      "  radially averaged periodogram at N = {}, |f| = 1 … {}, over {} realizations per set\n"
+      "  L2-star, centered, wrap-around discrepancies at N = 16, 64, 256, {} (RMS over {} "
+      "realizations)\n",
+      sets.size(), r.seed, threads, folder.string(), spectrum_size, spectrum_radius, r.realizations,
+      spectrum_size, std::min(r.realizations, max_discrepancy_realizations));
+  for (const auto* s : sets) {
+    std::string grids;
+    for (const std::uint64_t n : scatter_sizes) {
+      if (const auto g = strata_of(*s, n)) {
+        grids += fmt::format("{}N = {}: {} × {} {}", grids.empty() ? "" : ", ", n, g->columns,
+                             g->rows, to_string(g->kind));
+      }
+    }
+    plan += fmt::format("  {:<16} strata: {}\n", s->name, grids.empty() ? "none" : grids);
+  }
+  for (const std::string& s : skipped) plan += fmt::format("  skipped {}\n", s);
+  print(plan);
+  if (sets.empty()) throw std::runtime_error("gallery: no point set holds N = 16, 64, 256, 1024");
+
+  const auto start = std::chrono::steady_clock::now();
+  gallery_progress progress(r.realizations * sets.size());
+  progress.sets_total = sets.size();
+  std::vector<set_result> results(sets.size());
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(threads);
+  {
+    std::vector<std::jthread> workers;
+    for (unsigned w = 0; w < threads; ++w) {
+      workers.emplace_back([&, w] {
+        try {
+          for (std::size_t i = next++; i < sets.size(); i = next++) {
+            results[i] = compute_set(*sets[i], r, progress);
+          }
+        } catch (...) {
+          errors[w] = std::current_exception();
+        }
+      });
+    }
+  }
+  progress.finish();
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const fs::path dir = staging->staging();
+  {
+    const auto held = interruption::hold();
+    write_file(dir / "scatter.csv", scatter_csv(results));
+    write_file(dir / "strata.csv", strata_csv(results));
+    write_file(dir / "discrepancy.csv", discrepancy_csv(results));
+    write_file(dir / "spectrum.csv", spectrum_csv(results, r.realizations));
+    write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
+    write_file(dir / "README.md", readme(results, r, build, seconds, threads));
+  }
+  run_subprocess(quadmc::plot_command_line(gallery_script_path(), dir));
+  std::string written;
+  std::string warning;
+  {
+    const auto held = interruption::hold();
+    warning = staging->commit();
+    staging->finish();
+    written = "wrote " + staging->folder().string();
+    if (!staging->link().empty()) written += " (through the link " + staging->link().string() + ")";
+    interruption::set_cleanup([written] { return "the gallery had already " + written; });
+  }
+  print(fmt::format("gallery: {} point sets in {:.1f} s on {} threads; {}\n", sets.size(), seconds,
+                    threads, written));
+  if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
+}
+
+}  // namespace quadmc_cli

@@ -1,0 +1,54 @@
+// `quadmc gallery [--out DIR] [--realizations R] [--seed K] [--threads T]`: the pictures of every
+// point set of the catalogue (estimators/point_set_catalogue.hpp) in s = 2, side by side the way
+// [Pharr et al. 2016, §7.2–7.3] compares sampling patterns, written to results/gallery/ (or DIR).
+//
+// Use it to see what a point set does before reading its error slopes: where its points fall,
+// whether its projections are stratified, how its energy spreads over frequencies, and how
+// uniform it is by number. Not a convergence study (that is `quadmc run`), and only s = 2.
+//
+// What it computes (this command computes and writes CSV; bench/gallery.py draws the PNGs):
+//  - scatter.csv: the points of stream 0 of seed K at N = 16, 64, 256;
+//  - strata.csv: the stratum grid each pictured set fills with exactly one point per stratum,
+//    where it has one: `cells` (a k × k grid: jittered, unjittered, padded, and the Sobol' points,
+//    a (0, m, 2)-net, at N = 4^j) or `rows_and_columns` (N columns and N rows of width 1/N:
+//    Latin hypercube, and the rank-1 lattice, whose coordinates are i/N and i·z₂/N shifted with
+//    z₂ odd);
+//  - spectrum.csv: the radially averaged periodogram (sampling/periodogram.hpp) at N = 1024 over
+//    R independent realizations (streams 0 … R − 1, default R = 256), bins |f| = 1 … 64;
+//  - discrepancy.csv: the L2-star, centered and wrap-around discrepancies (sampling/
+//    discrepancy.hpp) of the pictured points and their root mean square over min(R, 32)
+//    realizations, at N = 16, 64, 256, 1024;
+//  - README.md (the page), meta.csv (what built the command), gallery.png and spectra.png.
+// Same (K, R) → the same numbers, bit for bit, for any T (each set is computed by one thread). The
+// folder is replaced by the rules of results_staging.hpp (a folder holding anything else is
+// refused). Errors are one line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace quadmc_cli {
+
+struct gallery_request {
+  std::string out;  // empty: results/gallery
+  std::uint64_t realizations = 256;
+  std::uint64_t seed = 2026;
+  unsigned threads = 0;  // 0: all cores; never more than the point sets
+};
+
+// Adds the `gallery` subcommand to `app`, filling `request` when it is parsed.
+CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request);
+
+// Whether `name` is a file the gallery writes (results_staging.hpp's predicate).
+bool is_gallery_file_name(std::string_view name);
+
+// Prints the plan, computes with a progress bar on a terminal, writes the folder and prints where.
+// `print` writes to stdout. Throws with a one-line message on any failure.
+void run_gallery(const gallery_request& request,
+                 const std::function<void(std::string_view)>& print);
+
+}  // namespace quadmc_cli
