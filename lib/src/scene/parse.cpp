@@ -502,7 +502,10 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   }
   m.name = r.string(*name, "a method name");
   const method_descriptor* descriptor = find_method(m.name);
-  if (descriptor == nullptr) r.expected(*name, fmt::format("one of: {}", method_names()));
+  if (descriptor == nullptr) {
+    if (auto why = unavailable_method(m.name)) r.fail(*name, *why);
+    r.expected(*name, fmt::format("one of: {}", method_names()));
+  }
 
   // Unknown keys first, before any value is judged: a typo ("repetition") must not fall back to
   // a default, and it is the likelier mistake when both are present.
