@@ -375,6 +375,18 @@ TEST(SceneErrors, UnknownMethodNamesTheChoices) {
   EXPECT_NE(m.find("simpson, gauss_legendre"), std::string::npos) << m;
 }
 
+TEST(SceneErrors, APeerWithoutThePeersBuildSaysHowToGetIt) {
+  // The library alone (this test links no peer): naming one is an error at its `name`, saying
+  // which library it needs and which command has it.
+  const std::string t = replace(valid, "\"simpson\"", "\"peer_hcubature\"");
+  const std::string m = expect_error(t, line_of(t, "peer_hcubature"), "method[1].name");
+  EXPECT_NE(m.find("method 'peer_hcubature' (cubature's hcubature, libcubature-dev) is a peer"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("quadmc_with_peers"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << "one line: " << m;
+}
+
 TEST(SceneErrors, MissingRequiredKeys) {
   std::string t = replace(valid, "family = \"genz_gaussian\"\n", "");
   expect_error(t, line_of(t, "[[integrand]]"), "integrand[1].family");

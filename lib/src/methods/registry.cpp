@@ -109,7 +109,10 @@ std::string method_names() {
 std::unique_ptr<const method> make_method(std::string_view name, const option_table& options) {
   const method_descriptor* d = find_method(name);
   if (d == nullptr) {
-    if (auto why = unavailable_method(name)) throw std::invalid_argument(*why);
+    if (auto why = unavailable_method(name)) {
+      throw invalid_argument("method", std::string(name),
+                             fmt::format("a method of this build: {}", *why));
+    }
     throw invalid_argument("method", std::string(name), fmt::format("one of: {}", method_names()));
   }
   option_map reader(options, fmt::format("method '{}'", name));
