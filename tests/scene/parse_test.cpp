@@ -724,6 +724,31 @@ TEST(ParseScene, ControlAndTolerances) {
   EXPECT_TRUE(budget.methods[0].tolerances.empty());
 }
 
+TEST(ParseScene, ToleranceKindIsAbsoluteUnlessRelative) {
+  EXPECT_FALSE(parse(romberg_scene).methods[0].relative_tolerance);
+  const std::string relative = replace(romberg_scene, "control = \"tolerance\"\n",
+                                       "control = \"tolerance\"\ntolerance_kind = \"relative\"\n");
+  EXPECT_TRUE(parse(relative).methods[0].relative_tolerance);
+  EXPECT_FALSE(
+      parse(replace(relative, "\"relative\"", "\"absolute\"")).methods[0].relative_tolerance);
+}
+
+TEST(SceneErrors, BadToleranceKinds) {
+  std::string t = replace(romberg_scene, "control = \"tolerance\"\n",
+                          "control = \"tolerance\"\ntolerance_kind = \"percent\"\n");
+  std::string m = expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  EXPECT_NE(m.find("one of: absolute (the tolerances are errors), relative (fractions of |I|), "
+                   "got \"percent\""),
+            std::string::npos)
+      << m;
+  t = replace(t, "\"percent\"", "true");
+  expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  // Without control = "tolerance" there is nothing for it to qualify.
+  t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\ntolerance_kind = \"relative\"");
+  m = expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  EXPECT_NE(m.find("only with control = \"tolerance\""), std::string::npos) << m;
+}
+
 TEST(SceneErrors, ControlsAMethodDoesNotSupportAndBadTolerances) {
   std::string t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\ncontrol = \"budget\"");
   std::string m = expect_error(t, line_of(t, "control"), "method[1].control");

@@ -627,6 +627,33 @@ N = [64]
 namespace quadmc {
 namespace {
 
+// tolerance_kind = "relative" needs every instance's I to be a number other than 0: the target
+// tolerance·|I| would otherwise be 0 (never reached) or no number.
+TEST(PlanTolerance, ARelativeToleranceOnAZeroIntegralIsRefusedAtItsKey) {
+  const std::string text = R"(name = "t"
+[[integrand]]
+family = "poly"
+lower = -1.0
+upper = 1.0
+[[method]]
+name = "romberg"
+control = "tolerance"
+tolerance_kind = "relative"
+tolerances = [1e-3, 1e-6]
+[budget]
+N = [16, 64]
+)";
+  expect_plan_error(text, line_of(text, "tolerance_kind"), "method[1].tolerance_kind",
+                    "\"relative\" needs I ≠ 0, but integrand 'poly' has I = 0");
+  // The same on [0, 1] (I = 1/6) plans, and the plan says the tolerances are relative.
+  const plan p = make_plan(parse_scene(replace(text, "lower = -1.0", "lower = 0.0"), "scene.toml"));
+  ASSERT_EQ(p.cells.size(), 2u);
+  EXPECT_EQ(p.cells[0].tolerance, 1e-3) << "the cell keeps the scene's (relative) tolerance";
+  EXPECT_NE(format_plan(p).find("control = tolerance (relative: each tolerance times |I|)"),
+            std::string::npos)
+      << format_plan(p);
+}
+
 // control = "tolerance": one cell per tolerance, spending at most the budget per repetition
 // (budget.max_evaluations, else plan_limits::default_tolerance_budget), each on its own stream.
 TEST(PlanTolerance, OneCellPerToleranceWithinTheBudget) {
