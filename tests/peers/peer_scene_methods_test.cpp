@@ -8,9 +8,12 @@
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
+#include "quadmc/scene/parse.hpp"
+#include "quadmc/scene/plan.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -171,6 +174,23 @@ TEST(PeerSceneMethods, ASeedAndStreamGiveTheSameResultAgain) {
     EXPECT_EQ(a.std_error, b.std_error) << name;
     EXPECT_NE(a.value, other.value) << name << ": another stream is another sample";
   }
+}
+
+// The bundled scene that names the peers plans with them, with cells for every peer it names.
+TEST(PeerSceneMethods, TheTimeToErrorScenePlansWithThePeers) {
+  const plan p = make_plan(parse_scene_file(QUADMC_SOURCE_DIR "/bench/scenes/time_to_error.toml"));
+  std::vector<std::string> with_cells;
+  for (const plan_cell& c : p.cells) {
+    const std::string& name = p.source.methods[c.method].name;
+    if (name.rfind("peer_", 0) == 0 &&
+        std::find(with_cells.begin(), with_cells.end(), name) == with_cells.end()) {
+      with_cells.push_back(name);
+    }
+  }
+  std::sort(with_cells.begin(), with_cells.end());
+  EXPECT_EQ(with_cells,
+            (std::vector<std::string>{"peer_gsl_miser", "peer_gsl_plain", "peer_gsl_vegas",
+                                      "peer_hcubature", "peer_pcubature"}));
 }
 
 }  // namespace
