@@ -34,11 +34,15 @@ LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
 # Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
 # end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
 PLOT_PACKAGES=(python3 python3-matplotlib)
-# What the tests need: the library, and the plots of the end-to-end runs.
-TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}")
-# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/
-# (python3-scipy: scipy.stats.qmc's Sobol and Halton, run by bench/peers/scipy_qmc.py).
-BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" libgsl-dev libcubature-dev python3-scipy)
+# The peers beside quadmc in bench/peers/: GSL and cubature (GPL) for the peers benchmark and the
+# quadmc_with_peers command that runs scenes naming peer_* methods (bench/scenes/time_to_error.toml),
+# and python3-scipy for scipy.stats.qmc's Sobol' and Halton points (bench/peers/scipy_qmc.py).
+PEER_PACKAGES=(libgsl-dev libcubature-dev python3-scipy)
+# What the tests need: the library, the plots of the end-to-end runs, and the peers, whose adapter
+# tests (tests/peers/) build only where they are installed (ctest passes without them too).
+TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}")
+# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/.
+BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}")
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)

@@ -91,6 +91,15 @@ TEST(BadInputTest, UnknownKeyInMethod) {
       6, "method[1].colour", "unknown key");
 }
 
+TEST(BadInputTest, APeerMethodInTheCommandWithoutPeers) {
+  // `quadmc` never links the GPL peers: a scene naming one fails before anything runs, with the
+  // command that has them.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"genz_gaussian\"\ndimensions = [2]\n\n[[method]]\n"
+      "name = \"peer_gsl_vegas\"\n\n[budget]\nN = [1000, 2000]\n",
+      6, "method[1].name", "is a peer, not built into this quadmc");
+}
+
 TEST(BadInputTest, WrongTypeOfSeed) {
   expect_scene_error("seed = \"x\"\n" + valid_tables, 1, "seed", "\"x\"");
 }

@@ -28,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 extern char** environ;
@@ -95,11 +96,8 @@ struct command_result {
   std::string err;
 };
 
-// Runs `quadmc args…` (the binary built beside these tests, QUADMC_CLI) in `folder` and waits.
-inline command_result run_quadmc(const scratch_folder& folder,
-                                 const std::vector<std::string>& args) {
-  std::vector<std::string> argv{QUADMC_CLI};
-  argv.insert(argv.end(), args.begin(), args.end());
+// Runs the program argv[0] with its arguments in `folder` and waits.
+inline command_result run_command(const scratch_folder& folder, std::vector<std::string> argv) {
   std::vector<char*> cargv;
   for (auto& a : argv) cargv.push_back(a.data());
   cargv.push_back(nullptr);
@@ -119,7 +117,7 @@ inline command_result run_quadmc(const scratch_folder& folder,
   const int started = posix_spawn(&pid, cargv[0], &actions, nullptr, cargv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (started != 0) {
-    throw std::system_error(started, std::generic_category(), std::string("spawn ") + QUADMC_CLI);
+    throw std::system_error(started, std::generic_category(), "spawn " + argv.front());
   }
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
@@ -130,6 +128,14 @@ inline command_result run_quadmc(const scratch_folder& folder,
   r.out = read_text(out_file);
   r.err = read_text(err_file);
   return r;
+}
+
+// Runs `quadmc args…` (the binary built beside these tests, QUADMC_CLI) in `folder` and waits.
+inline command_result run_quadmc(const scratch_folder& folder,
+                                 const std::vector<std::string>& args) {
+  std::vector<std::string> argv{QUADMC_CLI};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_command(folder, std::move(argv));
 }
 
 // For assertion messages: everything the command said.

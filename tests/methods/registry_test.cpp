@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <set>
+#include <span>
+#include <stdexcept>
 #include <string>
 
 namespace quadmc {
@@ -86,6 +89,34 @@ TEST(MethodRegistry, MakeMethodChecksNameAndKeys) {
   EXPECT_NE(error_of("importance", {{"warp", "power"}, {"point_set", "niederreiter"}})
                 .find("one of: independent, jittered"),
             std::string::npos);
+}
+
+TEST(MethodRegistry, APeerOutsideItsBuildSaysHowToGetIt) {
+  // The peers (bench/peers/) are not linked into this test: the library alone knows their names
+  // and says where they are built, instead of "expected one of" a list without them.
+  for (const char* peer : {"peer_hcubature", "peer_pcubature", "peer_gsl_plain", "peer_gsl_miser",
+                           "peer_gsl_vegas", "peer_boost_tanh_sinh", "peer_boost_gauss_kronrod"}) {
+    EXPECT_EQ(find_method(peer), nullptr) << peer;
+    const std::optional<std::string> why = unavailable_method(peer);
+    ASSERT_TRUE(why.has_value()) << peer;
+    EXPECT_NE(why->find(std::string("method '") + peer + "'"), std::string::npos) << *why;
+    EXPECT_NE(why->find("quadmc_with_peers"), std::string::npos) << *why;
+    const std::string m = error_of(peer, {});
+    EXPECT_NE(m.find(std::string("invalid method = ") + peer), std::string::npos) << m;
+    EXPECT_NE(m.find("is a peer, not built into this quadmc"), std::string::npos) << m;
+    EXPECT_EQ(m.find("expected one of"), std::string::npos) << m;
+  }
+  EXPECT_FALSE(unavailable_method("simpson").has_value()) << "present";
+  EXPECT_FALSE(unavailable_method("simpsons").has_value()) << "unknown";
+}
+
+TEST(MethodRegistry, AddMethodsRefusesATakenName) {
+  // A second "simpson" would make find_method's answer depend on the order of registration.
+  static const method_descriptor twin{"simpson", "a duplicate", method_kind::deterministic, {},
+                                      {},        nullptr};
+  const std::size_t before = method_registry().size();
+  EXPECT_THROW(add_methods(std::span<const method_descriptor>(&twin, 1)), std::logic_error);
+  EXPECT_EQ(method_registry().size(), before);
 }
 
 TEST(MethodRegistry, LabelSuffixesSayWhatWasConfigured) {

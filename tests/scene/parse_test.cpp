@@ -375,6 +375,18 @@ TEST(SceneErrors, UnknownMethodNamesTheChoices) {
   EXPECT_NE(m.find("simpson, gauss_legendre"), std::string::npos) << m;
 }
 
+TEST(SceneErrors, APeerWithoutThePeersBuildSaysHowToGetIt) {
+  // The library alone (this test links no peer): naming one is an error at its `name`, saying
+  // which library it needs and which command has it.
+  const std::string t = replace(valid, "\"simpson\"", "\"peer_hcubature\"");
+  const std::string m = expect_error(t, line_of(t, "peer_hcubature"), "method[1].name");
+  EXPECT_NE(m.find("method 'peer_hcubature' (cubature's hcubature, libcubature-dev) is a peer"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("quadmc_with_peers"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << "one line: " << m;
+}
+
 TEST(SceneErrors, MissingRequiredKeys) {
   std::string t = replace(valid, "family = \"genz_gaussian\"\n", "");
   expect_error(t, line_of(t, "[[integrand]]"), "integrand[1].family");
@@ -710,6 +722,31 @@ TEST(ParseScene, ControlAndTolerances) {
                                      "tolerances = [1e-3, 1e-6, 1e-9]\n", ""));
   EXPECT_EQ(budget.methods[0].control, cell_control::budget);
   EXPECT_TRUE(budget.methods[0].tolerances.empty());
+}
+
+TEST(ParseScene, ToleranceKindIsAbsoluteUnlessRelative) {
+  EXPECT_FALSE(parse(romberg_scene).methods[0].relative_tolerance);
+  const std::string relative = replace(romberg_scene, "control = \"tolerance\"\n",
+                                       "control = \"tolerance\"\ntolerance_kind = \"relative\"\n");
+  EXPECT_TRUE(parse(relative).methods[0].relative_tolerance);
+  EXPECT_FALSE(
+      parse(replace(relative, "\"relative\"", "\"absolute\"")).methods[0].relative_tolerance);
+}
+
+TEST(SceneErrors, BadToleranceKinds) {
+  std::string t = replace(romberg_scene, "control = \"tolerance\"\n",
+                          "control = \"tolerance\"\ntolerance_kind = \"percent\"\n");
+  std::string m = expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  EXPECT_NE(m.find("one of: absolute (the tolerances are errors), relative (fractions of |I|), "
+                   "got \"percent\""),
+            std::string::npos)
+      << m;
+  t = replace(t, "\"percent\"", "true");
+  expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  // Without control = "tolerance" there is nothing for it to qualify.
+  t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\ntolerance_kind = \"relative\"");
+  m = expect_error(t, line_of(t, "tolerance_kind"), "method[1].tolerance_kind");
+  EXPECT_NE(m.find("only with control = \"tolerance\""), std::string::npos) << m;
 }
 
 TEST(SceneErrors, ControlsAMethodDoesNotSupportAndBadTolerances) {

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -95,12 +97,27 @@ TEST(MakePlan, MinimalScene) {
   EXPECT_NE(listing.find("1030301"), std::string::npos) << listing;  // 101^3
 }
 
-// Every example scene shipped in bench/scenes parses and plans (the README points users there).
+// Every example scene shipped in bench/scenes parses and plans (the README points users there);
+// one that names a peer (time_to_error.toml) needs quadmc_with_peers, so here, without the
+// peers, it must fail exactly with the message that says so (tests/peers plans it with them).
 TEST(MakePlan, EveryBundledSceneIsValid) {
   std::size_t scenes = 0;
   for (const auto& file : std::filesystem::directory_iterator(QUADMC_SOURCE_DIR "/bench/scenes")) {
     if (file.path().extension() != ".toml") continue;
     ++scenes;
+    std::ifstream in(file.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.find("name = \"peer_") != std::string::npos) {
+      try {
+        make_plan(parse_scene_file(file.path()));
+        ADD_FAILURE() << file.path() << ": planned without the peers";
+      } catch (const scene_error& e) {
+        EXPECT_NE(std::string(e.what()).find("is a peer, not built into this quadmc"),
+                  std::string::npos)
+            << e.what();
+      }
+      continue;
+    }
     try {
       const plan p = make_plan(parse_scene_file(file.path()));
       EXPECT_FALSE(p.cells.empty()) << file.path();
@@ -652,6 +669,33 @@ N = [64]
 
 namespace quadmc {
 namespace {
+
+// tolerance_kind = "relative" needs every instance's I to be a number other than 0: the target
+// tolerance·|I| would otherwise be 0 (never reached) or no number.
+TEST(PlanTolerance, ARelativeToleranceOnAZeroIntegralIsRefusedAtItsKey) {
+  const std::string text = R"(name = "t"
+[[integrand]]
+family = "poly"
+lower = -1.0
+upper = 1.0
+[[method]]
+name = "romberg"
+control = "tolerance"
+tolerance_kind = "relative"
+tolerances = [1e-3, 1e-6]
+[budget]
+N = [16, 64]
+)";
+  expect_plan_error(text, line_of(text, "tolerance_kind"), "method[1].tolerance_kind",
+                    "\"relative\" needs I ≠ 0, but integrand 'poly' has I = 0");
+  // The same on [0, 1] (I = 1/6) plans, and the plan says the tolerances are relative.
+  const plan p = make_plan(parse_scene(replace(text, "lower = -1.0", "lower = 0.0"), "scene.toml"));
+  ASSERT_EQ(p.cells.size(), 2u);
+  EXPECT_EQ(p.cells[0].tolerance, 1e-3) << "the cell keeps the scene's (relative) tolerance";
+  EXPECT_NE(format_plan(p).find("control = tolerance (relative: each tolerance times |I|)"),
+            std::string::npos)
+      << format_plan(p);
+}
 
 // control = "tolerance": one cell per tolerance, spending at most the budget per repetition
 // (budget.max_evaluations, else plan_limits::default_tolerance_budget), each on its own stream.

@@ -345,6 +345,42 @@ N = [8]
 namespace quadmc {
 namespace {
 
+// tolerance_kind = "relative": the method is asked for tolerance·|I|. On eˣ over [0, 10]
+// (I = e¹⁰ − 1 ≈ 2.2·10⁴) a relative 1e-9 is an absolute 2.2·10⁻⁵: Romberg's own estimate must
+// be below that, and an absolute 1e-9 (10⁴ times tighter) must spend more evaluations.
+TEST(RunPlan, ARelativeToleranceIsAFractionOfTheIntegral) {
+  constexpr std::string_view text = R"(name = "rel"
+threads = 1
+[[integrand]]
+family = "exp"
+lower = 0.0
+upper = 10.0
+[[method]]
+name = "romberg"
+label = "relative"
+control = "tolerance"
+tolerance_kind = "relative"
+tolerances = [1e-9]
+[[method]]
+name = "romberg"
+label = "absolute"
+control = "tolerance"
+tolerances = [1e-9]
+[budget]
+N = [33]
+)";
+  const plan p = make_plan(parse_scene(text, "rel.toml"));
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 2u);
+  const double integral = std::exp(10.0) - 1.0;
+  const repetition_result& relative = out.series[0].cells.at(0).repetitions.at(0);
+  const repetition_result& absolute = out.series[1].cells.at(0).repetitions.at(0);
+  EXPECT_LE(relative.error_estimate, 1e-9 * integral);
+  EXPECT_LE(absolute.error_estimate, 1e-9);
+  EXPECT_LT(relative.evaluations, absolute.evaluations);
+  EXPECT_EQ(out.series[0].cells[0].tolerance, 1e-9) << "the series keeps the scene's tolerance";
+}
+
 // Cells run to a tolerance through the runner: each records the evaluations it spent and its own
 // error estimate, tighter tolerances spend more, and the series analyses against evaluations
 // spent (budget control likewise spends at most its N).

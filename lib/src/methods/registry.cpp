@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <stdexcept>
 #include <vector>
 
 // Each family's descriptors, in listing order, defined in its own file of lib/src/methods/.
@@ -33,8 +34,8 @@ constexpr std::span<const method_descriptor> (*families[])() noexcept = {
     methods::adaptive_methods,    methods::vegas_methods,      methods::qmc_methods,
 };
 
-const std::vector<const method_descriptor*>& all() {
-  static const std::vector<const method_descriptor*> table = [] {
+std::vector<const method_descriptor*>& all() {
+  static std::vector<const method_descriptor*> table = [] {
     std::vector<const method_descriptor*> out;
     for (const auto family : families) {
       for (const method_descriptor& d : family()) out.push_back(&d);
@@ -44,7 +45,49 @@ const std::vector<const method_descriptor*>& all() {
   return table;
 }
 
+// The peers of bench/peers/ (built into its quadmc_with_peers command, with add_methods) and the
+// library each comes from: a scene naming one in a build without them gets this instead of
+// "unknown method".
+struct optional_method {
+  std::string_view name;
+  std::string_view library;
+};
+constexpr optional_method peers[] = {
+    {"peer_hcubature", "cubature's hcubature, libcubature-dev"},
+    {"peer_pcubature", "cubature's pcubature, libcubature-dev"},
+    {"peer_gsl_plain", "GSL's gsl_monte_plain, libgsl-dev"},
+    {"peer_gsl_miser", "GSL's gsl_monte_miser, libgsl-dev"},
+    {"peer_gsl_vegas", "GSL's gsl_monte_vegas, libgsl-dev"},
+    {"peer_boost_tanh_sinh", "Boost.Math's tanh_sinh"},
+    {"peer_boost_gauss_kronrod", "Boost.Math's gauss_kronrod<double, 15>"},
+};
+
 }  // namespace
+
+void add_methods(std::span<const method_descriptor> family) {
+  for (const method_descriptor& d : family) {
+    if (find_method(d.name) != nullptr) {
+      throw std::logic_error(fmt::format("add_methods: method '{}' is already registered", d.name));
+    }
+    all().push_back(&d);
+  }
+}
+
+std::optional<std::string> unavailable_method(std::string_view name) {
+  if (find_method(name) != nullptr) return std::nullopt;
+  for (const optional_method& p : peers) {
+    if (p.name == name) {
+      return fmt::format(
+          "method '{}' ({}) is a peer, not built into this quadmc (the peers are optional; "
+          "GSL and cubature are GPL): run the scene with "
+          "build/<preset>/bench/peers/quadmc_with_peers, which the "
+          "release and test presets build when libgsl-dev and libcubature-dev are installed "
+          "(./run.sh deps)",
+          name, p.library);
+    }
+  }
+  return std::nullopt;
+}
 
 std::span<const method_descriptor* const> method_registry() {
   return all();
@@ -66,6 +109,10 @@ std::string method_names() {
 std::unique_ptr<const method> make_method(std::string_view name, const option_table& options) {
   const method_descriptor* d = find_method(name);
   if (d == nullptr) {
+    if (auto why = unavailable_method(name)) {
+      throw invalid_argument("method", std::string(name),
+                             fmt::format("a method of this build: {}", *why));
+    }
     throw invalid_argument("method", std::string(name), fmt::format("one of: {}", method_names()));
   }
   option_map reader(options, fmt::format("method '{}'", name));

@@ -33,8 +33,8 @@ constexpr std::array<std::string_view, 8> top_level_keys{
 constexpr std::array<std::string_view, 5> integrand_keys{"family", "name", "dimension",
                                                          "dimensions", "ensemble"};
 // The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
-constexpr std::array<std::string_view, 6> common_method_keys{
-    "name", "label", "integrands", "repetitions", "control", "tolerances"};
+constexpr std::array<std::string_view, 7> common_method_keys{
+    "name", "label", "integrands", "repetitions", "control", "tolerances", "tolerance_kind"};
 constexpr std::array<std::string_view, 3> budget_keys{"N", "max_evaluations", "max_seconds"};
 constexpr std::array<std::string_view, 3> range_keys{"from", "to", "factor"};
 constexpr std::array<std::string_view, 3> output_keys{"csv", "markdown", "plots"};
@@ -450,9 +450,18 @@ void parse_control(const scene_reader& r, const toml::table& t, const std::strin
     if (!found) r.expected(*e, what);
   }
   const auto tolerances = r.find(t, "tolerances", prefix);
+  const auto kind = r.find(t, "tolerance_kind", prefix);
   if (m.control != cell_control::tolerance) {
     if (tolerances) r.fail(*tolerances, "only with control = \"tolerance\"");
+    if (kind) r.fail(*kind, "only with control = \"tolerance\"");
     return;
+  }
+  if (kind) {
+    const std::string_view what =
+        "one of: absolute (the tolerances are errors), relative (fractions of |I|)";
+    const std::string given = r.string(*kind, what);
+    if (given != "absolute" && given != "relative") r.expected(*kind, what);
+    m.relative_tolerance = given == "relative";
   }
   if (!tolerances) {
     r.fail(m.table, prefix + ".tolerances",
@@ -502,7 +511,10 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   }
   m.name = r.string(*name, "a method name");
   const method_descriptor* descriptor = find_method(m.name);
-  if (descriptor == nullptr) r.expected(*name, fmt::format("one of: {}", method_names()));
+  if (descriptor == nullptr) {
+    if (auto why = unavailable_method(m.name)) r.fail(*name, *why);
+    r.expected(*name, fmt::format("one of: {}", method_names()));
+  }
 
   // Unknown keys first, before any value is judged: a typo ("repetition") must not fall back to
   // a default, and it is the likelier mistake when both are present.

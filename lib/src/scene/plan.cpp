@@ -336,6 +336,25 @@ void check_cell(const scene& sc, const integrand_spec& f, const method_spec& met
   }
 }
 
+// tolerance_kind = "relative" asks for tolerance·|I| of every instance: with I = 0 that target is
+// 0, which no estimate reaches, and with a non-finite I it is no number, so both are refused here
+// rather than run to the budget.
+void check_relative_tolerance(std::span<const plan_instance> instances, const integrand_spec& f,
+                              std::size_t fi, const method_spec& method) {
+  for (const auto& inst : instances) {
+    if (inst.integrand != fi) continue;
+    const double exact = inst.function.info().exact;
+    if (std::isfinite(exact) && exact != 0.0) continue;
+    throw scene_error(
+        key_location(method.keys, "tolerance_kind", method.table),
+        fmt::format("method[{}].tolerance_kind", method.table_index),
+        fmt::format("\"relative\" needs I ≠ 0, but integrand '{}'{} has I = {}: its targets "
+                    "tolerance·|I| would be {}; use \"absolute\" or leave it out with `integrands`",
+                    f.name, f.ensemble > 1 ? fmt::format(" (instance {})", inst.instance + 1) : "",
+                    exact, std::isfinite(exact) ? "0" : "no number"));
+  }
+}
+
 // The cells of one (integrand, method) pair for instance 0, and its skips.
 void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
                std::vector<plan_cell>& cells, std::vector<plan_skip>& skips) {
@@ -510,9 +529,10 @@ plan make_plan(const scene& input) {
     }
     if (method.control == cell_control::tolerance) {
       p.notes.push_back(fmt::format(
-          "method[{}] ({}): control = tolerance: one cell per tolerance, each spending at most {} "
-          "evaluations per repetition",
+          "method[{}] ({}): control = tolerance{}: one cell per tolerance, each spending at most "
+          "{} evaluations per repetition",
           method.table_index, method.label,
+          method.relative_tolerance ? " (relative: each tolerance times |I|)" : "",
           sc.budget.max_evaluations
               ? fmt::format(
                     "budget.max_evaluations / repetitions = {}",
@@ -534,6 +554,7 @@ plan make_plan(const scene& input) {
         p.skips.push_back({fmt::format("{} × {}", method.label, f.name), *why});
         continue;
       }
+      if (method.relative_tolerance) check_relative_tolerance(p.instances, f, fi, method);
       plan_pair(sc, fi, mi, scale[fi], pair_cells, p.skips);
     }
     // Every instance of an ensemble runs the same cells; only the integrand (and its streams)

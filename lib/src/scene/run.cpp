@@ -105,6 +105,10 @@ run_output run_plan(const plan& p, const run_options& options) {
     }
     convergence_cell& target = *same_n;
 
+    // The absolute target: a relative tolerance is a fraction of this instance's |I| (the plan
+    // refused I = 0 or a non-finite I for it).
+    const double tolerance =
+        mspec.relative_tolerance ? cell.tolerance * std::abs(info.exact) : cell.tolerance;
     for (std::uint64_t r = 0; r < cell.repetitions; ++r) {
       const auto& sp = cell.stream_parts;
       const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
@@ -122,16 +126,14 @@ run_output run_plan(const plan& p, const run_options& options) {
       const auto t0 = clock::now();
       repetition_result result;
       try {
-        const method_cell work{inst.function, inst.params,    size,
-                               cell.control,  cell.tolerance, stream};
+        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
         result = mspec.configured->run(work, context);
       } catch (const std::exception& e) {
         throw run_error(fmt::format("{}: {}", where(), e.what()));
       }
       result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
       try {
-        const method_cell work{inst.function, inst.params,    size,
-                               cell.control,  cell.tolerance, stream};
+        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
         mspec.configured->measure_points(work, context, result);
       } catch (const std::exception& e) {
         throw run_error(fmt::format("{}: {}", where(), e.what()));

@@ -11,6 +11,7 @@
 #include "quadmc/methods/option_map.hpp"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -34,6 +35,18 @@ struct warp_descriptor {
   double default_value;
 };
 std::span<const warp_descriptor> importance_warps() noexcept;
+
+// The plugin point for methods the library must not depend on: the peers of bench/peers/ (GSL,
+// cubature: GPL libraries, so an MIT build of quadmc cannot contain them). A build of the command
+// that links them adds their family from a static initialiser, before main, so every later lookup
+// and listing sees them. Throws logic_error when a name is already taken. Not for methods of the
+// library itself (those are one line in registry.cpp) and not thread-safe: call it before any
+// lookup.
+void add_methods(std::span<const method_descriptor> family);
+
+// Why a scene cannot name `name` in this build although the suite knows it (a peer whose command
+// was not built), and how to get it, one line; nullopt for a name that is present or unknown.
+std::optional<std::string> unavailable_method(std::string_view name);
 
 // The method `name` configured by `options` (the same checks as a scene's [[method]] table;
 // unknown keys are refused). Throws invalid_argument for an unknown name or a bad option.

@@ -50,7 +50,11 @@ struct method_spec {
   std::uint64_t repetitions = 32;  // randomized methods: independent runs per cell
   bool repetitions_given = false;
   cell_control control = cell_control::fixed_size;
-  std::vector<double> tolerances;       // control = tolerance: the targets, decreasing
+  std::vector<double> tolerances;  // control = tolerance: the targets, decreasing
+  // tolerance_kind = "relative": each tolerance is a fraction of |I| (1e-6: six correct digits),
+  // the absolute target of a cell being tolerance·|I| of its instance; "absolute" (default):
+  // the tolerances are errors.
+  bool relative_tolerance = false;
   std::vector<std::string> integrands;  // restriction to these integrand names; empty = all
 
   std::size_t table_index = 1;  // 1-based number of its [[method]] table
