@@ -246,8 +246,7 @@ struct periodic_exp_sin {
 // (docs/theory.md#euler-maclaurin-expansion). The class rate −4 would read the fitted slope as
 // steeper; with the prediction it is superconvergent, judged against −6, and every judged point
 // is within 1% of its predicted error (the series' third term is < 1% there). The ladder starts
-// at n = 8: at n = 4 the poles at ±i add a term of order e^(−2π/H) (H = 1/2: 3.5e-6, the size of
-// the error itself) that no end-point term shows.
+// at n = 8, where the poles' coarse-grid term is negligible (from n = 2, the next test).
 TEST(TensorRuleMethods, SimpsonOnInverseQuadraticIsSuperconvergent) {
   const convergence_table t = analysed("simpson", "inverse_quadratic", {8, 16, 32, 64, 128});
   EXPECT_EQ(t.verdict, slope_verdict::superconvergent) << t.verdict_reason;
