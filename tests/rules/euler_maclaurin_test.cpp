@@ -19,7 +19,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <string>
 
 namespace quadmc {
 namespace {
@@ -141,6 +143,95 @@ TEST(EulerMaclaurin, PeriodicIntegrandHasNoEndpointTerm) {
   const double e4 = std::abs(integrate(f, 0.0, 1.0, trapezoid_rule{}, 4).value - info.exact);
   const double e8 = std::abs(integrate(f, 0.0, 1.0, trapezoid_rule{}, 8).value - info.exact);
   EXPECT_LT(e8, e4 / 64.0);
+}
+
+// 1/(1 + (x/a)²) on [0, 1]: poles ±i·a above the end 0 (residues ∓i·a/2), at distance d = a,
+// with its end-point data in closed form (g⁽ᵏ⁾(x) = a⁻ᵏ·r⁽ᵏ⁾(x/a), r(t) = 1/(1 + t²)).
+integrand_info scaled_inverse_quadratic(double a) {
+  integrand_info info;
+  info.domain = box{{0.0}, {1.0}};
+  info.exact = a * std::atan(1.0 / a);
+  const auto at = [a](double x) {
+    return [a, x](std::size_t k) {
+      return std::pow(a, -static_cast<double>(k)) * endpoint::inverse_quadratic(k, x / a);
+    };
+  };
+  auto factor = endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0, info.exact);
+  if (factor) factor->poles = endpoint::inverse_quadratic_poles(1.0 / a, 0.0);
+  info.endpoint_derivatives = endpoint::product_of(1.0, {std::move(factor)});
+  return info;
+}
+
+// The coarse-grid term (docs/theory.md#coarse-grid-term) against the measured error of the
+// trapezoid, midpoint and Simpson rules on 1/(1 + (x/a)²) for a = 1/4, 1/2, 1, on grids where the
+// term is at least 10 times the tolerance, so that the end-point terms alone miss. Tolerance from
+// the derivation: what the prediction leaves out is the end-point series past its second term;
+// the third term is |P₃ − P₂| = next_change·|P₂| (no uncertain pole here: the poles sit exactly
+// above the end 0, where ω = 1/2 is exact), and an asymptotic series errs by about its first
+// omitted term, so 2·|P₃ − P₂| (factor 2 for the terms past the third), plus 64ε·|I| for the
+// rule's own rounding.
+TEST(EulerMaclaurin, CoarseGridTermOfPolesMatchesTheMeasuredError) {
+  std::map<std::string, int> checked;
+  std::map<double, int> checked_a;
+  for (const double a : {0.25, 0.5, 1.0}) {
+    const integrand_info info = scaled_inverse_quadratic(a);
+    ASSERT_TRUE(info.endpoint_derivatives.has_value());
+    const auto f = [a](double x) { return 1.0 / (1.0 + (x / a) * (x / a)); };
+    const auto check = [&](const char* name, const auto& rule, std::uint64_t unit,
+                           std::uint64_t n) {
+      const auto prediction =
+          euler_maclaurin_prediction::make(euler_maclaurin_rule::of(rule, unit), info);
+      ASSERT_TRUE(prediction.has_value());
+      const euler_maclaurin_value p = prediction->at(n);
+      if (!(p.next_change <= 0.01)) return;  // the end-point series is not predictive yet
+      const double measured = integrate(f, 0.0, 1.0, rule, n).value - info.exact;
+      const double tolerance =
+          2.0 * p.next_change * std::abs(p.error) + 64.0 * eps * std::abs(info.exact);
+      if (std::abs(p.coarse_grid) < 10.0 * tolerance) return;  // too small to test the term
+      ++checked[name];
+      ++checked_a[a];
+      EXPECT_NEAR(measured, p.error, tolerance)
+          << name << " a = " << a << " n = " << n << ": coarse-grid part " << p.coarse_grid;
+      // Without the term the prediction misses by more than the tolerance.
+      EXPECT_GT(std::abs(measured - (p.error - p.coarse_grid)), tolerance) << name << " n = " << n;
+    };
+    for (const std::uint64_t n : {1U, 2U, 3U, 4U, 6U, 8U}) {
+      check("trapezoid", trapezoid_rule{}, 1, n);
+      check("midpoint", midpoint_rule{}, 1, n);
+    }
+    for (const std::uint64_t n : {2U, 4U, 6U, 8U, 12U, 16U}) check("simpson", simpson_rule{}, 2, n);
+  }
+  // The derivation is exercised on every rule and every a: a grid each at least.
+  for (const char* name : {"trapezoid", "midpoint", "simpson"}) {
+    EXPECT_GE(checked[name], 1) << name;
+  }
+  for (const double a : {0.25, 0.5, 1.0}) EXPECT_GE(checked_a[a], 1) << "a = " << a;
+}
+
+// Simpson's term is led by the coarse trapezoid sum on the pair width H: −(π/3)·a·e^(−2πa/H)
+// for 1/(1 + (x/a)²) (two poles, weight 1/2 each, ŵ(1) = −1/3), the square root of the
+// trapezoid's e^(−2πa/h) on the same nodes (h = H/2).
+TEST(EulerMaclaurin, SimpsonsCoarseGridTermIsOnThePairWidth) {
+  for (const double a : {0.5, 1.0}) {
+    const integrand_info info = scaled_inverse_quadratic(a);
+    const auto simpson =
+        euler_maclaurin_prediction::make(euler_maclaurin_rule::of(simpson_rule{}, 2), info);
+    const auto trapezoid =
+        euler_maclaurin_prediction::make(euler_maclaurin_rule::of(trapezoid_rule{}, 1), info);
+    ASSERT_TRUE(simpson && trapezoid);
+    const std::uint64_t n = 4;  // H = 1/2, h = 1/4
+    const double pair = 0.5;
+    const double leading =
+        -(std::numbers::pi / 3.0) * a * std::exp(-2.0 * std::numbers::pi * a / pair);
+    // The next harmonics are e^(−2πa/H) smaller.
+    EXPECT_NEAR(simpson->at(n).coarse_grid / leading, 1.0,
+                4.0 * std::exp(-2.0 * std::numbers::pi * a / pair))
+        << "a = " << a;
+    const double trapezoid_term = std::numbers::pi * a * std::exp(-2.0 * std::numbers::pi * a * n);
+    EXPECT_NEAR(trapezoid->at(n).coarse_grid / trapezoid_term, 1.0,
+                4.0 * std::exp(-2.0 * std::numbers::pi * a * n))
+        << "a = " << a;
+  }
 }
 
 }  // namespace

@@ -27,6 +27,11 @@ struct prediction_check {
   bool agrees = true;      // every judged cell within the tolerance
   double worst = std::numeric_limits<double>::quiet_NaN();  // judged ratio farthest from 1
   std::uint64_t worst_n = 0;                                // its evaluations
+  // The coarse-grid term (error_prediction.hpp): its largest share |coarse|/|predicted| over the
+  // valid cells and where, and the last valid cell where it exceeds the end-point terms.
+  double coarse_share = 0.0;
+  std::uint64_t coarse_share_n = 0;
+  std::uint64_t coarse_leads_to = 0;
   bool confirmed() const noexcept { return judged > 0 && agrees; }
 };
 
@@ -62,6 +67,14 @@ prediction_check check_prediction(convergence_table& table, const error_predicti
       continue;
     }
     ++check.valid;
+    const double share = std::abs(p.coarse_grid) / std::abs(p.error);
+    if (share > check.coarse_share) {
+      check.coarse_share = share;
+      check.coarse_share_n = row.stats.evaluations;
+    }
+    if (std::abs(p.coarse_grid) > std::abs(p.error - p.coarse_grid)) {
+      check.coarse_leads_to = row.stats.evaluations;
+    }
     row.predicted_error = std::abs(p.error);
     const double measured =
         row.stats.repetitions == 1 ? row.stats.estimate_mean - table.reference : row.stats.rmse;
@@ -133,13 +146,27 @@ void judge_series(convergence_table& table, const convergence_series& series,
   if (prediction) check = check_prediction(table, *prediction, options, where);
   table.predicted_points = check.judged;
   table.worst_prediction_ratio = check.worst;
+  // The coarse-grid term is named where it is at least 0.1% of a prediction shown.
+  const bool coarse =
+      prediction && !prediction->coarse_grid_note.empty() && check.coarse_share >= 1e-3;
+  const std::string coarse_text =
+      coarse
+          ? fmt::format(
+                "{} ({:.3g}% of the predicted error at N = {}{})", prediction->coarse_grid_note,
+                100.0 * check.coarse_share, check.coarse_share_n,
+                check.coarse_leads_to > 0
+                    ? fmt::format(", above the end-point terms up to N = {}", check.coarse_leads_to)
+                    : std::string())
+          : std::string();
   const std::string checked =
-      check.judged > 0 ? fmt::format(
-                             "Euler–Maclaurin prediction within {:.2g}% at {} point{} (worst "
-                             "measured/predicted {:.4f} at N = {})",
-                             100.0 * std::abs(check.worst - 1.0), check.judged,
-                             check.judged == 1 ? "" : "s", check.worst, check.worst_n)
-                       : std::string();
+      check.judged > 0
+          ? fmt::format(
+                "Euler–Maclaurin prediction{} within {:.2g}% at {} point{} (worst "
+                "measured/predicted {:.4f} at N = {}){}",
+                coarse ? " with the coarse-grid term" : "", 100.0 * std::abs(check.worst - 1.0),
+                check.judged, check.judged == 1 ? "" : "s", check.worst, check.worst_n,
+                coarse ? "; " + coarse_text : std::string())
+          : std::string();
 
   // Every term of the expansion vanishes: exponential convergence, judged by being faster than
   // the class rate (or reaching the floor before three points).
@@ -221,12 +248,19 @@ void judge_series(convergence_table& table, const convergence_series& series,
   const slope_verdict slope = judge_slope(table.fit, theory, options.verdict_tolerance);
   if (slope == slope_verdict::agrees) {
     table.verdict = superconvergent ? slope_verdict::superconvergent : slope_verdict::agrees;
+    // With a coarse-grid term the whole-ladder slope mixes it with the end-point term's: say
+    // from where the latter carries the curve.
+    const std::string regime =
+        coarse && check.confirmed()
+            ? fmt::format("; the predicted local slope reaches {} ± {:.0f}% {}", rate_text(theory),
+                          100.0 * options.verdict_tolerance, from_text)
+            : std::string();
     table.verdict_reason =
-        superconvergent ? fmt::format("{}; {}; the slope agrees with {}", prediction->note, checked,
-                                      rate_text(theory))
-                        : fmt::format("slope within max(CI half-width, {:.0f}%·|theory|) of {}{}",
+        superconvergent ? fmt::format("{}; {}; the slope agrees with {}{}", prediction->note,
+                                      checked, rate_text(theory), regime)
+                        : fmt::format("slope within max(CI half-width, {:.0f}%·|theory|) of {}{}{}",
                                       100.0 * options.verdict_tolerance, rate_text(theory),
-                                      checked.empty() ? "" : "; " + checked);
+                                      checked.empty() ? "" : "; " + checked, regime);
     return;
   }
   const bool asymptotic_agrees =

@@ -156,6 +156,10 @@ class tensor_rule_method final : public method {
                                expansion->leading_term() +
                                (s > 1 ? fmt::format(", N^({}/{}) in N", -lead, s) : "");
     out.source = "docs/theory.md#euler-maclaurin-expansion; [Lyness & Ninham 1967]";
+    out.coarse_grid_note = expansion->coarse_grid_text();
+    if (!out.coarse_grid_note.empty()) {
+      out.source += "; docs/theory.md#coarse-grid-term; [Trefethen & Weideman 2014]";
+    }
     out.at = [expansion = std::move(*expansion), layout = layout_, s](std::uint64_t n) {
       predicted_cell cell;
       // Past 2^53 panels the count leaves the range the analysis holds exactly: no grid.
@@ -163,6 +167,7 @@ class tensor_rule_method final : public method {
       const euler_maclaurin_value v = expansion.at(n);
       cell.error = v.error;
       cell.next_change = v.next_change;
+      cell.coarse_grid = v.coarse_grid;
       return cell;
     };
     return out;

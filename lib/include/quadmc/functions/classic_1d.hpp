@@ -191,11 +191,15 @@ class inverse_quadratic_1d {
   }
   // 1/(1 + x²) on [0, 1]: odd derivatives vanish at 0 (f is even) and f⁽⁴ᵐ⁺³⁾(1) = 0, so Simpson's
   // h⁴ term vanishes (rules/euler_maclaurin.hpp); shared with the float twin.
+  // Its poles ±i sit above the end x = 0 at distance 1: the coarse-grid term of
+  // docs/theory.md#coarse-grid-term.
   static std::optional<separable_derivatives> endpoint_data() {
-    return endpoint::product_of(
-        1.0, {endpoint::factor_of([](std::size_t k) { return endpoint::inverse_quadratic(k, 0.0); },
-                                  [](std::size_t k) { return endpoint::inverse_quadratic(k, 1.0); },
-                                  0.0, 1.0, std::numbers::pi / 4)});
+    auto factor =
+        endpoint::factor_of([](std::size_t k) { return endpoint::inverse_quadratic(k, 0.0); },
+                            [](std::size_t k) { return endpoint::inverse_quadratic(k, 1.0); }, 0.0,
+                            1.0, std::numbers::pi / 4);
+    if (factor) factor->poles = endpoint::inverse_quadratic_poles(1.0, 0.0);
+    return endpoint::product_of(1.0, {std::move(factor)});
   }
 };
 

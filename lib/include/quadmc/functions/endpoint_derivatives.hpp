@@ -36,6 +36,13 @@ inline double inverse_quadratic(std::size_t k, double t) {
   return (k % 2 == 0 ? 1.0 : -1.0) * factorial * power.imag();
 }
 
+// The poles of 1/(1 + a²(x − u)²) = (1/(2ia))·[1/(x − u − i/a) − 1/(x − u + i/a)]: u ± i/a with
+// residues ∓i/(2a), at distance d = 1/a from the real axis (a = 1, u = 0: 1/(1 + x²), ±i).
+inline std::vector<simple_pole> inverse_quadratic_poles(double a, double u) {
+  const std::complex<double> residue(0.0, -1.0 / (2.0 * a));
+  return {{{u, 1.0 / a}, residue}, {{u, -1.0 / a}, -residue}};
+}
+
 // d^k/dt^k e^{−t²} = (−1)^k·H_k(t)·e^{−t²} with the physicists' Hermite polynomials,
 // H₀ = 1, H₁ = 2t, H_{k+1} = 2t·H_k − 2k·H_{k−1} ([Abramowitz & Stegun], 22.7.13 and 22.2.14).
 inline double gaussian(std::size_t k, double t) {

@@ -296,8 +296,11 @@ class genz_product_peak {
           return std::pow(a, static_cast<double>(k)) * endpoint::inverse_quadratic(k, a * (x - u));
         };
       };
-      factors.push_back(endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0,
-                                            (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a));
+      auto factor = endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0,
+                                        (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a);
+      // Poles u ± i/a: the coarse-grid term of docs/theory.md#coarse-grid-term.
+      if (factor) factor->poles = endpoint::inverse_quadratic_poles(a, u);
+      factors.push_back(std::move(factor));
     }
     info.endpoint_derivatives = endpoint::product_of(peak_, std::move(factors));
     return info;

@@ -75,6 +75,12 @@ struct piecewise_smooth_factor {
 // every other term vanishes (Simpson on 1/(1 + x²) needs f⁽¹³⁾).
 inline constexpr std::size_t endpoint_derivative_count = 24;
 
+// A simple pole of a factor g(x) continued to complex x: g(x) ≈ residue/(x − location) near it.
+struct simple_pole {
+  std::complex<double> location;  // z, in the factor's own coordinate x (Im z ≠ 0)
+  std::complex<double> residue;   // r
+};
+
 // A point inside a factor's interval where g is continuous but a derivative jumps (a kink):
 // jumps[k] = g⁽ᵏ⁾(c+) − g⁽ᵏ⁾(c−) in the unit variable t of endpoint_factor (jumps[0] = 0).
 struct derivative_jump {
@@ -93,6 +99,11 @@ struct endpoint_factor {
   std::vector<std::complex<double>> at_lower;
   std::vector<std::complex<double>> at_upper;
   std::vector<derivative_jump> kinks;  // ascending interior kinks; empty where g is smooth
+  // The simple poles of g off the real axis, in x: g = r/(x − z) + (analytic near the strip).
+  // They set a composite rule's coarse-grid term, e^(−2π|Im z|/H) (rules/euler_maclaurin.hpp,
+  // docs/theory.md#coarse-grid-term), which the end-point series does not show. Empty where g
+  // is entire or its singularities are not known in closed form.
+  std::vector<simple_pole> poles;
 };
 
 // f as Re[scale·Π_j g_j(x_j)], one factor per axis: the end-point data an Euler–Maclaurin error

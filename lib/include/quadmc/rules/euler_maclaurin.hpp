@@ -22,13 +22,30 @@
 // Re[σ·(Π I_j − Π(I_j − E_j))], summed without cancellation as Σ_j Π_{k<j}(I_k −
 // E_k)·E_j·Π_{k>j}I_k.
 //
+// The series is only asymptotic: a pole z of g at distance d = |Im z| from the axis adds the
+// coarse-grid term the series does not show (derivation in docs/theory.md#coarse-grid-term;
+// [Trefethen & Weideman 2014, §5], [Davis & Rabinowitz, §2.9]). By Poisson summation each offset
+// lattice Σ_k H·g(a + (k + τ)H) differs from the line integral of r/(x − z) by
+// ±2πi·r·Σ_{k≥1} e^(∓2πikτ)·Q^k, Q = e^(±2πi(z − a)/H) (upper sign for Im z > 0), |Q| = e^(−2πd/H);
+// the panel rule (nodes τᵢ, weights wᵢ) combines them with ŵ(k) = Σᵢ wᵢ·e^(−2πikτᵢ):
+//
+//   Q(g) − ∫g ∋ ω·(±2πi·r)·Σ_{k≥1} ŵ(±k)·Q^k,
+//
+// ŵ(k) = 1 for the trapezoid (and the rectangles), (−1)^k for the midpoint, 1/3 + (2/3)(−1)^k for
+// Simpson (H the pair: its leading term is −(1/3)·e^(−2πd/H), the trapezoid's e^(−2πd/h) on the
+// half-width h = H/2 being its square). ω = 1 for a pole above the interior, 0 outside, 1/2 above
+// an end (a Stokes line: exact when the pair's residues are imaginary, i.e. g is even about that
+// end, as 1/(1 + x²) about 0 — then that end's series has no term the pole feeds). Near an end's
+// vertical, within 3·√(dH/π), the weight passes from 0 to 1 [Berry 1989]: the term is then known
+// only to its own size and counts as uncertainty of the prediction (next_change).
+//
 // Use it where a rule's measured error is to be explained (the analysis compares the two cell
 // by cell, analysis/convergence_table.hpp). The prediction keeps the first two non-vanishing terms
-// of every axis; the third one says how far to trust it (an asymptotic series errs by about its
-// first omitted term). Not for f with jumps (rules/jump_error_envelope.hpp bounds those), an
-// endpoint singularity (the expansion has terms in H^(1+α)), or coarse grids of analytic f whose
-// complex singularities are near the interval (a term e^(−2πd/H) the series does not show: the
-// third-term test is the only guard, and the caller should judge only where it is small).
+// of every axis and the coarse-grid term of every pole the factor lists; the third term says how
+// far to trust it (an asymptotic series errs by about its first omitted term). Not for f with jumps
+// (rules/jump_error_envelope.hpp bounds those), an endpoint singularity (the expansion has terms in
+// H^(1+α)), or analytic f whose complex singularities are not listed (endpoint_factor::poles):
+// there the third-term test is the only guard against a coarse-grid term.
 #pragma once
 
 #include "quadmc/functions/integrand.hpp"
@@ -46,6 +63,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace quadmc {
@@ -132,6 +150,19 @@ class euler_maclaurin_rule {
     }
     return 0;
   }
+  // ŵ(k) = Σᵢ wᵢ·e^(−2πikτᵢ): the panel rule's k-th Fourier coefficient, the weight of the k-th
+  // harmonic of a pole's coarse-grid term (docs/theory.md#coarse-grid-term).
+  std::complex<long double> fourier_weight(long long k) const {
+    constexpr long double two_pi = 6.283185307179586476925286766559L;
+    std::complex<long double> sum(0.0L, 0.0L);
+    for (std::size_t i = 0; i < node_.size(); ++i) {
+      // The phase modulo 2π from k·τ reduced to [0, 1) first: cos of a large argument loses it.
+      long double turn = static_cast<long double>(k) * node_[i];
+      turn -= std::floor(turn);
+      sum += weight_[i] * std::polar(1.0L, -two_pi * turn);
+    }
+    return sum;
+  }
   // d_j(θ) of a kink at relative position θ ∈ [0, 1) of its panel.
   long double kink_coefficient(int j, long double theta) const {
     long double sum = 0.0L, factorial = 1.0L;
@@ -152,8 +183,12 @@ class euler_maclaurin_rule {
 // What the expansion predicts for one grid: Q − I from the first two non-vanishing terms of every
 // axis, and how much the third moves it.
 struct euler_maclaurin_value {
-  double error = std::numeric_limits<double>::quiet_NaN();        // predicted Q − I (signed)
-  double next_change = std::numeric_limits<double>::quiet_NaN();  // |P₃ − P₂|/|P₂|
+  double error = std::numeric_limits<double>::quiet_NaN();  // predicted Q − I (signed)
+  // (|P₃ − P₂| + U)/|P₂|, U the coarse-grid terms whose weight is not known (near an end's
+  // vertical): how far to trust the prediction.
+  double next_change = std::numeric_limits<double>::quiet_NaN();
+  // The part of `error` the poles' coarse-grid terms make (signed; 0 without poles).
+  double coarse_grid = 0.0;
 };
 
 // The prediction for one rule on one integrand (any number of panels n per axis).
@@ -251,7 +286,8 @@ class euler_maclaurin_prediction {
     const long double h =
         static_cast<long double>(rule_.unit_panels()) / static_cast<long double>(n);
     const std::size_t s = data_.factors.size();
-    std::vector<cplx> integral(s), two(s), three(s);
+    std::vector<cplx> integral(s), two(s), three(s), series(s);
+    std::vector<long double> unknown(s, 0.0L);
     for (std::size_t a = 0; a < s; ++a) {
       const endpoint_factor& g = data_.factors[a];
       const long double width = domain_.upper[a] - domain_.lower[a];
@@ -263,6 +299,17 @@ class euler_maclaurin_prediction {
         if (t < 2) two[a] = sum;
         three[a] = sum;
       }
+      series[a] = two[a];
+      // The poles' coarse-grid terms, ∫g − Q(g) ∋ −(Q(g) − ∫g), in x units.
+      const std::optional<coarse_grid_part> coarse = coarse_grid_term(g, a, h * width);
+      if (!coarse) {
+        euler_maclaurin_value none;
+        none.next_change = std::numeric_limits<double>::infinity();
+        return none;
+      }
+      two[a] -= coarse->error;
+      three[a] -= coarse->error;
+      unknown[a] = coarse->unknown;
     }
     // I − Q = Re[σ·(Π I − Π(I − E))] = Re[σ·Σ_a Π_{b<a}(I_b − E_b)·E_a·Π_{b>a} I_b].
     const auto difference = [&](const std::vector<cplx>& e) {
@@ -277,11 +324,73 @@ class euler_maclaurin_prediction {
       return (scale * total).real();
     };
     const long double p2 = difference(two), p3 = difference(three);
+    // An unknown coarse-grid term u_a of axis a moves I − Q by about u_a·|scale·Π_{b≠a} I_b|.
+    long double doubt = 0.0L;
+    for (std::size_t a = 0; a < s; ++a) {
+      if (unknown[a] == 0.0L) continue;
+      long double others = std::abs(data_.scale);
+      for (std::size_t b = 0; b < s; ++b) {
+        if (b != a) others *= std::abs(integral[b]);
+      }
+      doubt += unknown[a] * others;
+    }
     euler_maclaurin_value out;
     out.error = static_cast<double>(-p2);  // Q − I
-    out.next_change = p2 != 0.0L ? static_cast<double>(std::abs(p3 - p2) / std::abs(p2))
+    out.next_change = p2 != 0.0L ? static_cast<double>((std::abs(p3 - p2) + doubt) / std::abs(p2))
                                  : std::numeric_limits<double>::infinity();
+    out.coarse_grid = static_cast<double>(-p2 + difference(series));
     return out;
+  }
+
+  // Whether any factor lists a pole (the prediction then carries a coarse-grid term).
+  bool has_poles() const noexcept {
+    return std::any_of(data_.factors.begin(), data_.factors.end(),
+                       [](const endpoint_factor& g) { return !g.poles.empty(); });
+  }
+
+  // The coarse-grid term in words, e.g. "coarse-grid term of the poles 0 ± 1i (d = 1, above the
+  // end x = 0: weight 1/2) ≈ −1.05·e^(−2πd/H)" (s = 1: the leading harmonic of the poles nearest
+  // the axis, its sign that of Q − I); empty without poles.
+  std::string coarse_grid_text() const {
+    if (!has_poles()) return {};
+    if (data_.factors.size() != 1) {
+      return "coarse-grid terms e^(−2πd/H) of the factors' poles (d their distance from the axis)";
+    }
+    const endpoint_factor& g = data_.factors[0];
+    double d = std::numeric_limits<double>::infinity();
+    for (const simple_pole& p : g.poles) d = std::min(d, std::abs(p.location.imag()));
+    // The leading harmonic k (the first with ŵ(k) ≠ 0) and its coefficient: Q − I ≈
+    // C·e^(−2πkd/H) summed over the poles at distance d, phases at H = the whole interval.
+    std::string where;
+    long double coefficient = 0.0L;
+    int k = 0;
+    for (int harmonic = 1; harmonic <= 8 && k == 0; ++harmonic) {
+      for (const simple_pole& p : g.poles) {
+        if (std::abs(p.location.imag()) != d) continue;
+        const auto [weight, exact] = stokes_weight(p, 0);
+        (void)exact;
+        const int sign = p.location.imag() > 0 ? 1 : -1;
+        const std::complex<long double> w = rule_.fourier_weight(sign * harmonic);
+        if (std::abs(w) <= 1e-12L) continue;
+        k = harmonic;
+        const std::complex<long double> r(p.residue.real(), p.residue.imag());
+        coefficient +=
+            (weight * std::complex<long double>(0.0L, sign * 6.283185307179586476925286766559L) *
+             r * w)
+                .real();
+        if (where.empty()) {
+          where = weight == 1.0L   ? "above the interior: weight 1"
+                  : weight == 0.5L ? "above an end: weight 1/2"
+                                   : "outside the interval: weight 0";
+        }
+      }
+    }
+    const double re = g.poles.front().location.real();
+    return fmt::format(
+        "coarse-grid term of the poles {} ± {}i (distance d = {} from [{}, {}], {}) "
+        "≈ {:.3g}·e^(−2π{}d/H)",
+        re, d, d, domain_.lower[0], domain_.upper[0], where, static_cast<double>(coefficient),
+        k == 1 ? std::string() : std::to_string(k));
   }
 
  private:
@@ -297,6 +406,65 @@ class euler_maclaurin_prediction {
     }
     return std::abs(g.at_upper[at] - g.at_lower[at]) <= 1e-10 * scale;
   }
+  // What a pole adds: Q(g) − ∫g (x units) where its weight is known, and the size of what is not.
+  struct coarse_grid_part {
+    std::complex<long double> error{0.0L, 0.0L};
+    long double unknown = 0.0L;
+  };
+
+  // ω of docs/theory.md#coarse-grid-term for panel width `panel` (x units; 0: the verdict only)
+  // and whether it is exact: 1 above the interior, 0 outside, 1/2 on an end's vertical (exact for
+  // an imaginary residue); within 3·√(dH/π) of a vertical but off it, not known.
+  std::pair<long double, bool> stokes_weight(const simple_pole& p, std::size_t axis,
+                                             long double panel = 0.0L) const {
+    const long double lower = domain_.lower[axis], upper = domain_.upper[axis];
+    const long double x = p.location.real(), d = std::abs(p.location.imag());
+    const long double zone = 3.0L * std::sqrt(d * panel / 3.141592653589793238462643383279L);
+    const long double on = 1e-12L * (upper - lower);
+    const bool imaginary = std::abs(p.residue.real()) <= 1e-12 * std::abs(p.residue);
+    for (const long double end : {lower, upper}) {
+      if (std::abs(x - end) <= on) return {0.5L, imaginary};
+      if (std::abs(x - end) < zone) return {0.5L, false};
+    }
+    return {x > lower && x < upper ? 1.0L : 0.0L, true};
+  }
+
+  // Σ over g's poles of ω·(±2πi·r)·Σ_{k≥1} ŵ(±k)·Q^k, summed until |Q|^k < 1e-30 (nullopt when
+  // that takes more than 2^16 harmonics: a grid so coarse that H ≫ 10⁴·d).
+  std::optional<coarse_grid_part> coarse_grid_term(const endpoint_factor& g, std::size_t axis,
+                                                   long double panel) const {
+    using cplx = std::complex<long double>;
+    constexpr long double two_pi = 6.283185307179586476925286766559L;
+    coarse_grid_part out;
+    for (const simple_pole& p : g.poles) {
+      const auto [weight, exact] = stokes_weight(p, axis, panel);
+      if (weight == 0.0L) continue;
+      const long double sign = p.location.imag() > 0 ? 1.0L : -1.0L;
+      const long double d = std::abs(p.location.imag());
+      const long double x = (p.location.real() - domain_.lower[axis]) / panel;
+      // Q = e^(±2πi(z − a)/H): modulus e^(−2πd/H), phase ±2π·x (x reduced modulo 1).
+      const long double decay = std::exp(-two_pi * d / panel);
+      if (decay == 0.0L) continue;
+      const long double turn = x - std::floor(x);
+      const cplx q = std::polar(decay, sign * two_pi * turn);
+      const long double harmonics = std::ceil(69.0L / (two_pi * d / panel));  // |Q|^k < 1e-30
+      if (!(harmonics <= 65536.0L)) return std::nullopt;
+      cplx sum(0.0L, 0.0L), power(1.0L, 0.0L);
+      for (long long k = 1; k <= static_cast<long long>(harmonics); ++k) {
+        power *= q;
+        sum += rule_.fourier_weight(static_cast<long long>(sign) * k) * power;
+      }
+      const cplx r(p.residue.real(), p.residue.imag());
+      const cplx term = cplx(0.0L, sign * two_pi) * r * sum;
+      if (exact) {
+        out.error += weight * term;
+      } else {
+        out.unknown += std::abs(term);
+      }
+    }
+    return out;
+  }
+
   static bool has_jump(const endpoint_factor& g, int k) {
     for (const derivative_jump& kink : g.kinks) {
       if (static_cast<std::size_t>(k) < kink.jumps.size() &&
