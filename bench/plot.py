@@ -21,7 +21,8 @@ keep the two in step):
                                        rule's Euler–Maclaurin expansion predicts its error
                                        (convergence.csv's `predicted_error`) the predicted curve,
                                        dash-dotted, beside the guide.
-  work_precision_<name>.svg            RMSE against seconds per estimate (seconds/repetitions).
+  work_precision_<name>.svg            RMSE against seconds per estimate (the stable timing,
+                                       `seconds_per_estimate`; seconds/repetitions before it).
 Output is deterministic (fixed svg.hashsalt, no date in the metadata), so regenerating the plots
 of unchanged data does not churn git.
 """
@@ -85,7 +86,11 @@ def load(folder):
         series.append({
             "n": float(row["evaluations"]),
             "error": number(row["rmse"]),
-            "seconds": number(row["seconds"]) / repetitions,
+            # The stable time per estimate (analysis/cell_timing.hpp); a folder from before it
+            # has only the repetitions' total.
+            "seconds": (number(row["seconds_per_estimate"])
+                        if row.get("seconds_per_estimate") not in ("", None)
+                        else number(row["seconds"]) / repetitions),
             "floor": row.get("floor", "0") == "1",
             "envelope": number(row.get("envelope")),  # absent in older folders: NaN
             "predicted": number(row.get("predicted_error")),  # absent or empty: NaN

@@ -9,8 +9,8 @@ Not for: judging whether a change made convergence better or worse — that is `
 which fits slopes and allows noise. This script says whether a figure moved at all, so a change
 that moves one must come with regenerated results.
 
-Compared: every column of both files except the timing ones (`seconds`, `evals_per_second`),
-which depend on the machine's load. Rows are matched by their key (integrand, s, method, and N
+Compared: every column of both files except the timing ones (`seconds`, `evals_per_second`,
+`seconds_per_estimate`, `seconds_spread`, `timed_estimates`), which depend on the machine's load. Rows are matched by their key (integrand, s, method, and N
 and tolerance for convergence.csv); a row or column present on one side only is a difference.
 With R = 0 (the default) fields must be equal as text: the writer prints the shortest text that
 reads back to the same double, so equal text is equal bits. R > 0 is for two machines with
@@ -24,7 +24,8 @@ import csv
 import math
 import sys
 
-TIMING_COLUMNS = {"seconds", "evals_per_second"}
+TIMING_COLUMNS = {"seconds", "evals_per_second", "seconds_per_estimate", "seconds_spread",
+                  "timed_estimates"}
 KEYS = {
     "convergence.csv": ("integrand", "s", "method", "N", "tolerance"),
     "slopes.csv": ("integrand", "s", "method"),

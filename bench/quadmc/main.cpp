@@ -152,7 +152,8 @@ struct staged_results {
 struct run_request {
   std::string scene_file;
   std::string out_dir;
-  std::optional<unsigned> threads;  // empty: the scene's
+  std::optional<unsigned> threads;           // empty: the scene's
+  std::optional<double> timing_min_seconds;  // empty: the scene's budget.timing_min_seconds
 };
 
 std::string cells_ran_text(std::size_t ran, std::size_t planned, double seconds) {
@@ -205,6 +206,7 @@ int run_command(const run_request& request, standard_output& out) {
   quadmc_cli::progress_bar bar;
   quadmc::run_options options;
   options.threads = request.threads;
+  options.timing_min_seconds = request.timing_min_seconds;
   options.on_progress = [&bar](const quadmc::run_progress& progress) {
     const auto held = interruption::hold();
     bar.update(progress);
@@ -327,6 +329,13 @@ int main(int argc, char** argv) {
       run->add_option("--threads", threads,
                       "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
           ->check(CLI::Range(0u, 4096u));
+  double timing_min_seconds = 0.0;
+  auto* timing_option =
+      run->add_option("--timing-min-seconds", timing_min_seconds,
+                      "Stable timing: repeat each cell's first estimate until this many seconds "
+                      "have passed, 0 to 60; 0 = time it once (default: the scene's "
+                      "budget.timing_min_seconds, 0.01)")
+          ->check(CLI::Range(0.0, 60.0));
 
   std::string plan_file;
   auto* plan = app.add_subcommand("plan", "Print the cells a scene would run and what it skips");
@@ -362,6 +371,7 @@ int main(int argc, char** argv) {
     return exit_usage;
   }
   if (threads_option->count() > 0) request.threads = threads;
+  if (timing_option->count() > 0) request.timing_min_seconds = timing_min_seconds;
 
   standard_output out;
   try {

@@ -60,9 +60,14 @@ std::vector<convergence_table> sample_tables() {
     const auto nk = static_cast<std::uint64_t>(n);
     rule.cells.push_back(
         cell_at(nk, {repetition(1.0 / 3.0 + 0.3 / n, nan, nk, 1e-7 * n)}, nk, 0.5 / n));
+    // Stable timing: the rule's cells timed once (spread empty), the Monte Carlo cells in batches.
+    const double once[] = {1e-7 * n};
+    rule.cells.back().timing = summarise_timing(once, 1);
     mc.cells.push_back(
         cell_at(nk, {repetition(0.7 + 0.2 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 1e-6),
                      repetition(0.7 - 0.3 / std::sqrt(n), 0.2 / std::sqrt(n), nk, 2e-6)}));
+    const double batches[] = {1.1e-6 * n, 1e-6 * n, 1.3e-6 * n};
+    mc.cells.back().timing = summarise_timing(batches, 300);
   }
   return {analyse_convergence(rule), analyse_convergence(mc)};
 }
@@ -75,7 +80,8 @@ TEST(ResultsCsv, ExactHeaderLines) {
             "mean_abs_error,std_error_of_rmse,coverage_95,seconds,evals_per_second,floor,"
             "smoothness,envelope,tolerance,error_estimate,estimate_covers,estimate_covers_3x,"
             "chi2_per_dof,q_value,replicate_std_error,l2_star_discrepancy,centered_discrepancy,"
-            "wraparound_discrepancy,predicted_error,prediction_ratio,local_slope,rounding_level");
+            "wraparound_discrepancy,predicted_error,prediction_ratio,local_slope,rounding_level,"
+            "seconds_per_estimate,seconds_spread,timed_estimates");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
@@ -128,6 +134,14 @@ TEST(ResultsCsv, RoundTripThroughFiles) {
         EXPECT_EQ(r.coverage_95, row.stats.coverage_95);
       }
       EXPECT_EQ(r.floor, row.floor);
+      // The stable timing: median, spread and calls read back as written.
+      EXPECT_EQ(r.timed_estimates, row.timing.estimates);
+      EXPECT_EQ(r.seconds_per_estimate, row.timing.seconds_per_estimate);
+      EXPECT_EQ(std::isnan(r.seconds_spread), std::isnan(row.timing.spread));
+      if (!std::isnan(r.seconds_spread)) {
+        EXPECT_EQ(r.seconds_spread, row.timing.spread);
+      }
+      EXPECT_EQ(r.time_per_estimate(), row.seconds_per_estimate());
       EXPECT_EQ(std::isnan(r.envelope), std::isnan(row.envelope));
       if (!std::isnan(r.envelope)) {
         EXPECT_EQ(r.envelope, row.envelope);

@@ -107,6 +107,7 @@ TEST(ParseScene, MinimalSceneFileGivesTheExpectedStruct) {
             (std::vector<std::uint64_t>{64, 256, 1024, 4096, 16384, 65536, 262144, 1048576}));
   EXPECT_EQ(sc.budget.max_evaluations, 100'000'000u);
   EXPECT_FALSE(sc.budget.max_seconds.has_value());
+  EXPECT_EQ(sc.budget.timing_min_seconds, 0.01);  // the default stable-timing minimum
   EXPECT_TRUE(sc.output.csv && sc.output.markdown && sc.output.plots);
 }
 
@@ -176,7 +177,8 @@ integrands = ["genz_gaussian_s2"]
 [output]
 plots = false
 [budget]
-max_seconds = 60)"));
+max_seconds = 60
+timing_min_seconds = 0.25)"));
   ASSERT_EQ(sc.methods.size(), 4u);
   // The options reached the configured methods: m = 5 is order 10; the panels replace the
   // ladder with n = 1, 2, 4 (5, 10, 20 nodes per axis).
@@ -211,6 +213,7 @@ max_seconds = 60)"));
   EXPECT_FALSE(sc.output.plots);
   EXPECT_TRUE(sc.output.csv);
   EXPECT_EQ(sc.budget.max_seconds, 60.0);
+  EXPECT_EQ(sc.budget.timing_min_seconds, 0.25);
 }
 
 // `accumulator` on a tensor rule: parsed into enum summation, and the default label gets the
@@ -351,6 +354,12 @@ TEST(SceneErrors, OutOfRangeValues) {
   expect_error(t, line_of(t, "max_eval"), "budget.max_evaluations");
   t = replace(valid, "N = [16, 64]", "N = [16, 64]\nmax_seconds = 0");
   expect_error(t, line_of(t, "max_sec"), "budget.max_seconds");
+  t = replace(valid, "N = [16, 64]", "N = [16, 64]\ntiming_min_seconds = -0.01");
+  expect_error(t, line_of(t, "timing_min"), "budget.timing_min_seconds");
+  t = replace(valid, "N = [16, 64]", "N = [16, 64]\ntiming_min_seconds = 61");
+  expect_error(t, line_of(t, "timing_min"), "budget.timing_min_seconds");
+  t = replace(valid, "N = [16, 64]", "N = [16, 64]\ntiming_min_seconds = \"fast\"");
+  expect_error(t, line_of(t, "timing_min"), "budget.timing_min_seconds");
   t = replace(valid, "dimension = 2", "dimension = 2\nensemble = 0");
   expect_error(t, line_of(t, "ensemble"), "integrand[1].ensemble");
   t = replace(valid, "name = \"simpson\"", "name = \"gauss_legendre\"\nm = 6");  // no 6-point rule

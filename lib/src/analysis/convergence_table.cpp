@@ -311,6 +311,7 @@ convergence_table analyse_convergence(const convergence_series& series,
   table.s = series.s;
   table.method = series.method;
   table.regularity = series.regularity;
+  table.relative_tolerance = series.relative_tolerance;
   table.reference = series.reference;
   table.theory = series.theory;
 
@@ -353,6 +354,7 @@ convergence_table analyse_convergence(const convergence_series& series,
     row.tolerance = cell->tolerance;
     row.per_axis = cell->per_axis;
     row.envelope = cell->error_envelope;
+    row.timing = cell->timing;
     try {
       row.stats = compute_cell_statistics(cell->repetitions, series.reference, series.errors);
     } catch (const invalid_argument& e) {
@@ -383,7 +385,7 @@ convergence_table analyse_convergence(const convergence_series& series,
     const convergence_row& row = table.rows[k];
     evaluations.push_back(static_cast<double>(row.stats.evaluations));
     errors.push_back(row.stats.rmse);
-    seconds.push_back(row.stats.seconds_per_repetition());
+    seconds.push_back(row.seconds_per_estimate());
     largest_error = std::max(largest_error, row.stats.rmse);
     // A rule with weights of both signs amplifies rounding by Σ|w| (cell_statistics.hpp).
     const double w = row.stats.absolute_weight_sum;

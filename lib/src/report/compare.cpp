@@ -47,7 +47,7 @@ std::map<series_key, std::vector<convergence_record>> by_series(
 std::vector<time_to_error> times_of(const std::vector<convergence_record>& rows) {
   std::vector<double> seconds, errors;
   for (const convergence_record& r : rows) {
-    seconds.push_back(r.repetitions > 0 ? r.seconds / static_cast<double>(r.repetitions) : 0.0);
+    seconds.push_back(r.time_per_estimate());
     errors.push_back(r.rmse);
   }
   return work_precision(seconds, errors);

@@ -2,6 +2,7 @@
 #include "quadmc/report/markdown_report.hpp"
 
 #include "quadmc/analysis/estimate_reliability.hpp"
+#include "quadmc/report/time_to_error_table.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -49,6 +50,14 @@ std::string slope_text(const power_law_fit& fit) {
 
 std::string theory_text(const theoretical_rate& theory) {
   return theory.slope ? fmt::format("{:.3f}", *theory.slope) : std::string("—");
+}
+
+// The stable time of one estimate and its spread (analysis/cell_timing.hpp): "1.2e-05 (±4%)",
+// "0.31 (timed once)", "—" for a cell that was not timed.
+std::string timing_text(const cell_timing& t) {
+  if (!t.timed()) return "—";
+  if (t.timed_once()) return fmt::format("{:.3g} (timed once)", t.seconds_per_estimate);
+  return fmt::format("{:.3g} (spread {:.0f}%)", t.seconds_per_estimate, 100.0 * t.spread);
 }
 
 std::string time_to_error_text(const time_to_error& t) {
@@ -104,18 +113,19 @@ void append_method_table(std::string& out, const convergence_table& t) {
         "too large to compute them (O(N²·s)).\n\n";
   }
   out += fmt::format(
-      "| {} | evaluations | {} |{}{}{}{} std error | coverage 95% | time (s) | evals/s | floor |\n",
+      "| {} | evaluations | {} |{}{}{}{} std error | coverage 95% | time (s) | s per estimate | "
+      "evals/s | floor |\n",
       to_tolerance ? "tolerance" : "N", deterministic ? "\\|error\\|" : "RMSE",
       discrepant ? " L2-star discrepancy | centered discrepancy | wrap-around discrepancy |" : "",
       predicted ? " predicted | measured/predicted |" : "", estimated ? " error estimate |" : "",
       enveloped ? " envelope |" : "");
-  out += fmt::format("|---:|---:|---:|{}{}{}{}---:|---:|---:|---:|:---:|\n",
+  out += fmt::format("|---:|---:|---:|{}{}{}{}---:|---:|---:|---:|---:|:---:|\n",
                      discrepant ? "---:|---:|---:|" : "", predicted ? "---:|---:|" : "",
                      estimated ? "---:|" : "", enveloped ? "---:|" : "");
   for (const convergence_row& row : t.rows) {
     const cell_statistics& c = row.stats;
     out += fmt::format(
-        "| {} | {} | {} |{}{}{}{} {} | {} | {} | {} | {} |\n",
+        "| {} | {} | {} |{}{}{}{} {} | {} | {} | {} | {} | {} |\n",
         to_tolerance ? sci(row.tolerance) : fmt::format("{}", row.n), c.evaluations, sci(c.rmse),
         discrepant ? fmt::format(" {} | {} | {} |", sci(c.l2_star_discrepancy),
                                  sci(c.centered_discrepancy), sci(c.wraparound_discrepancy))
@@ -129,7 +139,8 @@ void append_method_table(std::string& out, const convergence_table& t) {
         estimated ? fmt::format(" {} |", sci(c.error_estimate)) : "",
         enveloped ? fmt::format(" {} |", sci(row.envelope)) : "", sci(c.std_error_of_rmse),
         std::isnan(c.coverage_95) ? "—" : fmt::format("{:.2f}", c.coverage_95),
-        short_number(c.seconds), short_number(c.evals_per_second), row.floor ? "▼" : "");
+        short_number(c.seconds), timing_text(row.timing), short_number(c.evals_per_second),
+        row.floor ? "▼" : "");
   }
   out += '\n';
 }
@@ -313,6 +324,12 @@ std::string render_results_markdown(const run_info& info,
       "the evaluation precision and the accumulator comes before three points could be fitted. "
       "*steeper* and *shallower* remain only where no computed reason explains the slope: they "
       "are findings, listed first. Data: `convergence.csv`, `slopes.csv`.\n\n";
+  out +=
+      "Times: `time (s)` is the wall time of a cell's repetitions; `s per estimate` is its "
+      "stable timing, apart from the statistics: repetition 1's call repeated in batches until "
+      "the scene's `timing_min_seconds` had passed, the median over batches of seconds per call, "
+      "with the spread (max − min)/median of the batches; a call that alone took the minimum is "
+      "timed once. Work-precision figures use `s per estimate`.\n\n";
   if (!info.skipped.empty()) {
     // Folded: a ladder in s = 8 skips dozens of repeated grids, and the list would push the
     // slope table off the first screen. GitHub renders <details> with Markdown inside.
@@ -393,6 +410,10 @@ std::string render_results_markdown(const run_info& info,
     }
     out += '\n';
   }
+
+  // Scenes that run methods to tolerances beside peers: who gets there first
+  // (time_to_error_table.hpp).
+  out += time_to_error_markdown(tables);
 
   append_leaders(out, tables);
 

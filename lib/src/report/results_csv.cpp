@@ -103,7 +103,10 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(row.predicted_error),
                                                number(row.prediction_ratio),
                                                number(row.local_slope),
-                                               number(row.rounding_level)};
+                                               number(row.rounding_level),
+                                               number(row.timing.seconds_per_estimate),
+                                               number(row.timing.spread),
+                                               fmt::format("{}", row.timing.estimates)};
       out += csv_line(fields);
     }
   }
@@ -192,6 +195,9 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     }
     if (has_predicted_error) rec.predicted_error = f.real("predicted_error");
     if (has_prediction_ratio) rec.prediction_ratio = f.real("prediction_ratio");
+    rec.seconds_per_estimate = optional_real(f, "seconds_per_estimate");
+    rec.seconds_spread = optional_real(f, "seconds_spread");
+    if (table.has_column("timed_estimates")) rec.timed_estimates = f.count("timed_estimates");
     out.push_back(std::move(rec));
   }
   return out;

@@ -35,7 +35,8 @@ constexpr std::array<std::string_view, 5> integrand_keys{"family", "name", "dime
 // The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
 constexpr std::array<std::string_view, 7> common_method_keys{
     "name", "label", "integrands", "repetitions", "control", "tolerances", "tolerance_kind"};
-constexpr std::array<std::string_view, 3> budget_keys{"N", "max_evaluations", "max_seconds"};
+constexpr std::array<std::string_view, 4> budget_keys{"N", "max_evaluations", "max_seconds",
+                                                      "timing_min_seconds"};
 constexpr std::array<std::string_view, 3> range_keys{"from", "to", "factor"};
 constexpr std::array<std::string_view, 3> output_keys{"csv", "markdown", "plots"};
 constexpr std::array<scene_table_keys, 6> key_tables{{
@@ -648,6 +649,11 @@ budget_spec parse_budget(const scene_reader& r, const entry& e) {
     const double v = r.number(*s, "a positive number of seconds");
     if (!(v > 0.0)) r.expected(*s, "a positive number of seconds");
     b.max_seconds = v;
+  }
+  if (const auto s = r.find(t, "timing_min_seconds", "budget")) {
+    const double v = r.number(*s, "a number of seconds between 0 and 60");
+    if (!(v >= 0.0 && v <= 60.0)) r.expected(*s, "a number of seconds between 0 and 60");
+    b.timing_min_seconds = v;
   }
   return b;
 }

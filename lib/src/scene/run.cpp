@@ -16,14 +16,57 @@
 #include <iterator>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace quadmc {
+namespace {
+
+using timing_clock = std::chrono::steady_clock;
+
+// Stable timing of one cell (the procedure in run.hpp): `call` runs one estimate, `first` is the
+// time repetition 1 took. Batches aim at a tenth of the minimum each, so the median is of ~10
+// samples; k is re-aimed after every batch from the last one's time per estimate.
+template <class Call>
+cell_timing time_cell(Call&& call, double first, double min_seconds) {
+  if (first >= min_seconds) {
+    const double once[] = {first};
+    return summarise_timing(once, 1);
+  }
+  const double batch_target = min_seconds / 10.0;
+  // A call below 10 ns is below what the clock resolves; 2^20 calls per batch at most.
+  constexpr double floor_seconds = 1e-8;
+  constexpr std::uint64_t max_batch = std::uint64_t{1} << 20;
+  auto batch_size = [&](double per_estimate) {
+    const double k = std::floor(batch_target / std::max(per_estimate, floor_seconds));
+    return static_cast<std::uint64_t>(std::clamp(k, 1.0, static_cast<double>(max_batch)));
+  };
+  std::uint64_t k = batch_size(first);
+  std::vector<double> samples;
+  std::uint64_t estimates = 0;
+  double total = 0.0;
+  while (total < min_seconds || samples.size() < 2) {
+    const auto t0 = timing_clock::now();
+    for (std::uint64_t i = 0; i < k; ++i) call();
+    const double dt = std::chrono::duration<double>(timing_clock::now() - t0).count();
+    samples.push_back(dt / static_cast<double>(k));
+    estimates += k;
+    total += dt;
+    k = batch_size(samples.back());
+  }
+  return summarise_timing(samples, estimates);
+}
+
+}  // namespace
 
 run_output run_plan(const plan& p, const run_options& options) {
   using clock = std::chrono::steady_clock;
   const auto run_start = clock::now();
   run_output out;
   out.threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
+  const double timing_min_seconds =
+      options.timing_min_seconds.value_or(p.source.budget.timing_min_seconds);
+  require(std::isfinite(timing_min_seconds) && timing_min_seconds >= 0.0, "timing_min_seconds",
+          timing_min_seconds, "a finite number of seconds >= 0");
   const run_context context{p.source.seed, out.threads_allowed};
   parallel_reduce_peak_threads() = 0;
 
@@ -66,6 +109,7 @@ run_output run_plan(const plan& p, const run_options& options) {
       series.theory = mspec.configured->theory(
           integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
       series.reference = mean_reference[cell.integrand];
+      series.relative_tolerance = mspec.relative_tolerance;
       series.errors = mspec.configured->error_bars();
       series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};
       // A prediction is of one instance on fixed grids: not for an ensemble (its cells pool
@@ -88,7 +132,8 @@ run_output run_plan(const plan& p, const run_options& options) {
     const double envelope = cell.control == cell_control::fixed_size
                                 ? mspec.configured->error_envelope(info, size)
                                 : std::numeric_limits<double>::quiet_NaN();
-    if (same_n == series.cells.end()) {
+    const bool first_instance = same_n == series.cells.end();
+    if (first_instance) {
       convergence_cell fresh;
       fresh.n = cell.nominal_N;
       fresh.tolerance = cell.tolerance;
@@ -155,6 +200,16 @@ run_output run_plan(const plan& p, const run_options& options) {
       }
       result.value += shift;
       target.repetitions.push_back(result);
+      if (r == 0 && first_instance) {
+        // Stable timing, apart from the statistics: repetition 1's call again (run.hpp).
+        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+        try {
+          target.timing = time_cell([&] { (void)mspec.configured->run(work, context); },
+                                    result.seconds, timing_min_seconds);
+        } catch (const std::exception& e) {
+          throw run_error(fmt::format("{}: {} (while timing)", where(), e.what()));
+        }
+      }
       // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
       progress.evaluations_done += result.evaluations;
       if (options.on_progress && r + 1 < cell.repetitions) options.on_progress(progress);

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "quadmc/analysis/cell_statistics.hpp"
+#include "quadmc/analysis/cell_timing.hpp"
 #include "quadmc/analysis/error_prediction.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/analysis/rounding_floor.hpp"
@@ -59,6 +60,9 @@ struct convergence_cell {
   // instances'): a rule's envelope on a jump (rules/jump_error_envelope.hpp). NaN = none. A series
   // gives it for every cell or for none; with it the verdict is the envelope verdict.
   double error_envelope = std::numeric_limits<double>::quiet_NaN();
+  // The stable time of one estimate (cell_timing.hpp); untimed (estimates = 0) in a cell built
+  // by hand, whose time per estimate is then its repetitions' mean.
+  cell_timing timing;
 };
 
 // Input: one series, as the runner assembles it.
@@ -78,6 +82,9 @@ struct convergence_series {
   rounding_model rounding;
   // The method's predicted error per cell (a rule's Euler–Maclaurin curve), or none.
   std::optional<error_prediction> prediction;
+  // The cells' tolerances are fractions of |reference| (method_spec::relative_tolerance), so
+  // the error a cell was asked for is tolerance·|reference|.
+  bool relative_tolerance = false;
 };
 
 struct analysis_options {
@@ -113,6 +120,13 @@ struct convergence_row {
   // negative means opposite signs), rmse/|predicted| for several; NaN without a prediction.
   double prediction_ratio = std::numeric_limits<double>::quiet_NaN();
   bool prediction_judged = false;  // the ratio counts (valid, not a floor point, above rounding)
+  cell_timing timing;              // convergence_cell::timing
+
+  // Seconds of one estimate: the stable timing's median where the cell was timed, else the
+  // repetitions' mean wall time.
+  double seconds_per_estimate() const noexcept {
+    return timing.timed() ? timing.seconds_per_estimate : stats.seconds_per_repetition();
+  }
 };
 
 struct convergence_table {
@@ -121,6 +135,7 @@ struct convergence_table {
   std::string method;
   smoothness regularity = smoothness::analytic;
   double reference = 0.0;
+  bool relative_tolerance = false;  // convergence_series::relative_tolerance
   // In increasing N, or, for cells run to a tolerance, in decreasing tolerance.
   std::vector<convergence_row> rows;
   rounding_floor floor;

@@ -6,7 +6,8 @@
 //     then added columns: floor, smoothness, envelope, tolerance, error_estimate, estimate_covers,
 //     estimate_covers_3x, chi2_per_dof, q_value, replicate_std_error, l2_star_discrepancy,
 //     centered_discrepancy, wraparound_discrepancy,
-//     predicted_error, prediction_ratio, local_slope, rounding_level
+//     predicted_error, prediction_ratio, local_slope, rounding_level, seconds_per_estimate,
+//     seconds_spread, timed_estimates
 //   slopes.csv  one row per series (integrand, s, method):
 //     scene, integrand, s, method, slope, ci_low, ci_high, theory, verdict, points_used,
 //     floor_points, then added columns: smoothness, fit_status, attainable_accuracy, theory_note,
@@ -48,6 +49,12 @@
 // `predicted_points` how many cells were judged against the prediction and
 // `worst_prediction_ratio` the judged ratio farthest from 1 (empty when none); `rounding_model`
 // e.g. "float evaluation, pairwise sum".
+// `seconds_per_estimate` is the stable time of one estimate (analysis/cell_timing.hpp: the median
+// over batches of repeated calls of repetition 1's work), `seconds_spread` the batches'
+// (max − min)/median (empty when timed once), `timed_estimates` the calls timed (1 = timed once:
+// the first call already took at least the minimum); `seconds` keeps its meaning, the wall time
+// of the repetitions the statistics come from. Work-precision figures use seconds_per_estimate
+// (seconds/repetitions for a file from before it).
 //
 // Use the readers for compare and tests; they accept added columns and throw naming the file and
 // the column when one of the contract's columns is missing.
@@ -71,7 +78,7 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 17> convergence_csv_added_columns = {
+inline constexpr std::array<std::string_view, 20> convergence_csv_added_columns = {
     "floor",
     "smoothness",
     "envelope",
@@ -88,7 +95,10 @@ inline constexpr std::array<std::string_view, 17> convergence_csv_added_columns 
     "predicted_error",
     "prediction_ratio",
     "local_slope",
-    "rounding_level"};
+    "rounding_level",
+    "seconds_per_estimate",
+    "seconds_spread",
+    "timed_estimates"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
@@ -132,6 +142,15 @@ struct convergence_record {
   double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();  // NaN: or absent
   double predicted_error = std::numeric_limits<double>::quiet_NaN();         // NaN: none, or absent
   double prediction_ratio = std::numeric_limits<double>::quiet_NaN();        // NaN: none, or absent
+  double seconds_per_estimate = std::numeric_limits<double>::quiet_NaN();    // NaN: absent
+  double seconds_spread = std::numeric_limits<double>::quiet_NaN();  // NaN: timed once, or absent
+  std::uint64_t timed_estimates = 0;                                 // 0: absent
+
+  // Seconds of one estimate: the stable timing where the file has it, else seconds/repetitions.
+  double time_per_estimate() const noexcept {
+    if (timed_estimates > 0) return seconds_per_estimate;
+    return repetitions > 0 ? seconds / static_cast<double>(repetitions) : 0.0;
+  }
 };
 
 // One row of slopes.csv as read back. NaN for empty numeric fields.

@@ -82,6 +82,9 @@
 //   max_evaluations = 1e8 per cell, evaluations × repetitions; cells above it are skipped with
 //                         the reason. An integer or an integral float (1e8). Default: no limit.
 //   max_seconds = 600     whole run, positive; the runner stops starting new cells after it.
+//   timing_min_seconds = 0.01   stable timing per cell (analysis/cell_timing.hpp): the first
+//                         estimate is repeated until this much time has passed; 0 ≤ value ≤ 60,
+//                         0 = the first call timed once. Default 0.01.
 //
 // [output]                optional; which files to write (each default true)
 //   csv = true, markdown = true, plots = true     plots are drawn from the CSV: plots = true

@@ -6,6 +6,13 @@
 // Philox stream stream_id({cell.stream_parts…, r}) keyed by the scene seed, so a result
 // depends on neither thread count nor run order (docs/design.md#hot-path-contract).
 //
+// Timing (analysis/cell_timing.hpp): the repetitions are timed one clock reading each (their
+// total is cell_statistics::seconds); apart from them, each cell's stable time per estimate
+// repeats repetition 1's call (same stream, same work) in batches until timing_min_seconds has
+// passed, batches sized to ~1/10 of it. A cell whose repetition 1 already took at least the
+// minimum is timed once, by that call. A tolerance cell's estimate is the whole call to the
+// tolerance. An ensemble's cell is timed on its first instance.
+//
 // Ensembles (K random instances of a family): the instances' errors are pooled into one series.
 // Each estimate is shifted by (Ī − I_k), Ī the mean of the instances' references, so that the
 // series' reference is Ī and every error is the error of its own instance.
@@ -43,6 +50,8 @@ struct run_options {
   // Threads allowed: empty = the scene's `threads`; 0, given here or in the scene, = all cores
   // (core/parallel_reduce.hpp, resolve_threads).
   std::optional<unsigned> threads;
+  // Stable timing's minimum per cell in seconds: empty = the scene's budget.timing_min_seconds.
+  std::optional<double> timing_min_seconds;
   // Called after each repetition and after each cell (cells_done counts finished cells).
   std::function<void(const run_progress&)> on_progress;
 };

@@ -68,6 +68,10 @@ struct budget_spec {
   std::vector<std::uint64_t> N;                  // nominal evaluation counts, increasing
   std::optional<std::uint64_t> max_evaluations;  // per cell: evaluations × repetitions
   std::optional<double> max_seconds;             // whole run; enforced by the runner
+  // Stable timing (analysis/cell_timing.hpp): each cell's first estimate is repeated until at
+  // least this many seconds have passed; 0 = time the first call once. 10 ms: batches of ~1 ms,
+  // a thousand times the clock's resolution and cost, and ≈ 11 s over the default scene's cells.
+  double timing_min_seconds = 0.01;
   source_location N_location;
 };
 
