@@ -38,11 +38,17 @@ PLOT_PACKAGES=(python3 python3-matplotlib)
 # quadmc_with_peers command that runs scenes naming peer_* methods (bench/scenes/time_to_error.toml),
 # and python3-scipy for scipy.stats.qmc's Sobol' and Halton points (bench/peers/scipy_qmc.py).
 PEER_PACKAGES=(libgsl-dev libcubature-dev python3-scipy)
-# What the tests need: the library, the plots of the end-to-end runs, and the peers, whose adapter
-# tests (tests/peers/) build only where they are installed (ctest passes without them too).
-TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}")
-# What only the benchmark command adds: the peers measured beside quadmc in bench/peers/.
-BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}")
+# Open MPI: `mpirun -np K quadmc run SCENE.toml` (bench/quadmc/mpi_run.hpp). The command is
+# built with MPI where CMake finds it (QUADMC_MPI=AUTO), and tests/mpi/ runs mpirun on loopback.
+MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
+# What the tests need: the library, the plots of the end-to-end runs, the peers, whose adapter
+# tests (tests/peers/) build only where they are installed (ctest passes without them too), and
+# Open MPI for the mpirun tests (tests/mpi/, likewise built only with it).
+TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}" "${MPI_PACKAGES[@]}")
+# What only the benchmark command adds: the peers measured beside quadmc in bench/peers, and
+# Open MPI for the command's mpirun use.
+BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}"
+                "${MPI_PACKAGES[@]}")
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)

@@ -38,6 +38,7 @@
 #include "catalogue_listing.hpp"
 #include "gallery_command.hpp"
 #include "interruption.hpp"
+#include "mpi_run.hpp"
 #include "plot_script.hpp"
 #include "points_command.hpp"
 #include "progress_bar.hpp"
@@ -154,6 +155,7 @@ struct run_request {
   std::string out_dir;
   std::optional<unsigned> threads;           // empty: the scene's
   std::optional<double> timing_min_seconds;  // empty: the scene's budget.timing_min_seconds
+  std::string split_cells = "auto";          // under mpirun: which cells all ranks run together
 };
 
 std::string cells_ran_text(std::size_t ran, std::size_t planned, double seconds) {
@@ -162,15 +164,31 @@ std::string cells_ran_text(std::size_t ran, std::size_t planned, double seconds)
                      planned, seconds, planned - ran);
 }
 
-std::string threads_text(const quadmc::run_output& out) {
-  if (out.threads == out.threads_allowed) return fmt::format("on {} threads", out.threads);
-  return fmt::format("on {} threads ({} allowed; no cell had work for more)", out.threads,
-                     out.threads_allowed);
+std::string threads_text(const quadmc::run_output& out, unsigned ranks) {
+  const std::string per_rank = ranks > 1 ? fmt::format("{} MPI ranks × ", ranks) : "";
+  if (out.threads == out.threads_allowed) {
+    return fmt::format("on {}{} threads", per_rank, out.threads);
+  }
+  return fmt::format("on {}{} threads ({} allowed; no cell had work for more)", per_rank,
+                     out.threads, out.threads_allowed);
 }
 
-int run_command(const run_request& request, standard_output& out) {
+int run_command(const run_request& request, standard_output& out,
+                const quadmc_cli::mpi::world& world) {
+  const quadmc_cli::mpi::split_policy split =
+      quadmc_cli::mpi::parse_split_policy(request.split_cells);
   const quadmc::scene scene = quadmc::parse_scene_file(request.scene_file);
   const quadmc::plan p = quadmc::make_plan(scene);
+  // Under mpirun every rank parses and plans (deterministically, so all fail alike on bad
+  // input); only rank 0 prints, stages and writes, and the others follow its verdict.
+  if (world.rank != 0) {
+    if (p.cells.empty() || !quadmc_cli::mpi::agree_to_proceed(world, true)) return exit_failure;
+    quadmc::run_options options;
+    options.threads = request.threads;
+    options.timing_min_seconds = request.timing_min_seconds;
+    (void)quadmc_cli::mpi::run_plan_distributed(p, options, world, split);
+    return 0;
+  }
   if (p.cells.empty()) {
     out.print(quadmc::format_plan(p) + "\n");
     throw std::runtime_error(fmt::format(
@@ -181,26 +199,32 @@ int run_command(const run_request& request, standard_output& out) {
   const bool writes = outputs.csv || outputs.markdown || outputs.plots;
 
   staged_results staged;
-  if (writes) {
-    const fs::path folder = quadmc_cli::results_folder_path(request.out_dir, scene.name);
-    const bool given = !request.out_dir.empty();
-    {
-      const auto held = interruption::hold();
-      staged.staging = std::make_unique<results_staging>(
-          given ? "--out" : "results folder",
-          given ? request.out_dir : (fs::path("results") / scene.name).string(), folder,
-          result_file_names(p));
-      interruption::set_cleanup([s = staged.staging.get()] {
-        s->finish();
-        return fmt::format("removed this run's unfinished results; {} is untouched",
-                           s->folder().string());
-      });
+  try {
+    if (writes) {
+      const fs::path folder = quadmc_cli::results_folder_path(request.out_dir, scene.name);
+      const bool given = !request.out_dir.empty();
+      {
+        const auto held = interruption::hold();
+        staged.staging = std::make_unique<results_staging>(
+            given ? "--out" : "results folder",
+            given ? request.out_dir : (fs::path("results") / scene.name).string(), folder,
+            result_file_names(p));
+        interruption::set_cleanup([s = staged.staging.get()] {
+          s->finish();
+          return fmt::format("removed this run's unfinished results; {} is untouched",
+                             s->folder().string());
+        });
+      }
+      if (outputs.plots) {
+        quadmc_cli::check_plotting(quadmc_cli::plot_script_path(),
+                                   "or set plots = false in [output]");
+      }
     }
-    if (outputs.plots) {
-      quadmc_cli::check_plotting(quadmc_cli::plot_script_path(),
-                                 "or set plots = false in [output]");
-    }
+  } catch (...) {
+    (void)quadmc_cli::mpi::agree_to_proceed(world, false);
+    throw;
   }
+  (void)quadmc_cli::mpi::agree_to_proceed(world, true);
 
   out.print(quadmc::format_plan(p) + "\n");
   quadmc_cli::progress_bar bar;
@@ -211,7 +235,7 @@ int run_command(const run_request& request, standard_output& out) {
     const auto held = interruption::hold();
     bar.update(progress);
   };
-  const quadmc::run_output result = quadmc::run_plan(p, options);
+  const quadmc::run_output result = quadmc_cli::mpi::run_plan_distributed(p, options, world, split);
   {
     const auto held = interruption::hold();
     bar.finish();
@@ -237,6 +261,7 @@ int run_command(const run_request& request, standard_output& out) {
     info.seed = p.source.seed;
     info.threads = result.threads;
     info.threads_allowed = result.threads_allowed;
+    info.ranks = world.size;
     info.machine = machine_description();
     info.build = quadmc::bench::build_provenance();
     info.run_seconds = result.seconds;
@@ -265,7 +290,7 @@ int run_command(const run_request& request, standard_output& out) {
 
   out.print(quadmc_cli::slope_summary(tables) + "\n");
   out.print(fmt::format("{} {}; {}\n", cells_ran_text(ran, p.cells.size(), result.seconds),
-                        threads_text(result), written));
+                        threads_text(result, world.size), written));
   if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
   if (out.failed()) {
     throw std::runtime_error(
@@ -308,8 +333,21 @@ std::string one_line(std::string text) {
 
 }  // namespace
 
+// MPI_Finalize on every way out of main (mpi_run.hpp; does nothing without mpirun).
+struct mpi_session {
+  quadmc_cli::mpi::world world;
+  ~mpi_session() { quadmc_cli::mpi::finish(); }
+};
+
 int main(int argc, char** argv) {
   interruption::install();  // before any thread starts (the signal mask is inherited)
+  mpi_session mpi;
+  try {
+    mpi.world = quadmc_cli::mpi::start(argc, argv);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "quadmc: {}\n", e.what());
+    return exit_failure;
+  }
 
   CLI::App app{"quadmc: convergence of quadrature rules against Monte Carlo"};
   app.footer(std::string(exit_status_help));
@@ -336,6 +374,10 @@ int main(int argc, char** argv) {
                       "have passed, 0 to 60; 0 = time it once (default: the scene's "
                       "budget.timing_min_seconds, 0.01)")
           ->check(CLI::Range(0.0, 60.0));
+  run->add_option("--split-cells", request.split_cells,
+                  "Under mpirun: which cells all ranks run together, each computing a share of "
+                  "its chunks (auto: the costly ones; all; none). Results do not depend on it")
+      ->check(CLI::IsMember({"auto", "all", "none"}));
 
   std::string plan_file;
   auto* plan = app.add_subcommand("plan", "Print the cells a scene would run and what it skips");
@@ -382,7 +424,7 @@ int main(int argc, char** argv) {
       if (out.failed()) throw std::runtime_error(out.message());
       return 0;
     }
-    if (*run) return run_command(request, out);
+    if (*run) return run_command(request, out, mpi.world);
     if (*plan) return plan_command(plan_file, out);
     if (*list) {
       out.print(quadmc_cli::catalogue_listing());
@@ -406,7 +448,8 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& e) {
     // One line: the library's messages are single lines naming file, line, key or parameter.
-    fmt::print(stderr, "quadmc: {}\n", one_line(e.what()));
+    // Under mpirun every rank meets the same error; rank 0 says it.
+    if (mpi.world.rank == 0) fmt::print(stderr, "quadmc: {}\n", one_line(e.what()));
     return exit_failure;
   }
   return exit_usage;

@@ -100,6 +100,8 @@ class smolyak_method final : public method {
   // same on any thread count and costs a pass over 256 weights per batch, not a second pass over
   // the grid.
   struct tallied_grid {
+    // The tally is written on the side of the sum (rules/weighted_sum.hpp, writes_on_the_side).
+    static constexpr bool writes_on_the_side = true;
     const smolyak_grid* grid;
     std::vector<neumaier_sum>* tally;
 
@@ -114,6 +116,7 @@ class smolyak_method final : public method {
       add(first, weights);
     }
     struct on_box {
+      static constexpr bool writes_on_the_side = true;
       smolyak_grid::on_box points;
       const tallied_grid* owner;
       void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {

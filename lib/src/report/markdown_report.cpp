@@ -294,6 +294,13 @@ std::string render_results_markdown(const run_info& info,
              ? fmt::format("- threads: {} used ({} allowed; no cell had work for more)\n",
                            info.threads, info.threads_allowed)
              : fmt::format("- threads: {}\n", info.threads);
+  if (info.ranks > 1) {
+    out += fmt::format(
+        "- processes: {} MPI ranks × the threads above each (cells assigned by "
+        "planned cost, large cells split by chunks; every column but the timing "
+        "is what one process writes)\n",
+        info.ranks);
+  }
   if (!info.machine.empty()) out += fmt::format("- machine: {}\n", info.machine);
   // What made the page, as `quadmc --version` says it and meta.csv records it.
   if (!info.build.version.empty()) {

@@ -1,6 +1,10 @@
 // Executes plan cells: each repetition is one call of the cell's configured method
 // (methods/method.hpp); below it the rule and estimator kernels are templates over the integrand
 // (any_integrand: one virtual call per batch).
+//
+// Running a cell (run_cell_repetitions) and filing its repetitions into series (run_assembly)
+// are apart, so that a distributed run can run cells anywhere and file them in plan order on
+// one process: the series then do not depend on where a cell ran.
 #include "quadmc/scene/run.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -19,9 +23,14 @@
 #include <vector>
 
 namespace quadmc {
+
 namespace {
 
-using timing_clock = std::chrono::steady_clock;
+using clock = std::chrono::steady_clock;
+
+double seconds_since(clock::time_point start) {
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
 
 // Stable timing of one cell (the procedure in run.hpp): `call` runs one estimate, `first` is the
 // time repetition 1 took. Batches aim at a tenth of the minimum each, so the median is of ~10
@@ -45,9 +54,9 @@ cell_timing time_cell(Call&& call, double first, double min_seconds) {
   std::uint64_t estimates = 0;
   double total = 0.0;
   while (total < min_seconds || samples.size() < 2) {
-    const auto t0 = timing_clock::now();
+    const auto t0 = clock::now();
     for (std::uint64_t i = 0; i < k; ++i) call();
-    const double dt = std::chrono::duration<double>(timing_clock::now() - t0).count();
+    const double dt = seconds_since(t0);
     samples.push_back(dt / static_cast<double>(k));
     estimates += k;
     total += dt;
@@ -58,166 +67,219 @@ cell_timing time_cell(Call&& call, double first, double min_seconds) {
 
 }  // namespace
 
-run_output run_plan(const plan& p, const run_options& options) {
-  using clock = std::chrono::steady_clock;
-  const auto run_start = clock::now();
-  run_output out;
-  out.threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
-  const double timing_min_seconds =
-      options.timing_min_seconds.value_or(p.source.budget.timing_min_seconds);
-  require(std::isfinite(timing_min_seconds) && timing_min_seconds >= 0.0, "timing_min_seconds",
-          timing_min_seconds, "a finite number of seconds >= 0");
-  const run_context context{p.source.seed, out.threads_allowed};
-  parallel_reduce_peak_threads() = 0;
+double resolved_timing_min_seconds(const plan& p, const run_options& options) {
+  const double seconds = options.timing_min_seconds.value_or(p.source.budget.timing_min_seconds);
+  require(std::isfinite(seconds) && seconds >= 0.0, "timing_min_seconds", seconds,
+          "a finite number of seconds >= 0");
+  return seconds;
+}
+
+cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t first,
+                              std::uint64_t last, const run_context& context,
+                              double timing_min_seconds,
+                              const std::function<void(const repetition_result&)>& on_done) {
+  require(index < p.cells.size(), "cell index", index,
+          fmt::format("a cell of the plan (it has {})", p.cells.size()));
+  const plan_cell& cell = p.cells[index];
+  require(first <= last && last <= cell.repetitions, "repetition range",
+          fmt::format("[{}, {})", first, last),
+          fmt::format("a range within the cell's {} repetitions", cell.repetitions));
+  const integrand_spec& ispec = p.source.integrands[cell.integrand];
+  const method_spec& mspec = p.source.methods[cell.method];
+  const plan_instance& inst = p.instance_of(cell);
+  const integrand_info& info = inst.function.info();
+  require(p.mean_reference.size() == p.source.integrands.size(), "plan.mean_reference",
+          p.mean_reference.size(), "one reference per integrand (a plan from make_plan)");
+  const double shift = p.mean_reference[cell.integrand] - info.exact;
+  const bool to_tolerance = !std::isnan(cell.tolerance);
+  const cell_size size = cell.size();
+  // The absolute target: a relative tolerance is a fraction of this instance's |I| (the plan
+  // refused I = 0 or a non-finite I for it).
+  const double tolerance =
+      mspec.relative_tolerance ? cell.tolerance * std::abs(info.exact) : cell.tolerance;
+
+  cell_run out;
+  std::vector<repetition_result>& results = out.repetitions;
+  results.reserve(last - first);
+  for (std::uint64_t r = first; r < last; ++r) {
+    const auto& sp = cell.stream_parts;
+    const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
+    // Which cell failed, for every error a repetition can raise: the integrand (and its
+    // instance), the method, N and the repetition; the cause after it names the point.
+    auto where = [&] {
+      std::string name = ispec.name;
+      if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
+      const std::string target =
+          to_tolerance ? fmt::format("tolerance = {}", cell.tolerance)
+                       : fmt::format("N = {} ({} evaluations)", cell.nominal_N, cell.evaluations);
+      return fmt::format("{} × {}, {}, repetition {} of {}", mspec.label, name, target, r + 1,
+                         cell.repetitions);
+    };
+    const auto t0 = clock::now();
+    repetition_result result;
+    try {
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      result = mspec.configured->run(work, context);
+    } catch (const std::exception& e) {
+      throw run_error(fmt::format("{}: {}", where(), e.what()));
+    }
+    result.seconds = seconds_since(t0);
+    try {
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      mspec.configured->measure_points(work, context, result);
+    } catch (const std::exception& e) {
+      throw run_error(fmt::format("{}: {}", where(), e.what()));
+    }
+    // Values that are each finite can still sum to inf (and Neumaier's correction to
+    // inf − inf = NaN); the analysis refuses such an estimate, so it is reported here, where
+    // the cell is known.
+    if (!std::isfinite(result.value)) {
+      throw run_error(
+          fmt::format("{}: the estimate is {}: the sum of its values (f·volume, or "
+                      "f/p for importance sampling) overflowed double",
+                      where(), result.value));
+    }
+    if (!std::isnan(result.std_error) && !std::isfinite(result.std_error)) {
+      throw run_error(
+          fmt::format("{}: the estimate's standard error is {} (the squared "
+                      "deviations of its values overflow double)",
+                      where(), result.std_error));
+    }
+    result.value += shift;
+    results.push_back(result);
+    // Stable timing, apart from the statistics: repetition 1's call again (run.hpp), on the
+    // first instance of an ensemble (cells come in instance order, so it is the first seen).
+    if (r == 0 && cell.instance == 0) {
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      try {
+        out.timing = time_cell([&] { (void)mspec.configured->run(work, context); }, result.seconds,
+                               timing_min_seconds);
+      } catch (const std::exception& e) {
+        throw run_error(fmt::format("{}: {} (while timing)", where(), e.what()));
+      }
+    }
+    if (on_done) on_done(result);
+  }
+  return out;
+}
+
+run_assembly::run_assembly(const plan& p) : plan_(&p) {}
+
+void run_assembly::add(std::size_t index, cell_run run) {
+  std::vector<repetition_result>& repetitions = run.repetitions;
+  const plan& p = *plan_;
+  require(index < p.cells.size(), "cell index", index,
+          fmt::format("a cell of the plan (it has {})", p.cells.size()));
+  require(added_ == 0 || index > last_added_, "cell index", index,
+          fmt::format("a cell after cell {} (cells are filed in plan order)", last_added_));
+  const plan_cell& cell = p.cells[index];
+  require(repetitions.size() == cell.repetitions, "repetitions of the cell", repetitions.size(),
+          fmt::format("the cell's {} repetitions", cell.repetitions));
+  added_ += 1;
+  last_added_ = index;
+  const integrand_spec& ispec = p.source.integrands[cell.integrand];
+  const method_spec& mspec = p.source.methods[cell.method];
+  const plan_instance& inst = p.instance_of(cell);
+  const integrand_info& info = inst.function.info();
 
   // One series per (integrand, method), in order of first appearance (the plan's order).
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> series_index;
-  // For ensembles: Ī per integrand, the mean of its instances' references (make_plan computed
-  // and checked it).
-  const std::vector<double>& mean_reference = p.mean_reference;
-  require(mean_reference.size() == p.source.integrands.size(), "plan.mean_reference",
-          mean_reference.size(), "one reference per integrand (a plan from make_plan)");
+  auto [it, inserted] =
+      series_index_.try_emplace({cell.integrand, cell.method}, output_.series.size());
+  if (inserted) {
+    convergence_series series;
+    series.integrand = ispec.name;
+    series.s = cell.dimension;
+    series.method = mspec.label;
+    series.regularity = info.regularity;
+    series.theory = mspec.configured->theory(
+        integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
+    series.reference = p.mean_reference[cell.integrand];
+    series.relative_tolerance = mspec.relative_tolerance;
+    series.errors = mspec.configured->error_bars();
+    series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};
+    // A prediction is of one instance on fixed grids: not for an ensemble (its cells pool
+    // instances) nor for cells that may stop early.
+    if (ispec.ensemble <= 1 && cell.control == cell_control::fixed_size) {
+      series.prediction = mspec.configured->predict_error(info);
+    }
+    output_.series.push_back(std::move(series));
+  }
+  // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble
+  // revisit the same N ladder: find the series' cell for this N, append only a new N.
+  convergence_series& series = output_.series[it->second];
+  const bool to_tolerance = !std::isnan(cell.tolerance);
+  auto same_n =
+      std::find_if(series.cells.begin(), series.cells.end(), [&](const convergence_cell& c) {
+        return to_tolerance ? c.tolerance == cell.tolerance : c.n == cell.nominal_N;
+      });
+  // An a-priori bound holds for a cell of fixed size; one that may stop early has none.
+  const double envelope = cell.control == cell_control::fixed_size
+                              ? mspec.configured->error_envelope(info, cell.size())
+                              : std::numeric_limits<double>::quiet_NaN();
+  if (same_n == series.cells.end()) {
+    convergence_cell fresh;
+    fresh.n = cell.nominal_N;
+    fresh.tolerance = cell.tolerance;
+    fresh.per_axis = cell.per_axis;
+    fresh.error_envelope = envelope;
+    fresh.timing = run.timing;
+    series.cells.push_back(std::move(fresh));
+    same_n = std::prev(series.cells.end());
+  } else {
+    // Another instance of an ensemble: the cell's errors are the instances', so its bound is
+    // the largest of theirs; NaN (no bound) as soon as one instance has none (std::max keeps a
+    // NaN first argument).
+    same_n->error_envelope =
+        std::isnan(envelope) ? envelope : std::max(same_n->error_envelope, envelope);
+  }
+  same_n->repetitions.insert(same_n->repetitions.end(), repetitions.begin(), repetitions.end());
+}
 
+void run_assembly::skip(plan_skip skipped) {
+  output_.skips.push_back(std::move(skipped));
+}
+
+run_output run_assembly::finish() && {
+  return std::move(output_);
+}
+
+run_output run_plan(const plan& p, const run_options& options) {
+  const auto run_start = clock::now();
+  const unsigned threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
+  const double timing_min_seconds = resolved_timing_min_seconds(p, options);
+  const run_context context{p.source.seed, threads_allowed};
+  parallel_reduce_peak_threads() = 0;
+
+  run_assembly assembly(p);
   run_progress progress;
   progress.cells_total = p.cells.size();
   progress.evaluations_total = p.total_evaluations;
   const std::optional<double> max_seconds = p.source.budget.max_seconds;
 
-  for (const plan_cell& cell : p.cells) {
-    const integrand_spec& ispec = p.source.integrands[cell.integrand];
-    const method_spec& mspec = p.source.methods[cell.method];
-    const double elapsed = std::chrono::duration<double>(clock::now() - run_start).count();
+  for (std::size_t index = 0; index < p.cells.size(); ++index) {
+    const plan_cell& cell = p.cells[index];
+    const double elapsed = seconds_since(run_start);
     if (max_seconds && elapsed > *max_seconds) {
-      out.skips.push_back(
-          plan_skip{fmt::format("{} × {}, N = {}", mspec.label, ispec.name, cell.nominal_N),
-                    fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)", *max_seconds,
-                                elapsed)});
+      assembly.skip(plan_skip{fmt::format("{} × {}, N = {}", p.source.methods[cell.method].label,
+                                          p.source.integrands[cell.integrand].name, cell.nominal_N),
+                              fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)",
+                                          *max_seconds, elapsed)});
       continue;
     }
-    const plan_instance& inst = p.instance_of(cell);
-    const integrand_info& info = inst.function.info();
-    const double shift = mean_reference[cell.integrand] - info.exact;
-
-    auto [it, inserted] =
-        series_index.try_emplace({cell.integrand, cell.method}, out.series.size());
-    if (inserted) {
-      convergence_series series;
-      series.integrand = ispec.name;
-      series.s = cell.dimension;
-      series.method = mspec.label;
-      series.regularity = info.regularity;
-      series.theory = mspec.configured->theory(
-          integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
-      series.reference = mean_reference[cell.integrand];
-      series.relative_tolerance = mspec.relative_tolerance;
-      series.errors = mspec.configured->error_bars();
-      series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};
-      // A prediction is of one instance on fixed grids: not for an ensemble (its cells pool
-      // instances) nor for cells that may stop early.
-      if (ispec.ensemble <= 1 && cell.control == cell_control::fixed_size) {
-        series.prediction = mspec.configured->predict_error(info);
-      }
-      out.series.push_back(std::move(series));
-    }
-    // Cells come in (integrand, instance, method, N) order, so the instances of an ensemble
-    // revisit the same N ladder: find the series' cell for this N, append only a new N.
-    convergence_series& series = out.series[it->second];
-    const bool to_tolerance = !std::isnan(cell.tolerance);
-    auto same_n =
-        std::find_if(series.cells.begin(), series.cells.end(), [&](const convergence_cell& c) {
-          return to_tolerance ? c.tolerance == cell.tolerance : c.n == cell.nominal_N;
-        });
-    const cell_size size = cell.size();
-    // An a-priori bound holds for a cell of fixed size; one that may stop early has none.
-    const double envelope = cell.control == cell_control::fixed_size
-                                ? mspec.configured->error_envelope(info, size)
-                                : std::numeric_limits<double>::quiet_NaN();
-    const bool first_instance = same_n == series.cells.end();
-    if (first_instance) {
-      convergence_cell fresh;
-      fresh.n = cell.nominal_N;
-      fresh.tolerance = cell.tolerance;
-      fresh.per_axis = cell.per_axis;
-      fresh.error_envelope = envelope;
-      series.cells.push_back(std::move(fresh));
-      same_n = std::prev(series.cells.end());
-    } else {
-      // Another instance of an ensemble: the cell's errors are the instances', so its bound is
-      // the largest of theirs; NaN (no bound) as soon as one instance has none (std::max keeps a
-      // NaN first argument).
-      same_n->error_envelope =
-          std::isnan(envelope) ? envelope : std::max(same_n->error_envelope, envelope);
-    }
-    convergence_cell& target = *same_n;
-
-    // The absolute target: a relative tolerance is a fraction of this instance's |I| (the plan
-    // refused I = 0 or a non-finite I for it).
-    const double tolerance =
-        mspec.relative_tolerance ? cell.tolerance * std::abs(info.exact) : cell.tolerance;
-    for (std::uint64_t r = 0; r < cell.repetitions; ++r) {
-      const auto& sp = cell.stream_parts;
-      const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
-      // Which cell failed, for every error a repetition can raise: the integrand (and its
-      // instance), the method, N and the repetition; the cause after it names the point.
-      auto where = [&] {
-        std::string name = ispec.name;
-        if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
-        const std::string target =
-            to_tolerance ? fmt::format("tolerance = {}", cell.tolerance)
-                         : fmt::format("N = {} ({} evaluations)", cell.nominal_N, cell.evaluations);
-        return fmt::format("{} × {}, {}, repetition {} of {}", mspec.label, name, target, r + 1,
-                           cell.repetitions);
-      };
-      const auto t0 = clock::now();
-      repetition_result result;
-      try {
-        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
-        result = mspec.configured->run(work, context);
-      } catch (const std::exception& e) {
-        throw run_error(fmt::format("{}: {}", where(), e.what()));
-      }
-      result.seconds = std::chrono::duration<double>(clock::now() - t0).count();
-      try {
-        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
-        mspec.configured->measure_points(work, context, result);
-      } catch (const std::exception& e) {
-        throw run_error(fmt::format("{}: {}", where(), e.what()));
-      }
-      // Values that are each finite can still sum to inf (and Neumaier's correction to
-      // inf − inf = NaN); the analysis refuses such an estimate, so it is reported here, where
-      // the cell is known.
-      if (!std::isfinite(result.value)) {
-        throw run_error(
-            fmt::format("{}: the estimate is {}: the sum of its values (f·volume, or "
-                        "f/p for importance sampling) overflowed double",
-                        where(), result.value));
-      }
-      if (!std::isnan(result.std_error) && !std::isfinite(result.std_error)) {
-        throw run_error(
-            fmt::format("{}: the estimate's standard error is {} (the squared "
-                        "deviations of its values overflow double)",
-                        where(), result.std_error));
-      }
-      result.value += shift;
-      target.repetitions.push_back(result);
-      if (r == 0 && first_instance) {
-        // Stable timing, apart from the statistics: repetition 1's call again (run.hpp).
-        const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
-        try {
-          target.timing = time_cell([&] { (void)mspec.configured->run(work, context); },
-                                    result.seconds, timing_min_seconds);
-        } catch (const std::exception& e) {
-          throw run_error(fmt::format("{}: {} (while timing)", where(), e.what()));
-        }
-      }
-      // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
+    std::uint64_t done = 0;
+    // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
+    auto on_done = [&](const repetition_result& result) {
       progress.evaluations_done += result.evaluations;
-      if (options.on_progress && r + 1 < cell.repetitions) options.on_progress(progress);
-    }
+      if (options.on_progress && ++done < cell.repetitions) options.on_progress(progress);
+    };
+    assembly.add(index, run_cell_repetitions(p, index, 0, cell.repetitions, context,
+                                             timing_min_seconds, on_done));
     ++progress.cells_done;
     if (options.on_progress) options.on_progress(progress);
   }
-  out.seconds = std::chrono::duration<double>(clock::now() - run_start).count();
+  run_output out = std::move(assembly).finish();
+  out.threads_allowed = threads_allowed;
+  out.seconds = seconds_since(run_start);
   // A rule evaluated inline (one chunk, or a path without parallel_reduce) used this thread.
   out.threads = std::max(1u, parallel_reduce_peak_threads());
   return out;

@@ -173,6 +173,11 @@ class sample_statistics {
   double triple_[3] = {0.0, 0.0, 0.0};
 };
 
+// sample_mean's chunks return their statistics and write nothing else (batch_values writes only
+// its own y), so a cell split across processes may share them (core/chunk_exchange.hpp).
+template <>
+inline constexpr bool shareable_chunk_result<sample_statistics> = true;
+
 // Mean of Y over `points`. batch_values(first, u, y) receives a batch of points u (row-major,
 // y.size() points starting at index `first`) and writes Y for each into y; it may overwrite u
 // (e.g. map it to a box in place). It must be safe to call concurrently (it is called from several

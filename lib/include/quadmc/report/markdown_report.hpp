@@ -25,6 +25,7 @@ struct run_info {
   std::uint64_t seed = 0;
   unsigned threads = 0;              // threads the run really used (run_output::threads)
   unsigned threads_allowed = 0;      // the limit it had; 0 or equal to threads: not repeated
+  unsigned ranks = 1;                // processes of a distributed (MPI) run, each on `threads`
   std::string machine;               // e.g. "x86_64, 2 cores"
   provenance build;                  // version, commit, compiler, SIMD levels (also meta.csv)
   double run_seconds = 0.0;          // wall time of the whole run

@@ -90,6 +90,19 @@ struct long_double_accumulator {
   double value() const noexcept { return static_cast<double>(sum); }
 };
 
+}  // namespace detail
+
+// A chunk of the kernel below returns its whole sum and writes nothing else, so a cell split
+// across processes may share these chunk results (core/chunk_exchange.hpp).
+template <>
+inline constexpr bool shareable_chunk_result<detail::pairwise_accumulator> = true;
+template <>
+inline constexpr bool shareable_chunk_result<detail::neumaier_accumulator> = true;
+template <>
+inline constexpr bool shareable_chunk_result<detail::long_double_accumulator> = true;
+
+namespace detail {
+
 // One double carried through every term in index order: the kernel runs its chunks serially and
 // hands each chunk the running sum, so this is exactly Σ left to right, never re-associated.
 struct naive_accumulator {
@@ -113,9 +126,19 @@ integrand_info checked_integrand_info(const F& f) {
   return info;
 }
 
+// A weighted point set that also writes elsewhere while it generates (the Smolyak method tallies
+// Σ|w| per chunk, methods/sparse_grids.cpp) says so with `static constexpr bool
+// writes_on_the_side = true`: a chunk's sum is then not all that the chunk computes, so a cell
+// split across processes runs its chunks on every process (core/chunk_exchange.hpp).
+template <class P>
+concept writes_on_the_side = requires {
+  requires P::writes_on_the_side;
+};
+
 // The kernel proper, on a checked integrand and a set of its dimension: generate(first, x, w)
-// writes a batch of box coordinates and weights.
-template <integrand F, class Generate>
+// writes a batch of box coordinates and weights. ShareChunks: whether a chunk's sum is all it
+// computes (see writes_on_the_side).
+template <bool ShareChunks, integrand F, class Generate>
 rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std::uint64_t total,
                                     const Generate& generate, unsigned threads,
                                     summation accumulate) {
@@ -141,9 +164,19 @@ rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std:
   };
 
   auto reduce = [&]<class Accumulator>(Accumulator init) {
-    return parallel_reduce(
-        layout.chunks(), threads, init, [&](std::size_t c) { return chunk_sum(c, Accumulator{}); },
-        [](Accumulator& acc, const Accumulator& part) { acc.merge(part); });
+    if constexpr (ShareChunks) {
+      return parallel_reduce(
+          layout.chunks(), threads, init,
+          [&](std::size_t c) { return chunk_sum(c, Accumulator{}); },
+          [](Accumulator& acc, const Accumulator& part) { acc.merge(part); });
+    } else {
+      using local = process_local<Accumulator>;
+      return parallel_reduce(
+                 layout.chunks(), threads, local{init},
+                 [&](std::size_t c) { return local{chunk_sum(c, Accumulator{})}; },
+                 [](local& acc, const local& part) { acc.value.merge(part.value); })
+          .value;
+    }
   };
 
   double sum = 0.0;
@@ -184,14 +217,14 @@ rule_result checked_weighted_sum(const F& f, const integrand_info& info, const P
   const cube_to_box map(info.domain);
   if constexpr (box_mapped_point_set<P>) {
     const auto on_box = points.mapped(map);
-    return weighted_sum_of_batches(
+    return weighted_sum_of_batches<!writes_on_the_side<P>>(
         f, info, total,
         [&on_box](std::uint64_t first, std::span<double> x, std::span<double> w) {
           on_box.generate(first, x, w);
         },
         threads, accumulate);
   } else {
-    return weighted_sum_of_batches(
+    return weighted_sum_of_batches<!writes_on_the_side<P>>(
         f, info, total,
         [&points, &map](std::uint64_t first, std::span<double> x, std::span<double> w) {
           points.generate(first, x, w);

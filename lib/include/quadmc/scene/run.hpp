@@ -19,9 +19,12 @@
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/methods/method.hpp"
 #include "quadmc/scene/plan.hpp"
 
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,5 +71,47 @@ struct run_output {
 };
 
 run_output run_plan(const plan& p, const run_options& options = {});
+
+// The two halves of run_plan, for a run whose cells do not all run on this process (the MPI
+// runner of the quadmc command): a repetition's result is a pure function of (plan, cell,
+// repetition, seed), so cells may run anywhere, in any order, and filed here in plan order give
+// the series a one-process run gives.
+//
+// One cell's repetitions, and its stable timing where it was timed.
+struct cell_run {
+  std::vector<repetition_result> repetitions;
+  cell_timing timing;  // untimed (estimates = 0) unless repetition 1 of instance 1 ran here
+};
+
+// The minimum of stable timing for a run: options' if given, else the scene's; checked.
+double resolved_timing_min_seconds(const plan& p, const run_options& options);
+
+// Runs repetitions [first, last) of cell `index` (the estimate shifted to the series' reference,
+// checked finite); a failure throws run_error naming the cell and repetition. Repetition 1 of
+// an ensemble's first instance (of every cell outside ensembles) is then timed as above, to
+// timing_min_seconds (0: timed once, by its own call). on_done, if set, is called after each
+// repetition.
+cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t first,
+                              std::uint64_t last, const run_context& context,
+                              double timing_min_seconds,
+                              const std::function<void(const repetition_result&)>& on_done = {});
+
+// Files whole cells into series, in plan order (an index lower than the last one added, or a
+// cell without all its repetitions, is refused).
+class run_assembly {
+ public:
+  explicit run_assembly(const plan& p);
+  void add(std::size_t index, cell_run run);
+  void skip(plan_skip skipped);
+  // The series and skips; seconds and threads are the caller's to fill in.
+  run_output finish() &&;
+
+ private:
+  const plan* plan_;
+  run_output output_;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> series_index_;
+  std::size_t added_ = 0;
+  std::size_t last_added_ = 0;
+};
 
 }  // namespace quadmc
