@@ -92,9 +92,8 @@ def main(folder):
     if "light_area" in estimators:
         shown += [("light_area", s) for s in sets if s != first_set and s in ("jittered", "sobol")]
     errs = [images["{}/{}/{}".format(e, s, spp)] - exact for e, s in shown]
-    lim = symmetric_limit(errs)
     cols = len(shown) + 1
-    fig, axes = plt.subplots(2, cols, figsize=(2.6 * cols, 5.6), squeeze=False)
+    fig, axes = plt.subplots(2, cols, figsize=(2.6 * cols, 5.9), squeeze=False)
     show(axes[0][0], exact, extent, cmap="inferno", vmin=0, vmax=vmax)
     axes[0][0].set_title("exact", fontsize=9)
     show(axes[1][0], vis, extent, cmap=cmap, vmin=-0.5, vmax=2.5)
@@ -105,11 +104,16 @@ def main(folder):
         show(axes[0][j], images["{}/{}/{}".format(e, s, spp)], extent, cmap="inferno", vmin=0,
              vmax=vmax)
         axes[0][j].set_title("{}\n{}, {} spp".format(e, s, spp), fontsize=9)
-        im = show(axes[1][j], err, extent, cmap="RdBu_r", vmin=-lim, vmax=lim)
+        # Each error on its own symmetric scale, ±3 RMSE, stated under it: on one common scale
+        # the light-area errors would be invisible beside the hemisphere ones.
+        lim = 3.0 * rmse[(e, s, spp)] or 1.0
+        show(axes[1][j], err, extent, cmap="RdBu_r", vmin=-lim, vmax=lim)
         axes[1][j].set_title("error, RMSE {:.3g}".format(rmse[(e, s, spp)]), fontsize=9)
-    fig.colorbar(im, ax=list(axes[1]), fraction=0.02, pad=0.01, label="estimate − exact")
-    fig.savefig(os.path.join(folder, "comparison.png"), dpi=80, bbox_inches="tight",
-                metadata=META)
+        axes[1][j].set_xlabel("colour scale ±{:.2g}".format(lim), fontsize=8)
+    fig.suptitle("estimates (top) and estimate − exact (bottom; blue below, red above)",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(folder, "comparison.png"), dpi=80, metadata=META)
     plt.close(fig)
 
     # errors_<estimator>.png: rows point sets, columns spp, one symmetric scale per column.
