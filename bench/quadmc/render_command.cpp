@@ -587,8 +587,9 @@ void run_render(const render_request& request, const std::function<void(std::str
        "for a stratified set (docs/theory.md#irradiance-images).\n"
        "- **Slopes**: independent points give −1/2 exactly in expectation (each pixel is a mean of "
        "spp independent samples); stratified sets are steeper where the integrand is smooth "
-       "(light_area in full light) and about −3/4 for a visibility edge in 2D "
-       "(docs/theory.md#jittered).\n";
+       "(light_area in full light: −1 for jittered points) and −3/4 across a visibility edge in "
+       "2D; an image mixes these regions, and its ladder starts at 1 spp where every set is one "
+       "random point, so its fitted slope lies between them (docs/theory.md#irradiance-images).\n";
   if (sc.light_sampling) {
     t += fmt::format("\n## Light sampling: 1 × {0} against {0} × 1\n\n", sc.light_samples);
     t += fmt::format(
