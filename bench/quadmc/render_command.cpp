@@ -614,11 +614,14 @@ void run_render(const render_request& request, const std::function<void(std::str
                        fixed(stats[k].rmse_by_visibility[1]), fixed(stats[k].mean_error, 2),
                        stats[k].neighbour_correlation);
     }
-    t += "\nSame RMSE, different pictures: with one light pattern for every pixel the error is "
-         "one smooth function of the position, so the penumbra shows the pattern's copies of the "
-         "occluder's outline as bands that no amount of viewing averages out; decorrelated, the "
-         "same error is noise. That is why a sampler shuffles: the error budget is the same, "
-         "but its structure is gone ([Pharr et al. 2016, §7.3]).\n";
+    t += "\nCorrelated or not, the RMSE is of the same order; what changes is its structure. With "
+         "one light pattern for every pixel the error is one smooth function of the position: "
+         "the penumbra shows the pattern's copies of the occluder's outline as bands, neighbouring "
+         "errors are nearly equal, and the pattern's own error is a mean error shared by the "
+         "whole image that no averaging over pixels removes. Decorrelated, the error is noise "
+         "(neighbour correlation ≈ 0, mean ≈ 0). That is why a sampler shuffles: the error is "
+         "not smaller, but it has no structure for the eye to find "
+         "([Pharr et al. 2016, §7.3]; docs/theory.md#irradiance-images).\n";
     if (sc.images) {
       t += "\n![Light sampling: correlated against decorrelated, 1 × L against L × "
            "1](light_sampling.png)\n";

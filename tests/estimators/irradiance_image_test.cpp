@@ -223,8 +223,8 @@ TEST(IrradianceImage, IndependentPointsGiveSlopeMinusOneHalf) {
     const double se_slope = std::sqrt(var);
     EXPECT_NEAR(slope, -0.5, 0.05) << "technique " << static_cast<int>(t);
     EXPECT_LE(3.9 * se_slope, 0.05) << "the tolerance is under 3.9 standard errors";
-    std::cout << "[ measured ] technique " << static_cast<int>(t) << ": slope " << slope
-              << " ± " << se_slope << " (one standard error)\n";
+    std::cout << "[ measured ] technique " << static_cast<int>(t) << ": slope " << slope << " ± "
+              << se_slope << " (one standard error)\n";
   }
 }
 
