@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace quadmc_cli_test {
@@ -119,6 +120,26 @@ TEST_F(RenderCommand, SameBytesOnOneAndThreeThreadsAndReplacesItsOwnFolder) {
       run_quadmc(*dir_, {"render", "small.toml", "--out", "r1", "--threads", "1", "--seed", "6"});
   ASSERT_EQ(replaced.exit_status, 0) << describe(replaced);
   EXPECT_NE(read_text(*dir_ / "r1" / "rmse.csv"), read_text(*dir_ / "r" / "rmse.csv"));
+}
+
+// bench/scenes/render.toml (which tests/scene/plan_test.cpp leaves to this test) runs, at 8 × 8
+// pixels and without pictures so that it is quick: every other key is the bundled scene's.
+TEST(RenderCommandWithoutImages, BundledSceneRuns) {
+  scratch_folder dir;
+  std::string text = read_text(fs::path(QUADMC_SOURCE_DIR) / "bench" / "scenes" / "render.toml");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"width = 256", "width = 8"},
+                                 {"height = 256", "height = 8"},
+                                 {"images = true", "images = false"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  write_text(dir / "render.toml", text);
+  const command_result r = run_quadmc(dir, {"render", "render.toml"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_NE(r.out.find("3 estimators × 5 point sets × spp 1, 4, 16, 64 = 60 images"),
+            std::string::npos)
+      << r.out;
+  EXPECT_TRUE(fs::exists(dir / "results" / "render" / "light_sampling.csv"));
 }
 
 TEST(RenderCommandWithoutImages, WritesTheTablesOnly) {
