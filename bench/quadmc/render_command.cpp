@@ -655,12 +655,15 @@ void run_render(const render_request& request, const std::function<void(std::str
               "correlation", "offset", "width", "height", "x_min", "y_min", "x_max", "y_max"});
     const std::string x_min = number(plane.region[0]), y_min = number(plane.region[1]),
                       x_max = number(plane.region[2]), y_max = number(plane.region[3]);
-    std::vector<double> all;
-    all.reserve((images.size() + 1) * plane.pixels());
+    // Written image by image (never a second copy of every image in memory).
+    std::uint64_t offset = 0;
     index +=
         line({"visibility", "visibility", "", "", "", "", "", "", "0", std::to_string(plane.width),
               std::to_string(plane.height), x_min, y_min, x_max, y_max});
-    for (const auto v : vis) all.push_back(static_cast<double>(v));
+    std::vector<double> visibility(vis.size());
+    std::transform(vis.begin(), vis.end(), visibility.begin(),
+                   [](quadmc::light_visibility v) { return static_cast<double>(v); });
+    offset += visibility.size();
     for (const image& im : images) {
       const std::string kind = im.kind == image_kind::exact        ? "exact"
                                : im.kind == image_kind::exact_mean ? "exact_mean"
@@ -674,17 +677,24 @@ void run_render(const render_request& request, const std::function<void(std::str
                      im.kind == image_kind::light_sampling
                          ? std::string(quadmc::to_string(im.correlation))
                          : "",
-                     std::to_string(all.size()), std::to_string(plane.width),
+                     std::to_string(offset), std::to_string(plane.width),
                      std::to_string(plane.height), x_min, y_min, x_max, y_max});
-      all.insert(all.end(), im.pixels.begin(), im.pixels.end());
+      offset += im.pixels.size();
     }
     static_assert(std::endian::native == std::endian::little, "render.py reads little-endian");
     {
       const auto held = interruption::hold();
       write_file(dir / std::string(index_file), index);
-      write_file(
-          dir / std::string(pixels_file),
-          std::string_view(reinterpret_cast<const char*>(all.data()), all.size() * sizeof(double)));
+      const fs::path file = dir / std::string(pixels_file);
+      std::ofstream out(file, std::ios::binary | std::ios::trunc);
+      auto put = [&out](const std::vector<double>& x) {
+        out.write(reinterpret_cast<const char*>(x.data()),
+                  static_cast<std::streamsize>(x.size() * sizeof(double)));
+      };
+      put(visibility);
+      for (const image& im : images) put(im.pixels);
+      out.close();
+      if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
     }
     run_subprocess(quadmc::plot_command_line(render_script_path(), dir));
     fs::remove(dir / std::string(pixels_file));
