@@ -138,7 +138,7 @@ def main(folder):
     slopes = {(r["estimator"], r["point_set"]): r for r in read(folder, "slopes.csv")}
     styles = {"uniform_hemisphere": ":", "cosine_hemisphere": "--", "light_area": "-"}
     markers = {"uniform_hemisphere": "v", "cosine_hemisphere": "s", "light_area": "o"}
-    fig, ax = plt.subplots(figsize=(8.5, 5.5))
+    fig, ax = plt.subplots(figsize=(8.5, 5.0))
     for e in estimators:
         for k, s in enumerate(sets):
             ys = [rmse[(e, s, n)] for n in spps]
@@ -156,9 +156,10 @@ def main(folder):
     ax.set_xlabel("samples per pixel")
     ax.set_ylabel("image RMSE")
     ax.set_title("Image RMSE against spp (fitted slope in the legend)")
-    ax.legend(fontsize=7, ncol=3, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(os.path.join(folder, "rmse.png"), dpi=90, metadata=META)
+    ax.grid(True, which="major", lw=0.3, color="0.85")
+    # Below the axes: inside, the legend would hide the steepest lines at large spp.
+    ax.legend(fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.12))
+    fig.savefig(os.path.join(folder, "rmse.png"), dpi=90, bbox_inches="tight", metadata=META)
     plt.close(fig)
 
     # light_sampling.png
