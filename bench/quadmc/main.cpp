@@ -1,6 +1,6 @@
 // The `quadmc` command: run a scene, print its plan, list what scenes may name, compare two
 // result folders, write a point set's points (points_command.hpp), draw the point-set gallery
-// (gallery_command.hpp).
+// (gallery_command.hpp), render the plane under the area light (render_command.hpp).
 //
 // Exit status (also in `quadmc --help`):
 //   0        success; for `compare`, no slope regression
@@ -42,6 +42,7 @@
 #include "plot_script.hpp"
 #include "points_command.hpp"
 #include "progress_bar.hpp"
+#include "render_command.hpp"
 #include "results_staging.hpp"
 #include "subprocess.hpp"
 #include "version.hpp"
@@ -402,6 +403,9 @@ int main(int argc, char** argv) {
   quadmc_cli::gallery_request gallery_request;
   auto* gallery = quadmc_cli::add_gallery_subcommand(app, gallery_request);
 
+  quadmc_cli::render_request render_request;
+  auto* render = quadmc_cli::add_render_subcommand(app, render_request);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForVersion&) {
@@ -444,6 +448,11 @@ int main(int argc, char** argv) {
       quadmc_cli::run_gallery(gallery_request, [&out](std::string_view text) { out.print(text); });
       if (out.failed())
         throw std::runtime_error(out.message() + "; the gallery itself was written");
+      return 0;
+    }
+    if (*render) {
+      quadmc_cli::run_render(render_request, [&out](std::string_view text) { out.print(text); });
+      if (out.failed()) throw std::runtime_error(out.message() + "; the render itself was written");
       return 0;
     }
   } catch (const std::exception& e) {

@@ -31,6 +31,10 @@ fs::path gallery_script_path() {
   return plot_script_path().parent_path() / "gallery.py";
 }
 
+fs::path render_script_path() {
+  return plot_script_path().parent_path() / "render.py";
+}
+
 void check_plotting(const fs::path& script, std::string_view remedy) {
   const std::string python = quadmc::plot_command_line(script, "").front();
   std::error_code ec;

@@ -23,6 +23,9 @@ std::filesystem::path plot_script_path();
 // rule.
 std::filesystem::path gallery_script_path();
 
+// bench/render.py, the script that draws `quadmc render`'s PNGs: beside plot.py, by the same rule.
+std::filesystem::path render_script_path();
+
 // Checks before any computation that `script` exists and that Debian's python3 can import
 // matplotlib: a missing plotting stack found after the run would throw away the whole
 // computation. `remedy` ends the message ("or set plots = false in [output]"). Throws

@@ -53,7 +53,8 @@ TEST(InstalledLayoutTest, InstalledCommandUsesItsInstalledPlotScript) {
   const fs::path libdir = prefix / QUADMC_INSTALL_LIBDIR;
   for (const fs::path& file :
        {prefix / "bin" / "quadmc", prefix / "share" / "quadmc" / "plot.py",
-        prefix / "share" / "quadmc" / "gallery.py",
+        prefix / "share" / "quadmc" / "gallery.py", prefix / "share" / "quadmc" / "render.py",
+        prefix / "share" / "quadmc" / "scenes" / "render.toml",
         prefix / "share" / "quadmc" / "scenes" / "default.toml",
         prefix / "share" / "doc" / "quadmc" / "copyright",
         prefix / "share" / "doc" / "quadmc" / "CHANGELOG.md",

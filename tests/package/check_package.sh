@@ -120,6 +120,8 @@ expected_files=(
   usr/bin/quadmc
   usr/share/quadmc/plot.py
   usr/share/quadmc/gallery.py
+  usr/share/quadmc/render.py
+  usr/share/quadmc/scenes/render.toml
   usr/share/quadmc/scenes/default.toml
   usr/share/quadmc/scenes/minimal.toml
   usr/share/doc/quadmc/copyright

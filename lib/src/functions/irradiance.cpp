@@ -28,17 +28,27 @@ std::array<vec3, 4> corners(const rectangle& r) {
   return {r.corner, r.corner + r.edge_u, r.corner + r.edge_u + r.edge_v, r.corner + r.edge_v};
 }
 
+// require() with the value's text formatted only when the check fails: validate() runs once per
+// exact value, and an image asks for one per pixel (estimators/irradiance_image.hpp).
+template <class Describe>
+void check(bool ok, std::string_view parameter, Describe&& describe, std::string_view expected) {
+  if (!ok) require(false, parameter, describe(), expected);
+}
+
 void validate_rectangle(const rectangle& r, std::string_view name) {
-  require(finite(r.corner) && finite(r.edge_u) && finite(r.edge_v), name, text(r),
-          "finite corner and edges");
+  check(
+      finite(r.corner) && finite(r.edge_u) && finite(r.edge_v), name, [&] { return text(r); },
+      "finite corner and edges");
   const double lu = length(r.edge_u);
   const double lv = length(r.edge_v);
   // A relative test: a rectangle's area is |u||v|; anything far below that is a sliver.
-  require(lu > 0.0 && lv > 0.0 && r.area() > 1e-12 * lu * lv, name, text(r),
-          "a non-degenerate rectangle (non-zero, non-parallel edges)");
+  check(
+      lu > 0.0 && lv > 0.0 && r.area() > 1e-12 * lu * lv, name, [&] { return text(r); },
+      "a non-degenerate rectangle (non-zero, non-parallel edges)");
   // The (s, t) parameters use the dual basis edge/|edge|², exact only for perpendicular edges.
-  require(std::abs(dot(r.edge_u, r.edge_v)) <= 1e-9 * lu * lv, name, text(r),
-          "perpendicular edges (|edge_u · edge_v| ≤ 1e-9·|edge_u|·|edge_v|)");
+  check(
+      std::abs(dot(r.edge_u, r.edge_v)) <= 1e-9 * lu * lv, name, [&] { return text(r); },
+      "perpendicular edges (|edge_u · edge_v| ≤ 1e-9·|edge_u|·|edge_v|)");
 }
 
 }  // namespace
@@ -46,19 +56,23 @@ void validate_rectangle(const rectangle& r, std::string_view name) {
 void validate(const irradiance_setup& setup) {
   require(std::isfinite(setup.radiance) && setup.radiance > 0.0, "radiance", setup.radiance,
           "a finite radiance > 0");
-  require(finite(setup.x), "x", text(setup.x), "a finite point");
-  require(finite(setup.n) && std::abs(length(setup.n) - 1.0) <= 1e-9, "n", text(setup.n),
-          "a unit normal (|‖n‖ − 1| ≤ 1e-9)");
+  check(
+      finite(setup.x), "x", [&] { return text(setup.x); }, "a finite point");
+  check(
+      finite(setup.n) && std::abs(length(setup.n) - 1.0) <= 1e-9, "n",
+      [&] { return text(setup.n); }, "a unit normal (|‖n‖ − 1| ≤ 1e-9)");
   validate_rectangle(setup.light, "light");
   const vec3 normal = setup.light.normal();
   const double d_x = dot(normal, setup.x - setup.light.corner);
-  require(d_x > 0.0, "light", text(setup.light),
-          "a light facing x: normalize(edge_u × edge_v) · (x − corner) > 0");
+  check(
+      d_x > 0.0, "light", [&] { return text(setup.light); },
+      "a light facing x: normalize(edge_u × edge_v) · (x − corner) > 0");
   for (const vec3& c : corners(setup.light)) {
     // Lambert's formula integrates cosθ over the whole polygon; a light crossing the horizon of
     // x would need the polygon clipped at the tangent plane first.
-    require(dot(setup.n, c - setup.x) > 0.0, "light", text(setup.light),
-            "all four corners strictly above the tangent plane of x (n · (corner − x) > 0)");
+    check(
+        dot(setup.n, c - setup.x) > 0.0, "light", [&] { return text(setup.light); },
+        "all four corners strictly above the tangent plane of x (n · (corner − x) > 0)");
   }
   if (setup.occluder) {
     validate_rectangle(*setup.occluder, "occluder");
@@ -66,8 +80,9 @@ void validate(const irradiance_setup& setup) {
       // Strictly between: the central projection from x then maps the occluder onto a convex
       // polygon of the light's plane (no vertex at or beyond the vanishing line).
       const double d = dot(normal, c - setup.light.corner);
-      require(d > 0.0 && d < d_x, "occluder", text(*setup.occluder),
-              "all four corners strictly between x and the light's plane");
+      check(
+          d > 0.0 && d < d_x, "occluder", [&] { return text(*setup.occluder); },
+          "all four corners strictly between x and the light's plane");
     }
   }
 }

@@ -770,6 +770,10 @@ scene parse_scene(std::string_view toml_text, std::string_view file_name) {
 }
 
 scene parse_scene_file(const std::filesystem::path& path) {
+  return parse_scene(read_scene_file(path), path.string());
+}
+
+std::string read_scene_file(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   const std::string name = path.string();
   auto fail = [&](std::string_view message) -> scene_error {
@@ -804,7 +808,7 @@ scene parse_scene_file(const std::filesystem::path& path) {
     throw fail(fmt::format("the scene file is larger than {} bytes (1 MiB), the limit",
                            scene_limits::max_file_bytes));
   }
-  return parse_scene(text, name);
+  return text;
 }
 
 }  // namespace quadmc

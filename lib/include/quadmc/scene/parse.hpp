@@ -123,6 +123,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace quadmc {
@@ -157,5 +158,10 @@ scene parse_scene(std::string_view toml_text, std::string_view file_name);
 
 // Reads and parses `path`; a file that cannot be read is a scene_error at line 0.
 scene parse_scene_file(const std::filesystem::path& path);
+
+// The text of a scene file, read within the limits above (a regular file or a pipe, at most
+// 1 MiB); anything else is a scene_error at line 0. For other TOML files of the command that
+// follow the same rules (the render scenes of `quadmc render`).
+std::string read_scene_file(const std::filesystem::path& path);
 
 }  // namespace quadmc
