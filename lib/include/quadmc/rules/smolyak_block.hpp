@@ -9,12 +9,13 @@
 //  - T_l[i], the weight of node i in the d-dimensional grid of level l [Gerstner & Griebel 1998],
 //    for i < count(l): with b its birth levels (|b|₁ = t ≤ l) and δ_c[m] = w(b_c + m) − w(b_c +
 //    m − 1) the differences of its c-th id on the by-level tables (w(b − 1) = 0), T_(t+v) is the
-//    sum of the coefficients of degree ≤ v of Π_c Σ_m δ_c[m]·z^m (docs/theory.md#smolyak-
-//    construction). Formed in long double — each coefficient summed from zero in ascending m, the
-//    partial sums in ascending v — and rounded to double once, so a T is within about one ulp of
-//    the exact sum on the tables' weights (tests/rules/smolyak_grid_test.cpp rebuilds it in this
-//    order, bit for bit). T_l of a grid of lower level is the same prefix, the same bits: a
-//    grid's weights do not depend on how far the table was built.
+//    sum of the coefficients of degree ≤ v of Π_c Σ_m δ_c[m]·z^m
+//    (docs/theory.md#smolyak-construction). Formed in long double — each coefficient summed from
+//    zero in ascending m, the partial sums in ascending v — and rounded to double once, so a T is
+//    within about one ulp of the exact sum on the tables' weights
+//    (tests/rules/smolyak_grid_test.cpp rebuilds it in this order, bit for bit). T_l of a grid of
+//    lower level is the same prefix, the same bits: a grid's weights do not depend on how far the
+//    table was built.
 // Use it through smolyak_grid; not a rule of its own (a grid of s = d axes is smolyak_grid's).
 //
 // Memory: count(level()) ≤ block_nodes_cap = 16384 nodes, d coordinates each, and Σ_l count(l)
