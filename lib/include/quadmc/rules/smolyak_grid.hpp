@@ -233,6 +233,29 @@ void with_leading_axes(std::size_t m, const F& f) {
   (std::make_index_sequence<max_fixed_axes>{});
 }
 
+// out[q] = a·in[q] (Add = false) or out[q] += a·in[q] (Add = true) for q < n, two lanes at a
+// time by the compilers' vector extension: the same IEEE operations per element, so the same bits
+// as the scalar loop, which GCC's -O2 does not vectorize (a row's weights are such passes).
+template <bool Add>
+inline void scaled_row(double* out, double a, const double* in, std::size_t n) noexcept {
+  using pair = double __attribute__((vector_size(16)));
+  const pair a2 = {a, a};
+  std::size_t q = 0;
+#pragma GCC unroll 2
+  for (; q + 2 <= n; q += 2) {
+    pair x;
+    std::memcpy(&x, in + q, sizeof x);
+    pair y = a2 * x;
+    if constexpr (Add) {
+      pair o;
+      std::memcpy(&o, out + q, sizeof o);
+      y = o + y;
+    }
+    std::memcpy(out + q, &y, sizeof y);
+  }
+  if (q < n) out[q] = Add ? out[q] + a * in[q] : a * in[q];
+}
+
 }  // namespace detail
 
 template <std::size_t D, class Coordinate>
@@ -321,12 +344,10 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
     double* w_out = weights.data() + i;
     double* point = x.data() + i * s;
     const double* block = block_coordinate + k * D;
-    const double p0 = p[0];
-    const double* t0 = table[r] + k;
-    // The first term of each weight and the point, in one pass.
+    detail::scaled_row<false>(w_out, p[0], table[r] + k, run);
+    // The points, after the first term of each weight.
     if constexpr (M == detail::dynamic_axes) {
       for (std::size_t q = 0; q < run; ++q, point += s, block += D) {
-        w_out[q] = p0 * t0[q];
         for (std::size_t j = 0; j < lead; ++j) point[j] = axis_coordinate[j];
         for (std::size_t c = 0; c < D; ++c) point[lead + c] = block[c];
       }
@@ -337,7 +358,6 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
       for (std::size_t j = 0; j < M; ++j) leading[j] = axis_coordinate[j];
 #pragma GCC unroll 4
       for (std::size_t q = 0; q < run; ++q, point += s, block += D) {
-        w_out[q] = p0 * t0[q];
         std::memcpy(point, leading.data(), M * sizeof(double));
         std::memcpy(point + M, block, D * sizeof(double));
       }
@@ -348,9 +368,7 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
       const double pu = p[u];
       if (pu == 0.0) continue;
       const std::size_t n = std::min(size - k, run);
-      const double* t = table[r - u] + k;
-#pragma GCC unroll 4
-      for (std::size_t q = 0; q < n; ++q) w_out[q] += pu * t[q];
+      detail::scaled_row<true>(w_out, pu, table[r - u] + k, n);
     }
   };
   std::size_t k = static_cast<std::size_t>(rest);
