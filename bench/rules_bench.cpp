@@ -103,7 +103,10 @@ void BM_equal_n_simpson(benchmark::State& state) {
 }
 
 // The same with the Clenshaw–Curtis Smolyak grid of the largest level L with at most N nodes
-// (what the smolyak method picks), built inside the timed loop as the method does per run.
+// (what the smolyak method picks), built inside the timed loop as the method does per run (its
+// count table, and the box coordinates of its block once per call; the 1D rule's and the
+// block's tables are the process's, built in the first iteration: nested_rule.hpp,
+// smolyak_block.hpp).
 void BM_equal_n_smolyak(benchmark::State& state) {
   const auto s = static_cast<std::size_t>(state.range(0));
   const auto target = static_cast<std::uint64_t>(state.range(1));

@@ -1,8 +1,9 @@
 // smolyak_grid: the Smolyak sparse grid as a weighted point set — point counts, the weights
 // against the combination technique built independently, exactness for total degree ≤ 2L + 1
 // [Novak & Ritter 1996], thread and batch independence, distinct nodes in the cube, the fast
-// path, the weights bit for bit those of the surplus formula on the by-level tables, and Σ|w|
-// with the rounding floor it implies.
+// path, the weights bit for bit those of the documented block formula on the by-level tables,
+// their agreement with the previous walk's within a derived rounding bound, and Σ|w| with the
+// rounding floor it implies.
 #include "quadmc/rules/smolyak_grid.hpp"
 
 #include "quadmc/rules/weighted_sum.hpp"
@@ -13,10 +14,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <span>
 #include <utility>
 #include <vector>
@@ -229,32 +232,40 @@ TEST(SmolyakGrid, WeightsSumToOne) {
   }
 }
 
-// The weight of the surplus form, w(x) = Σ_{u ≤ R} P[u]·C(R − u) (smolyak_grid.hpp), computed
-// here from the by-level tables alone, in the order the header documents: P_{j+1}[t] =
-// Σ_{m ≤ t} P_j[t − m]·(weight(b + m) − weight(b + m − 1)) for the leading axes, then the last
-// axis. The walk reads the by-node tables and copies coordinates by fixed-length moves; this
-// pins that its weights are this formula bit for bit, in every dimension the copy is specialised
-// for and beyond (s = 17: the loop), and that each node is visited once.
-double surplus_weight(const nested_rule& rule, const std::vector<std::size_t>& id, unsigned L) {
-  const std::size_t s = id.size();
-  std::vector<double> product(L + 1, 0.0);
+// The leading product P = Π_{j<m} A_j truncated to degree ≤ budget (smolyak_grid.hpp), from the
+// by-level tables alone: P_{j+1}[t] = Σ_{k ≤ t} P_j[t − k]·(weight(b + k) − weight(b + k − 1)),
+// summed from zero in ascending k, in double. Returns the budget left for the axes after m.
+unsigned leading_product(const nested_rule& rule, const std::vector<std::size_t>& id, std::size_t m,
+                         unsigned L, std::vector<double>& product) {
+  product.assign(L + 1, 0.0);
   product[0] = 1.0;
   unsigned budget = L;
-  for (std::size_t j = 0; j + 1 < s; ++j) {
+  for (std::size_t j = 0; j < m; ++j) {
     const unsigned b = rule.birth(id[j]);
     const unsigned rest = budget - b;
     std::vector<double> next(L + 1, 0.0);
     for (unsigned t = 0; t <= rest; ++t) {
       double sum = 0.0;
-      for (unsigned m = 0; m <= t; ++m) {
-        const double previous = m > 0 ? rule.weight(b + m - 1, id[j]) : 0.0;
-        sum += product[t - m] * (rule.weight(b + m, id[j]) - previous);
+      for (unsigned k = 0; k <= t; ++k) {
+        const double previous = k > 0 ? rule.weight(b + k - 1, id[j]) : 0.0;
+        sum += product[t - k] * (rule.weight(b + k, id[j]) - previous);
       }
       next[t] = sum;
     }
     product = next;
     budget = rest;
   }
+  return budget;
+}
+
+// The weight of the previous walk, which multiplied out all s axes in double: P over the s − 1
+// leading axes, then w(x) = Σ_{u ≤ R} P[u]·C(R − u), C(t) the last node's weight in U^(b + t).
+// For d = 1 (s ≤ 2) the grid's weights are still these, bit for bit.
+double previous_walk_weight(const nested_rule& rule, const std::vector<std::size_t>& id,
+                            unsigned L) {
+  std::vector<double> product;
+  const std::size_t s = id.size();
+  const unsigned budget = leading_product(rule, id, s - 1, L, product);
   const std::size_t node = id[s - 1];
   const unsigned b = rule.birth(node);
   const unsigned R = budget - b;
@@ -263,42 +274,261 @@ double surplus_weight(const nested_rule& rule, const std::vector<std::size_t>& i
   return w;
 }
 
+// T_l of the block node with ids `block` (smolyak_block.hpp), rebuilt from the by-level tables in
+// the order the header documents: δ_c[k] = w(b_c + k) − w(b_c + k − 1) in long double, the
+// product's coefficients summed from zero in ascending k, the partial sums in ascending v, each
+// rounded once. Returns T_l for l = t … L at [l] (NaN below the node's shell t).
+std::vector<double> block_table_weights(const nested_rule& rule,
+                                        const std::vector<std::size_t>& block, unsigned L) {
+  unsigned t = 0;
+  for (const std::size_t i : block) t += rule.birth(i);
+  const unsigned degree = L - t;
+  std::vector<long double> coefficient(degree + 1, 0.0L), next(degree + 1), delta(degree + 1);
+  coefficient[0] = 1.0L;
+  for (const std::size_t i : block) {
+    const unsigned b = rule.birth(i);
+    for (unsigned k = 0; k <= degree; ++k) {
+      const long double below = k == 0 ? 0.0L : static_cast<long double>(rule.weight(b + k - 1, i));
+      delta[k] = static_cast<long double>(rule.weight(b + k, i)) - below;
+    }
+    for (unsigned v = 0; v <= degree; ++v) {
+      long double sum = 0.0L;
+      for (unsigned k = 0; k <= v; ++k) sum += coefficient[v - k] * delta[k];
+      next[v] = sum;
+    }
+    coefficient = next;
+  }
+  std::vector<double> T(L + 1, std::numeric_limits<double>::quiet_NaN());
+  long double partial = 0.0L;
+  for (unsigned v = 0; v <= degree; ++v) {
+    partial += coefficient[v];
+    T[t + v] = static_cast<double>(partial);
+  }
+  return T;
+}
+
+// The grid's documented weight for a block of the last d axes (smolyak_grid.hpp): w = 0.0 +
+// P[0]·T_r + P[1]·T_(r−1) + …, u ascending, over the u with T_(r−u) defined and P[u] ≠ 0. For
+// d = 1, T_l is the 1D weight of level l.
+double block_walk_weight(const nested_rule& rule, const std::vector<std::size_t>& id, unsigned L,
+                         std::size_t d) {
+  std::vector<double> product;
+  const std::size_t m = id.size() - d;
+  const unsigned r = leading_product(rule, id, m, L, product);
+  const std::vector<std::size_t> block(id.begin() + static_cast<std::ptrdiff_t>(m), id.end());
+  std::vector<double> T(L + 1, std::numeric_limits<double>::quiet_NaN());
+  if (d == 1) {
+    for (unsigned l = rule.birth(block[0]); l <= L; ++l) T[l] = rule.weight(l, block[0]);
+  } else {
+    T = block_table_weights(rule, block, L);
+  }
+  double w = 0.0 + product[0] * T[r];
+  for (unsigned u = 1; u <= r; ++u) {
+    if (std::isnan(T[r - u])) break;
+    if (product[u] != 0.0) w += product[u] * T[r - u];
+  }
+  return w;
+}
+
+// |w|(x) = Σ_{k ≥ b, |k|₁ ≤ L} Π_j |d_{k_j}(x_j)|: the sum of the magnitudes of the terms every
+// evaluation order adds (the exact differences of the tables' weights, in long double).
+long double absolute_terms(const nested_rule& rule, const std::vector<std::size_t>& id,
+                           unsigned L) {
+  unsigned t = 0;
+  for (const std::size_t i : id) t += rule.birth(i);
+  const unsigned degree = L - t;
+  std::vector<long double> coefficient(degree + 1, 0.0L), next(degree + 1);
+  coefficient[0] = 1.0L;
+  for (const std::size_t i : id) {
+    const unsigned b = rule.birth(i);
+    for (unsigned v = 0; v <= degree; ++v) {
+      long double sum = 0.0L;
+      for (unsigned k = 0; k <= v; ++k) {
+        const long double below =
+            k == 0 ? 0.0L : static_cast<long double>(rule.weight(b + k - 1, i));
+        sum +=
+            coefficient[v - k] * std::abs(static_cast<long double>(rule.weight(b + k, i)) - below);
+      }
+      next[v] = sum;
+    }
+    coefficient = next;
+  }
+  long double total = 0.0L;
+  for (const long double c : coefficient) total += c;
+  return total;
+}
+
+// The block size d the header documents: the largest of 2 and 3 with d < s and N_d(L) ≤ the cap.
+std::size_t documented_block_axes(const nested_rule& rule, std::size_t s, unsigned L) {
+  std::size_t d = 1;
+  for (std::size_t c = 2; c <= 3; ++c) {
+    const auto n = smolyak_point_count(rule, c, L);
+    if (c < s && n && *n <= smolyak_block::block_nodes_cap) d = c;
+  }
+  return d;
+}
+
+// Each point's ids (via its coordinates), checked to be a node of the grid.
+std::vector<std::vector<std::size_t>> ids_of(const nested_rule& rule, const smolyak_grid& g,
+                                             const grid_points& p) {
+  std::map<double, std::size_t> id_of;  // a node's coordinate → its id
+  for (std::size_t id = 0; id < rule.count(rule.max_level()); ++id) id_of[rule.node(id)] = id;
+  const std::size_t s = g.dimension();
+  std::vector<std::vector<std::size_t>> ids;
+  for (std::uint64_t i = 0; i < g.size(); ++i) {
+    std::vector<std::size_t> id(s);
+    unsigned births = 0;
+    for (std::size_t j = 0; j < s; ++j) {
+      const auto it = id_of.find(p.x[i * s + j]);
+      EXPECT_NE(it, id_of.end()) << "s " << s << " point " << i << " axis " << j;
+      if (it == id_of.end()) return {};
+      id[j] = it->second;
+      births += rule.birth(id[j]);
+    }
+    EXPECT_LE(births, g.level()) << "s " << s << " point " << i;
+    ids.push_back(std::move(id));
+  }
+  return ids;
+}
+
+// The weights are the documented block formula bit for bit — the leading product in double, the
+// block's T tables in long double rounded once, u ascending — for every d the grid picks (1 for
+// s ≤ 2, where they are also the previous walk's weights bit for bit, 2 and 3 above), in every
+// dimension the copy is specialised for and beyond (s = 17, 20: the loop); each node comes once.
+// Reversing a product order, or summing the block's terms in double, fails it.
 TEST(SmolyakGrid, WeightsAreTheSurplusFormulaBitForBitAndEachNodeComesOnce) {
   for (const nested_rule_kind kind :
        {nested_rule_kind::clenshaw_curtis, nested_rule_kind::gauss_patterson,
         nested_rule_kind::trapezoid}) {
     const nested_rule& rule = nested_rule_table(kind);
-    std::map<double, std::size_t> id_of;  // a node's coordinate → its id
-    for (std::size_t id = 0; id < rule.count(rule.max_level()); ++id) id_of[rule.node(id)] = id;
+    std::set<std::size_t> block_axes_seen;
     for (const auto& [s, L] : {std::pair<std::size_t, unsigned>{1, 7},
                                {2, 6},
                                {3, 5},
+                               {3, 7},
+                               {4, 6},
                                {5, 4},
                                {8, 4},
                                {16, 2},
-                               {17, 2}}) {
+                               {17, 2},
+                               {20, 2}}) {
       const smolyak_grid g(rule, s, L);
+      ASSERT_EQ(g.block_axes(), documented_block_axes(rule, s, L)) << s << " " << L;
+      block_axes_seen.insert(g.block_axes());
       const grid_points p = all_points(g);
+      const auto ids = ids_of(rule, g, p);
+      ASSERT_EQ(ids.size(), g.size());
       std::map<std::vector<std::size_t>, int> visits;
       for (std::uint64_t i = 0; i < g.size(); ++i) {
-        std::vector<std::size_t> id(s);
-        unsigned births = 0;
-        for (std::size_t j = 0; j < s; ++j) {
-          const auto it = id_of.find(p.x[i * s + j]);
-          ASSERT_NE(it, id_of.end()) << "s " << s << " point " << i << " axis " << j;
-          id[j] = it->second;
-          births += rule.birth(id[j]);
-        }
-        ASSERT_LE(births, L) << "s " << s << " point " << i;
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(p.w[i]),
-                  std::bit_cast<std::uint64_t>(surplus_weight(rule, id, L)))
+        const double expected = block_walk_weight(rule, ids[i], L, g.block_axes());
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(p.w[i]), std::bit_cast<std::uint64_t>(expected))
             << to_string(kind) << " s " << s << " L " << L << " point " << i;
-        ++visits[id];
+        if (g.block_axes() == 1) {
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(p.w[i]),
+                    std::bit_cast<std::uint64_t>(previous_walk_weight(rule, ids[i], L)))
+              << to_string(kind) << " s " << s << " L " << L << " point " << i;
+        }
+        ++visits[ids[i]];
       }
       // Every tuple visited once, and as many tuples as the grid has nodes.
       for (const auto& [tuple, n] : visits) ASSERT_EQ(n, 1) << to_string(kind) << " s " << s;
       EXPECT_EQ(visits.size(), g.size()) << to_string(kind) << " s " << s;
     }
+    EXPECT_EQ(block_axes_seen, (std::set<std::size_t>{1, 2, 3})) << to_string(kind);
+  }
+}
+
+// A weighted point set of given nodes and weights (the previous walk's, in its order: the
+// lexicographic order of the s ids), so that the kernel sums them as it summed that walk.
+struct listed_points {
+  std::size_t s;
+  std::vector<double> x;
+  std::vector<double> w;
+  std::uint64_t size() const { return w.size(); }
+  std::size_t dimension() const { return s; }
+  void generate(std::uint64_t first, std::span<double> nodes, std::span<double> weights) const {
+    std::copy_n(x.begin() + static_cast<std::ptrdiff_t>(first * s), nodes.size(), nodes.begin());
+    std::copy_n(w.begin() + static_cast<std::ptrdiff_t>(first), weights.size(), weights.begin());
+  }
+};
+
+// The Genz Gaussian of the benchmark (a = 1/√s·…, u = 0.5) with the scalar std::exp, so that f
+// at a node has the same bits wherever in a batch the node falls.
+struct scalar_gaussian {
+  std::size_t s;
+  std::size_t dimension() const { return s; }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      double v = 0.0;
+      for (std::size_t j = 0; j < s; ++j) {
+        const double a = 1.0 + 0.25 * static_cast<double>(j);
+        v += a * a * (x[i * s + j] - 0.5) * (x[i * s + j] - 0.5);
+      }
+      y[i] = std::exp(-v);
+    }
+  }
+  integrand_info info() const {
+    integrand_info i;
+    i.name = "scalar_gaussian";
+    i.domain = box::unit(s);
+    return i;
+  }
+};
+
+// The block walk changed the order of the arithmetic (s ≥ 3): each weight now sums the block's
+// terms in long double and the leading product's in double, and the nodes of a row come in
+// shell order. Both it and the previous walk evaluate w(x) = Σ_k Π_j d_{k_j}(x_j) with at most
+// n = s·(L + 2) roundings on each term's path (per axis one difference, one product and ≤ L
+// additions; the block's long double part costs < 1 double rounding), so each is within γ_n·|w|(x)
+// of the exact sum [Higham 2002, §3.1], |w|(x) = Σ_k Π_j |d_{k_j}(x_j)|, and they differ by at
+// most 2γ_n·|w|(x). The kernel's sums then add ≤ γ_12·Σ|w_i f_i| each (the product w·f, pairwise
+// over 256 terms, Neumaier across batches: weighted_point_set.hpp), so
+//   |Q_new − Q_prev| ≤ Σ_i 2γ_n·|w|(x_i)·|f_i| + γ_12·(Σ|w_new,i f_i| + Σ|w_prev,i f_i|).
+// Checked per weight and for the sum, on the levels of the benchmark's equal-N comparison.
+TEST(SmolyakGrid, BlockWalkAgreesWithThePreviousWalkWithinTheRoundingBound) {
+  const auto gamma = [](double n) { return n * eps / (1.0 - n * eps); };
+  for (const auto& [s, L] :
+       std::vector<std::pair<std::size_t, unsigned>>{{3, 9}, {4, 9}, {5, 6}, {8, 5}, {16, 3}}) {
+    const smolyak_grid g(cc(), s, L);
+    ASSERT_GE(g.block_axes(), 2u) << s;
+    const grid_points p = all_points(g);
+    const auto ids = ids_of(cc(), g, p);
+    ASSERT_EQ(ids.size(), g.size());
+    const double n_roundings = static_cast<double>(s * (L + 2));
+    // The previous walk's points in its order: the ids sorted lexicographically.
+    std::vector<std::size_t> order(g.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+    listed_points previous{s, std::vector<double>(g.size() * s), std::vector<double>(g.size())};
+    const scalar_gaussian f{s};
+    std::vector<double> y(g.size());
+    f.evaluate(p.x, y);
+    long double bound = 0.0L;
+    double worst_weight_ratio = 0.0;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const std::size_t i = order[k];
+      const double w_previous = previous_walk_weight(cc(), ids[i], L);
+      const long double terms = absolute_terms(cc(), ids[i], L);
+      const double allowed = static_cast<double>(2 * gamma(n_roundings) * terms);
+      const double difference = std::abs(p.w[i] - w_previous);
+      ASSERT_LE(difference, allowed) << "s " << s << " L " << L << " point " << i;
+      worst_weight_ratio = std::max(worst_weight_ratio, difference / allowed);
+      std::copy_n(p.x.begin() + static_cast<std::ptrdiff_t>(i * s), s,
+                  previous.x.begin() + static_cast<std::ptrdiff_t>(k * s));
+      previous.w[k] = w_previous;
+      const long double fy = std::abs(static_cast<long double>(y[i]));
+      bound += 2 * gamma(n_roundings) * terms * fy;
+      bound += gamma(12) * (std::abs(p.w[i]) + std::abs(w_previous)) * fy;
+    }
+    const double q_new = weighted_sum(f, g, 1).value;
+    const double q_previous = weighted_sum(f, previous, 1).value;
+    const double difference = std::abs(q_new - q_previous);
+    EXPECT_LE(difference, static_cast<double>(bound)) << "s " << s << " L " << L;
+    std::cout << fmt::format(
+        "s {:2} L {} d {}: N {:7}, |Q_new − Q_prev| = {:.3g} (bound {:.3g}), worst weight "
+        "difference {:.3g} of its bound\n",
+        s, L, g.block_axes(), g.size(), difference, static_cast<double>(bound), worst_weight_ratio);
   }
 }
 
@@ -341,16 +571,27 @@ TEST(SmolyakGrid, SumIsBitwiseTheSameForAnyThreadCountAndThroughTheFastPath) {
               std::bit_cast<std::uint64_t>(one))
         << threads;
   }
-  // mapped() writes box coordinates: bitwise what generate() and the kernel's map give.
-  const cube_to_box map(f.info().domain);
-  const auto on_box = g.mapped(map);
-  std::vector<double> x1(256 * 4), w1(256), x2(256 * 4), w2(256);
-  for (std::uint64_t first = 0; first + 256 <= g.size(); first += 7919) {
-    g.generate(first, x1, w1);
-    map.apply(x1);
-    on_box.generate(first, x2, w2);
-    ASSERT_EQ(x1, x2) << first;
-    ASSERT_EQ(w1, w2) << first;
+  // mapped() writes box coordinates: bitwise what generate() and the kernel's map give, for a
+  // block of 2 and of 3 axes (d = 2 here, 3 at s = 5, L = 6), on a box (the block's coordinates
+  // mapped per call) and on the unit cube (the process's table used as it is).
+  const smolyak_grid g3(cc(), 5, 6);
+  ASSERT_EQ(g.block_axes(), 2u);
+  ASSERT_EQ(g3.block_axes(), 3u);
+  for (const smolyak_grid* grid : {&g, &g3}) {
+    const std::size_t s = grid->dimension();
+    for (const box& domain :
+         {box{std::vector<double>(s, -1.0), std::vector<double>(s, 2.0)}, box::unit(s)}) {
+      const cube_to_box map(domain);
+      const auto on_box = grid->mapped(map);
+      std::vector<double> x1(256 * s), w1(256), x2(256 * s), w2(256);
+      for (std::uint64_t first = 0; first + 256 <= grid->size(); first += 997) {
+        grid->generate(first, x1, w1);
+        map.apply(x1);
+        on_box.generate(first, x2, w2);
+        ASSERT_EQ(x1, x2) << "s " << s << " first " << first;
+        ASSERT_EQ(w1, w2) << "s " << s << " first " << first;
+      }
+    }
   }
 }
 

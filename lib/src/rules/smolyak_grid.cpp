@@ -1,4 +1,4 @@
-// The count table and the weight sum of smolyak_grid.hpp.
+// The count table, the choice of the block and the weight sum of smolyak_grid.hpp.
 #include "quadmc/rules/smolyak_grid.hpp"
 
 namespace quadmc {
@@ -49,6 +49,18 @@ smolyak_grid::smolyak_grid(const nested_rule& rule, std::size_t s, unsigned leve
   }
   count_ = std::move(*table);
   total_ = count_[level];
+  static_assert(max_levels > 16, "nested_rule_max_level is at most 16");
+  // d: the largest of 2 and 3 that leaves a leading axis and keeps the block within the cap.
+  for (std::size_t d = 2; d <= 3; ++d) {
+    if (d < s && tuples(s - d, level) <= smolyak_block::block_nodes_cap) block_axes_ = d;
+  }
+  if (block_axes_ >= 2) {
+    block_ = &smolyak_block_table(rule.kind(), block_axes_);
+    if (block_->level() < level) {  // N_d is increasing in the level, so this cannot happen
+      throw invalid_argument("sparse grid level L", quote(level),
+                             fmt::format("at most the block table's level {}", block_->level()));
+    }
+  }
 }
 
 double smolyak_grid::absolute_weight_sum() const {

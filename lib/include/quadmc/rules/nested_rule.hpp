@@ -61,6 +61,8 @@ class nested_rule {
   // The level at which node id first appears.
   unsigned birth(std::size_t id) const noexcept { return birth_[id]; }
   double node(std::size_t id) const noexcept { return nodes_[id]; }
+  // Every node by id, count(max_level()) values: the nodes of level l are the first count(l).
+  std::span<const double> nodes() const noexcept { return nodes_; }
   // Weight of node id in the rule of level l ≥ birth(id) (weights refer to [0, 1], Σ = 1).
   double weight(unsigned level, std::size_t id) const noexcept {
     return weights_[weight_offset_[level] + id];

@@ -22,40 +22,63 @@
 // P = Π_{j<s} A_j truncated to degree R (the leading axes' product) and C(t) = Σ_{m ≤ t} a_s(m)
 // = the weight of x_s in U^(b_s + t) (a telescoping sum: a table lookup, no differences).
 //
-// How it generates (no grid is stored; memory O(s·L) beyond the 1D tables):
-//  - nodes are the tuples of 1D ids (id_1, …, id_s) with Σ birth(id_j) ≤ L, in lexicographic
-//    order, last axis fastest. count[j][r], the number of tuples of axes j…s−1 with levels summing
-//    to ≤ r (an s × (L + 1) table), decodes an index into its tuple in O(s·L) once per batch; the
-//    batch then walks like an odometer;
-//  - the truncated products P_j = Π_{i<j} A_i are kept per axis and recomputed only when axis j
-//    moves (O(L²) at a carry), so a node costs the R + 1 multiply-adds of its last axis and the
-//    copy of its coordinates: most nodes have R = 0 or 1. The factors d_l(x) and C(t) are read
-//    from the 1D rule's by-node tables (nested_rule.hpp: a node's weights and differences from
-//    its birth on, contiguous, the differences computed once per process), and a point's s − 1
-//    leading coordinates are copied with a length fixed at compile time; both because runs along
-//    the last axis are short (2 to 4 nodes on average at s = 4 to 8), so the per-run and
-//    per-point overheads, not the arithmetic, set the speed (measured with callgrind on the Genz
-//    Gaussian: bench/rules_bench.cpp, equal_n);
+// How it generates (no grid is stored; memory O(s·L) plus one table of the last axes, below):
+//  - the last d ∈ {1, 2, 3} axes form a block: the d-dimensional Smolyak grid of level r is the
+//    set of the last d ids of the nodes whose leading s − d ids leave a budget r = L − Σ birth.
+//    Its nodes are tabulated once per process in shell order (smolyak_block.hpp), so the block
+//    of level r is the first N_d(r) entries of the block of level L, together with
+//      T_l[i] = the weight of block node i in the d-dimensional grid of level l, i < N_d(l).
+//    For d = 1 the block is the 1D rule itself and T_l its weights of level l (nested_rule.hpp:
+//    ids are in birth order);
+//  - a node's weight is then w = Σ_{u ≤ r} P[u]·T_{r−u}[i], P = Π_{j<s−d} A_j truncated to degree
+//    r (the leading axes' product): for the block nodes of one leading tuple — a row of N_d(r)
+//    consecutive indices — the weights are r + 1 passes of a multiply-add over contiguous
+//    prefixes of the T tables, the leading s − d coordinates are the same for the whole row, and
+//    the last d come from the block's coordinate table. Rows average 91 points at s = 4, L = 9
+//    (d = 3) and 11.8 at s = 8, L = 8 (d = 3), against runs of 3.3 and 2.1 along the last axis
+//    alone, which is what pays: a row's fixed cost (the carry into the leading axes, which
+//    recomputes their products) was the larger part of a point's cost;
+//  - d is the largest of 2 and 3 with d < s and N_d(L) ≤ smolyak_block::block_nodes_cap (16384)
+//    nodes, else 1 (so rows stay in cache, and a grid of s ≥ 2 is never one block); the tables
+//    are the process's (smolyak_block.hpp), not the grid's, and a call maps the block's N_d(L)·d
+//    coordinates to the box once;
+//  - nodes are the tuples of 1D ids (leading ids, block node) in lexicographic order of the
+//    leading ids, the block in shell order. count[j][r], the number of tuples of axes j…s−1
+//    with levels summing to ≤ r (an s × (L + 1) table; count[s − d][r] = N_d(r)), decodes an index
+//    into its tuple in O(s·L) once per batch; the batch then walks like an odometer;
+//  - the truncated products P_j = Π_{i<j} A_i are kept per leading axis and recomputed only when
+//    axis j moves (O(L²) at a carry), from the 1D rule's by-node difference tables
+//    (nested_rule.hpp), in double; the block's T_l are sums over d axes formed in long double
+//    and rounded once (smolyak_block.hpp), so a weight is within a few ulp of Σ|terms| of the exact
+//    surplus sum (tests/rules/smolyak_grid_test.cpp derives the bound and checks it against the sum
+//    of the previous walk, which multiplied out all s axes in double);
 //  - the weights are a pure function of the node (every product is formed from the same factors
 //    in the same order, wherever a batch starts), so the sum is bitwise the same on any thread
 //    count;
-//  - mapped(map) writes box coordinates directly, the fast path of weighted_point_set.hpp.
-// Memory bound: the tables count[s][L + 1] (8 bytes each) and, per batch, s·(L + 1) doubles of
-// products; the 1D rule's tables are shared (nested_rule.hpp). At s = 16, L = 6: 1.7 KiB per grid
-// for 2.6·10⁵ nodes.
+//  - mapped(map) writes box coordinates directly, the fast path of weighted_point_set.hpp (the
+//    block's coordinates mapped once per call, a leading coordinate when its axis moves).
+// Memory bound: the tables count[s][L + 1] (8 bytes each), per call the block's mapped
+// coordinates (≤ 16384·d doubles) and, per batch, s·(L + 1) doubles of products; the 1D rule's
+// tables and the blocks are the process's (nested_rule.hpp, smolyak_block.hpp, ≤ 1.1 MB per
+// rule family). At s = 16, L = 6: 1.7 KiB of counts and a block of 1073 nodes (d = 3) for
+// 2.1·10⁶ nodes.
 #pragma once
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/rules/nested_rule.hpp"
+#include "quadmc/rules/smolyak_block.hpp"
 #include "quadmc/rules/weighted_point_set.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -81,12 +104,14 @@ class smolyak_grid {
   std::size_t dimension() const noexcept { return s_; }
   unsigned level() const noexcept { return level_; }
   const nested_rule& rule() const noexcept { return *rule_; }
+  // d, the number of trailing axes tabulated as one block (1, 2 or 3; see "How it generates").
+  std::size_t block_axes() const noexcept { return block_axes_; }
 
   // Nodes in [0, 1]^s and their weights (the weighted_point_set contract).
   void generate(std::uint64_t first, std::span<double> nodes, std::span<double> weights) const {
     walk(
         first, nodes, weights, [this](std::size_t, std::size_t id) { return rule_->node(id); },
-        [this](std::size_t id) { return rule_->node(id); });
+        block_nodes());
   }
 
   class on_box {
@@ -94,23 +119,43 @@ class smolyak_grid {
     on_box(const smolyak_grid& grid, const cube_to_box& map) : grid_(&grid), map_(map) {
       require(map_.dimension() == grid.s_, "box dimension", map_.dimension(),
               fmt::format("the grid's dimension {}", grid.s_));
-      const std::size_t last = grid.s_ - 1;
-      const auto n = static_cast<std::size_t>(grid.rule_->count(grid.level_));
-      last_coordinate_.resize(n);
-      for (std::size_t id = 0; id < n; ++id)
-        last_coordinate_[id] = map_(last, grid.rule_->node(id));
+      const std::size_t d = grid.block_axes_;
+      const std::size_t leading = grid.s_ - d;
+      const auto n = static_cast<std::size_t>(grid.block_count(grid.level_));
+      const double* unit = grid.block_nodes();
+      // On unit block axes the map is the identity bit for bit (0 + 1·t = t for the nodes, all
+      // ≥ +0), so the process's table serves as it is; else the block's n·d coordinates are
+      // mapped once per call, an axis at a time (no zero fill first: every entry is written).
+      bool identity = true;
+      for (std::size_t c = 0; c < d; ++c) {
+        identity = identity && map_.lower[leading + c] == 0.0 && map_.width[leading + c] == 1.0;
+      }
+      if (identity) {
+        block_coordinate_ = unit;
+        return;
+      }
+      mapped_block_ = std::make_unique_for_overwrite<double[]>(n * d);
+      for (std::size_t c = 0; c < d; ++c) {
+        const double a = map_.lower[leading + c];
+        const double w = map_.width[leading + c];
+        double* out = mapped_block_.get() + c;
+        const double* in = unit + c;
+        for (std::size_t i = 0; i < n; ++i) out[i * d] = a + w * in[i * d];
+      }
+      block_coordinate_ = mapped_block_.get();
     }
     void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {
       grid_->walk(
           first, x, weights,
           [this](std::size_t j, std::size_t id) { return map_(j, grid_->rule_->node(id)); },
-          [this](std::size_t id) { return last_coordinate_[id]; });
+          block_coordinate_);
     }
 
    private:
     const smolyak_grid* grid_;
     cube_to_box map_;
-    std::vector<double> last_coordinate_;
+    std::unique_ptr<double[]> mapped_block_;  // unless the block's axes are unit
+    const double* block_coordinate_ = nullptr;
   };
   // The same points in the box of `map`, bitwise what generate() and map.apply() give. Refers to
   // this grid, which must outlive it.
@@ -121,38 +166,64 @@ class smolyak_grid {
   double absolute_weight_sum() const;
 
  private:
+  // The largest level of any nested rule is below this (nested_rule_max_level: 16 at most), so a
+  // batch keeps its pointers to the T tables on the stack.
+  static constexpr unsigned max_levels = 32;
+
   // count_[j·(L + 1) + r]: tuples of axes j…s−1 whose birth levels sum to ≤ r.
   std::uint64_t tuples(std::size_t j, unsigned r) const noexcept {
     return j == s_ ? 1 : count_[j * (level_ + 1) + r];
   }
+  // N_d(r): the nodes of the block of level r.
+  std::uint64_t block_count(unsigned r) const noexcept { return tuples(s_ - block_axes_, r); }
+  // The block's unit coordinates, d per node, in block order.
+  const double* block_nodes() const noexcept {
+    return block_ == nullptr ? rule_->nodes().data() : block_->nodes();
+  }
+  // T_l: the block's weights in the d-dimensional grid of level l, N_d(l) values.
+  const double* block_weights(unsigned l) const noexcept {
+    return block_ == nullptr ? rule_->weights(l).data() : block_->weights(l);
+  }
 
-  template <class Coordinate, class Last>
+  template <class Coordinate>
   void walk(std::uint64_t first, std::span<double> x, std::span<double> weights,
-            const Coordinate& coordinate, const Last& last_coordinate) const;
+            const Coordinate& coordinate, const double* block_coordinate) const {
+    switch (block_axes_) {
+      case 1:
+        walk_rows<1>(first, x, weights, coordinate, block_coordinate);
+        break;
+      case 2:
+        walk_rows<2>(first, x, weights, coordinate, block_coordinate);
+        break;
+      default:
+        walk_rows<3>(first, x, weights, coordinate, block_coordinate);
+        break;
+    }
+  }
+  template <std::size_t D, class Coordinate>
+  void walk_rows(std::uint64_t first, std::span<double> x, std::span<double> weights,
+                 const Coordinate& coordinate, const double* block_coordinate) const;
 
   const nested_rule* rule_;
   std::size_t s_;
   unsigned level_;
   std::vector<std::uint64_t> count_;
   std::uint64_t total_ = 0;
+  std::size_t block_axes_ = 1;
+  const smolyak_block* block_ = nullptr;  // the process's table for d ≥ 2
 };
 
 namespace detail {
 
-// smolyak_grid's walk copies a point's s − 1 leading coordinates with a length fixed at compile
-// time for s − 1 < max_fixed_axes (straight-line moves; a loop of variable length is turned into
-// a call to memcpy per point by GCC, which cost more than the point's weight); dynamic_axes is
-// the loop for larger s.
+// smolyak_grid's rows copy a point's s − d leading coordinates with a length fixed at compile
+// time for s − d < max_fixed_axes (straight-line moves from registers; a loop of variable length
+// is turned into a call to memcpy per point by GCC, which cost more than the point's weight);
+// dynamic_axes is the loop for larger s.
 inline constexpr std::size_t max_fixed_axes = 16;
 inline constexpr std::size_t dynamic_axes = std::numeric_limits<std::size_t>::max();
 
-template <std::size_t... J>
-void copy_fixed(double* to, const double* from, std::index_sequence<J...>) noexcept {
-  ((to[J] = from[J]), ...);
-}
-
 // f(std::integral_constant<std::size_t, m>{}) for m < max_fixed_axes, else
-// f(std::integral_constant<std::size_t, dynamic_axes>{}): one switch per run of the walk.
+// f(std::integral_constant<std::size_t, dynamic_axes>{}): one switch per row of the walk.
 template <class F>
 void with_leading_axes(std::size_t m, const F& f) {
   [&]<std::size_t... M>(std::index_sequence<M...>) {
@@ -163,31 +234,61 @@ void with_leading_axes(std::size_t m, const F& f) {
   (std::make_index_sequence<max_fixed_axes>{});
 }
 
+// out[q] = a·in[q] (Add = false) or out[q] += a·in[q] (Add = true) for q < n, two lanes at a
+// time by the compilers' vector extension: the same IEEE operations per element, so the same bits
+// as the scalar loop, which GCC's -O2 does not vectorize (a row's weights are such passes).
+template <bool Add>
+inline void scaled_row(double* out, double a, const double* in, std::size_t n) noexcept {
+  using pair = double __attribute__((vector_size(16)));
+  const pair a2 = {a, a};
+  std::size_t q = 0;
+#pragma GCC unroll 2
+  for (; q + 2 <= n; q += 2) {
+    pair x;
+    std::memcpy(&x, in + q, sizeof x);
+    pair y = a2 * x;
+    if constexpr (Add) {
+      pair o;
+      std::memcpy(&o, out + q, sizeof o);
+      y = o + y;
+    }
+    std::memcpy(out + q, &y, sizeof y);
+  }
+  if (q < n) out[q] = Add ? out[q] + a * in[q] : a * in[q];
+}
+
 }  // namespace detail
 
-template <class Coordinate, class Last>
-void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<double> weights,
-                        const Coordinate& coordinate, const Last& last_coordinate) const {
+template <std::size_t D, class Coordinate>
+void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span<double> weights,
+                             const Coordinate& coordinate, const double* block_coordinate) const {
   require_weighted_batch(s_, total_, first, x, weights);
   const std::size_t count = weights.size();
   if (count == 0) return;
   const std::size_t s = s_;
-  const std::size_t last = s - 1;
+  const std::size_t lead = s - D;  // the leading axes, 0 … s − d − 1
   const unsigned L = level_;
   const std::size_t width = L + 1;
   const nested_rule& rule = *rule_;
 
-  // Per axis j: its id, the budget r_j = L − Σ_{i<j} birth(id_i), its coordinate, and the
-  // truncated product P_{j+1} = P_j·A_j (degree ≤ r_j − birth(id_j)); P_0 = 1. Two allocations
-  // per batch, never per point.
-  std::vector<std::size_t> state(2 * s + 1);
+  // Per leading axis j: its id, the budget r_j = L − Σ_{i<j} birth(id_i), its coordinate, and the
+  // truncated product P_{j+1} = P_j·A_j (degree ≤ r_j − birth(id_j)); P_0 = 1; budget[lead] is
+  // the block's level. Two allocations per batch, never per point.
+  std::vector<std::size_t> state(2 * lead + 1);
   std::size_t* id = state.data();
-  std::size_t* budget = state.data() + s;
-  std::vector<double> values(s + (s + 1) * width, 0.0);
+  std::size_t* budget = state.data() + lead;
+  std::vector<double> values(lead + (lead + 1) * width, 0.0);
   double* axis_coordinate = values.data();
-  double* product = values.data() + s;
+  double* product = values.data() + lead;
   product[0] = 1.0;
   budget[0] = L;
+  // The T tables and the block sizes N_d(l), looked up once per batch.
+  std::array<const double*, max_levels> table{};
+  std::array<std::size_t, max_levels> block_size{};
+  for (unsigned l = 0; l <= L; ++l) {
+    table[l] = block_weights(l);
+    block_size[l] = static_cast<std::size_t>(block_count(l));
+  }
 
   // P_{j+1} from P_j and axis j's node: P_{j+1}[t] = Σ_{u+m=t} P_j[u]·d_{b+m}(id), t ≤ r_{j+1},
   // the differences d read from the node's contiguous table (nested_rule.hpp).
@@ -195,22 +296,22 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
     const std::size_t node = id[j];
     const std::size_t rest = budget[j] - rule.birth(node);
     budget[j + 1] = rest;
-    if (j < last) axis_coordinate[j] = coordinate(j, node);
+    axis_coordinate[j] = coordinate(j, node);
     const double* d = rule.differences_from_birth(node);
     const double* in = product + j * width;
     double* out = product + (j + 1) * width;
-    // The sum from zero with its first term peeled (0.0 + x keeps its bits, as in the last
-    // axis's weights below): most calls have rest ≤ 2, so the loop's overhead is what counts.
+    // The sum from zero with its first term peeled (0.0 + x keeps its bits, as in the weights
+    // below): most calls have rest ≤ 2, so the loop's overhead is what counts.
     for (std::size_t t = 0; t <= rest; ++t) {
       double sum = 0.0 + in[t] * d[0];
       for (std::size_t m = 1; m <= t; ++m) sum += in[t - m] * d[m];
       out[t] = sum;
     }
   };
-  // Decode `first`: at axis j with budget r, the ids of birth level b hold new_count(b) blocks of
-  // tuples(j + 1, r − b) tuples each.
+  // Decode `first`: at leading axis j with budget r, the ids of birth level b hold new_count(b)
+  // blocks of tuples(j + 1, r − b) tuples each; what remains is the index in the block.
   std::uint64_t rest = first;
-  for (std::size_t j = 0; j < s; ++j) {
+  for (std::size_t j = 0; j < lead; ++j) {
     const auto r = static_cast<unsigned>(budget[j]);
     std::size_t base = 0;
     for (unsigned b = 0; b <= r; ++b) {
@@ -224,60 +325,72 @@ void smolyak_grid::walk(std::uint64_t first, std::span<double> x, std::span<doub
       rest -= block;
       base += static_cast<std::size_t>(rule.new_count(b));
     }
-    if (j < last) place(j);  // the last axis's budget is set by place(last − 1)
+    place(j);
   }
 
-  // The batch in runs along the last axis (its ids 0 … count(r_last) − 1 for the current leading
-  // ids), then a carry into the leading axes. Runs are short (2 to 4 points on average at s = 4 to
-  // 8: most leading tuples use up most of the budget), so a point is written row by row — its
-  // s − 1 leading coordinates copied from axis_coordinate, then the last one — and not column by
-  // column per run as in tensor_product_grid.hpp, whose loop overhead per column was paid for
-  // every 2 points here. The copy has a length fixed at compile time for s ≤ max_fixed_axes (a
-  // few vector moves; a variable length is a call to memcpy per point, which cost more than the
-  // point's weight), chosen once per run.
-  auto emit_run = [&](auto leading_axes, std::size_t i, std::size_t k, std::size_t run) {
+  // The batch in rows: block nodes k … N_d(r) − 1 of the current leading tuple (r = its
+  // budget), then a carry into the leading axes. A row's weights are r + 1 passes over prefixes
+  // of the T tables, w_i = P[0]·T_r[i] + P[1]·T_(r−1)[i] + … (u ascending; a term with T_(r−u)
+  // shorter than i is absent, one with P[u] = 0 is skipped). These are the bits of the sum from
+  // zero, 0.0 + P[0]·T_r[i] + …: P[0] > 0 (a product of weights at birth levels, all positive
+  // in the three families) and no T is −0 (a long double sum from zero, or a 1D weight > 0), so
+  // no w is −0, and adding ±0 to it leaves its bits. Its points are written row-major, the
+  // leading coordinates from registers (a length fixed at compile time for s − d <
+  // max_fixed_axes), the last d from the block's table. The loops are unrolled by 4 (GCC's -O2
+  // does not vectorize them): their control was a third of a point's cost (callgrind).
+  auto emit_row = [&](auto leading_axes, std::size_t i, std::size_t k, std::size_t run) {
     constexpr std::size_t M = decltype(leading_axes)::value;
-    const std::size_t r = budget[last];
-    const double* leading = product + last * width;
-    double* row = x.data() + i * s;
+    const auto r = static_cast<unsigned>(budget[lead]);
+    const double* p = product + lead * width;
     double* w_out = weights.data() + i;
-    for (std::size_t q = 0; q < run; ++q) {
-      const std::size_t node = k + q;
-      const std::size_t R = r - rule.birth(node);
-      // Σ_{u ≤ R} P[u]·C(R − u), C(t) = weight of the node in U^(b + t), summed from u = 0 as
-      // the sum w = 0 + …: 0.0 + the first term keeps the bits of a sum that starts at zero.
-      const double* c = rule.weights_from_birth(node);
-      double w = 0.0 + leading[0] * c[R];
-      for (std::size_t u = 1; u <= R; ++u) w += leading[u] * c[R - u];
-      w_out[q] = w;
-      double* point = row + q * s;
-      if constexpr (M == detail::dynamic_axes) {
-        for (std::size_t j = 0; j < last; ++j) point[j] = axis_coordinate[j];
-      } else {
-        detail::copy_fixed(point, axis_coordinate, std::make_index_sequence<M>{});
+    double* point = x.data() + i * s;
+    const double* block = block_coordinate + k * D;
+    detail::scaled_row<false>(w_out, p[0], table[r] + k, run);
+    // The points, after the first term of each weight.
+    if constexpr (M == detail::dynamic_axes) {
+      for (std::size_t q = 0; q < run; ++q, point += s, block += D) {
+        for (std::size_t j = 0; j < lead; ++j) point[j] = axis_coordinate[j];
+        for (std::size_t c = 0; c < D; ++c) point[lead + c] = block[c];
       }
-      point[last] = last_coordinate(node);
+    } else {
+      // A local copy, so the compiler can keep it in registers (axis_coordinate could alias x),
+      // and fixed-length copies, which it turns into a few vector moves.
+      std::array<double, M + 1> leading{};
+      for (std::size_t j = 0; j < M; ++j) leading[j] = axis_coordinate[j];
+#pragma GCC unroll 4
+      for (std::size_t q = 0; q < run; ++q, point += s, block += D) {
+        std::memcpy(point, leading.data(), M * sizeof(double));
+        std::memcpy(point + M, block, D * sizeof(double));
+      }
+    }
+    for (unsigned u = 1; u <= r; ++u) {
+      const std::size_t size = block_size[r - u];
+      if (size <= k) break;  // the sizes fall with u
+      const double pu = p[u];
+      if (pu == 0.0) continue;
+      const std::size_t n = std::min(size - k, run);
+      detail::scaled_row<true>(w_out, pu, table[r - u] + k, n);
     }
   };
-  std::size_t k = id[last];
+  std::size_t k = static_cast<std::size_t>(rest);
   for (std::size_t i = 0; i < count;) {
-    const std::size_t r = budget[last];
-    const auto end = static_cast<std::size_t>(rule.count(static_cast<unsigned>(r)));
+    const std::size_t end = block_size[budget[lead]];
     const std::size_t run = std::min<std::size_t>(end - k, count - i);
-    detail::with_leading_axes(last, [&](auto M) { emit_run(M, i, k, run); });
+    detail::with_leading_axes(lead, [&](auto M) { emit_row(M, i, k, run); });
     i += run;
     k += run;
     if (k == end && i < count) {
       // Carry: the rightmost leading axis whose next id still fits its budget moves; the axes
-      // after it restart at id 0 (birth 0 always fits).
-      std::size_t j = last;
+      // after it restart at id 0 (birth 0 always fits). With no leading axis (s = 1) the block
+      // is the whole grid and this is never reached.
+      std::size_t j = lead;
       while (j-- > 0) {
         if (id[j] + 1 < rule.count(static_cast<unsigned>(budget[j]))) break;
       }
       // j wraps past 0 only at the grid's end, which the batch check excludes.
       ++id[j];
       place(j);
-      for (std::size_t t = j + 1; t < last; ++t) {
+      for (std::size_t t = j + 1; t < lead; ++t) {
         id[t] = 0;
         place(t);
       }
