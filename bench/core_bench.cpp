@@ -1,5 +1,6 @@
 // Throughput of the numeric core: uniform doubles per second from philox_stream::fill_uniform
-// and terms per second for naive, pairwise and Neumaier summation.
+// and terms per second for naive, pairwise and Neumaier summation, and the fixed cost of one
+// parallel_reduce call (start-up and join of its threads, no real work).
 //
 // Use it to see what the hot-path building blocks cost per sample (a budget for point sets and
 // estimators), not for accuracy: the accuracy of these is tested in tests/core/. Counters are
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "quadmc/core/parallel_reduce.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/summation.hpp"
 
@@ -83,6 +85,28 @@ void BM_neumaier_sum(benchmark::State& state) {
       static_cast<double>(x.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_neumaier_sum)->Arg(4096)->Arg(1 << 22);
+
+// One parallel_reduce over `range(0)` chunks of trivial work on `range(1)` threads: what a call
+// costs before any evaluation (thread start-up or wake-up, hand-out, join, ordered fold). Wall
+// time, since the workers run outside the calling thread's CPU time. With 2 chunks and 2 threads
+// both threads really run (one chunk each), so the figure is the per-call overhead a small cell
+// pays for asking for two threads.
+void BM_parallel_reduce_overhead(benchmark::State& state) {
+  const auto chunks = static_cast<std::size_t>(state.range(0));
+  const auto threads = static_cast<unsigned>(state.range(1));
+  for (auto _ : state) {
+    const double r = quadmc::parallel_reduce(
+        chunks, threads, 0.0, [](std::size_t c) { return static_cast<double>(c); },
+        [](double& acc, double x) { acc += x; });
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_parallel_reduce_overhead)
+    ->ArgNames({"chunks", "threads"})
+    ->Args({2, 1})
+    ->Args({2, 2})
+    ->Args({64, 2})
+    ->UseRealTime();
 
 }  // namespace
 

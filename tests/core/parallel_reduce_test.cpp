@@ -177,6 +177,56 @@ TEST(ParallelReduce, ExceptionFromAChunkPropagatesAndIsThatOfTheLowestFailingChu
   }
 }
 
+TEST(ParallelReduce, NestedCallsFinishWithTheSerialBits) {
+  // A chunk that itself calls parallel_reduce: the inner call runs on a pool thread or on the
+  // caller while the pool's threads may all be busy with the outer call. The pool never makes a
+  // caller wait for a helper to start, so this must finish (a deadlock would hang the test) with
+  // the serial bits.
+  constexpr std::size_t outer = 24;
+  constexpr std::size_t inner = 40;
+  double serial = 0;
+  for (std::size_t c = 0; c < outer; ++c) {
+    double partial = 0;
+    for (std::size_t i = 0; i < inner; ++i) partial += chunk_value(c * inner + i);
+    serial += partial;
+  }
+  for (const unsigned threads : thread_counts) {
+    const double nested = quadmc::parallel_reduce(
+        outer, threads, 0.0,
+        [threads](std::size_t c) {
+          return quadmc::parallel_reduce(
+              inner, threads, 0.0, [c](std::size_t i) { return chunk_value(c * inner + i); },
+              [](double& acc, double x) { acc += x; });
+        },
+        [](double& acc, double x) { acc += x; });
+    EXPECT_EQ(bits_of(nested), bits_of(serial)) << "threads " << threads;
+  }
+}
+
+TEST(ParallelReduce, ConcurrentCallersShareThePoolAndKeepTheirBits) {
+  // Four threads call parallel_reduce at once, many times (as the gallery's workers do): the
+  // pool's threads are lent to whichever caller asks, and each caller's result must still be
+  // the serial one.
+  constexpr std::size_t chunks = 300;
+  double serial = 0;
+  for (std::size_t c = 0; c < chunks; ++c) serial += chunk_value(c);
+  std::vector<int> mismatches(4, 0);
+  {
+    std::vector<std::jthread> callers;
+    for (std::size_t t = 0; t < mismatches.size(); ++t) {
+      callers.emplace_back([&, t] {
+        for (int round = 0; round < 25; ++round) {
+          const unsigned threads = 1 + static_cast<unsigned>((t + round) % 3);
+          if (bits_of(reduce_sum(chunks, threads)) != bits_of(serial)) ++mismatches[t];
+        }
+      });
+    }
+  }
+  for (std::size_t t = 0; t < mismatches.size(); ++t) {
+    EXPECT_EQ(mismatches[t], 0) << "caller " << t;
+  }
+}
+
 TEST(ResolveThreads, ZeroMeansHardwareConcurrency) {
   const unsigned hw = std::thread::hardware_concurrency();
   EXPECT_EQ(quadmc::resolve_threads(0), hw == 0 ? 1u : hw);

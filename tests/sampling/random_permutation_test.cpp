@@ -1,9 +1,13 @@
 #include "quadmc/sampling/random_permutation.hpp"
 
+#include "quadmc/core/simd_level.hpp"
+
 #include <gtest/gtest.h>
 #include <boost/math/distributions/chi_squared.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace {
@@ -28,6 +32,33 @@ TEST(RandomPermutation, IsABijectionForEverySmallSize) {
 
 TEST(RandomPermutation, IsABijectionForLargeAndPowerOfTwoSizes) {
   for (std::uint64_t n : {1024ULL, 1025ULL, 65535ULL, 1000003ULL}) expect_bijection(n, 42);
+}
+
+// apply() runs a vector kernel chosen at run time (AVX-512DQ, AVX2 with an emulated 64-bit
+// multiply, or scalar): at every level this CPU has, each element must equal operator()'s, for
+// sizes that walk (n just above a power of two), that never walk (powers of two), n = 1, the
+// largest n, and runs whose length is not a multiple of the lane count.
+TEST(RandomPermutation, ApplyEqualsElementByElementAtEverySimdLevel) {
+  const quadmc::simd_level saved = quadmc::active_simd_level();
+  constexpr std::uint64_t largest = std::uint64_t{1} << 62;
+  for (const quadmc::simd_level level : quadmc::available_simd_levels()) {
+    quadmc::set_simd_level(level);
+    for (const std::uint64_t n : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3},
+                                  std::uint64_t{1000}, std::uint64_t{1025}, std::uint64_t{65536},
+                                  std::uint64_t{1000003}, (std::uint64_t{1} << 40) + 1, largest}) {
+      const random_permutation p(n, n ^ 0x5bd1e995);
+      for (const std::uint64_t first : {std::uint64_t{0}, n / 3, n > 70 ? n - 70 : 0}) {
+        std::vector<std::uint64_t> out(static_cast<std::size_t>(std::min<std::uint64_t>(
+            67, n - first)));  // 67 = 8·8 + 3: full registers of 4 and 8 lanes and a tail
+        p.apply(first, out);
+        for (std::size_t k = 0; k < out.size(); ++k) {
+          ASSERT_EQ(out[k], p(first + k))
+              << "level " << quadmc::to_string(level) << ", n = " << n << ", element " << first + k;
+        }
+      }
+    }
+  }
+  quadmc::set_simd_level(saved);
 }
 
 // Over many keys, element i of a permutation of [0, 8) lands on each j equally often: a chi-square

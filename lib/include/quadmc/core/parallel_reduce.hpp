@@ -8,11 +8,16 @@
 //
 // Memory stays bounded for any N: chunks are processed in windows of at most `window` slots, each
 // window folded before the next starts. The fold order is the same as with one big window.
-// Threads are std::threads started per call (tens of microseconds), so use it for work of at
-// least a few thousand evaluations; a single chunk or a single thread runs inline.
+// The calling thread runs chunks itself, helped by threads of a persistent pool
+// (core/worker_pool.hpp) that are woken, not started, per window: a call costs about a
+// microsecond more than the work, so small cells may ask for threads too. A single chunk or a
+// single thread runs inline, without the pool. Calls may nest (a chunk may call parallel_reduce)
+// and may run concurrently from several threads: a caller never waits for a helper to start, so
+// busy pool threads mean fewer helpers, never a deadlock, and never other results.
 #pragma once
 
 #include "quadmc/core/chunk_exchange.hpp"
+#include "quadmc/core/worker_pool.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -35,9 +40,11 @@ inline unsigned resolve_threads(unsigned requested) noexcept {
 }
 
 // The most threads (the caller included) that any parallel_reduce called from this thread has
-// run on since the counter was last set to 0. A call with fewer chunks than threads runs on
-// fewer, so this, not the count asked for, is the number of threads a run really used (the
-// runner reports it). One counter per calling thread, so runs on different threads do not mix;
+// run on since the counter was last set to 0: min(threads, chunks of a window) per call. A call
+// with fewer chunks than threads runs on fewer, so this, not the count asked for, is the number
+// of threads a run really used (the runner reports it). (A pool thread busy with another
+// caller's work leaves a call with fewer helpers; that is not counted, as it changes only the
+// speed.) One counter per calling thread, so runs on different threads do not mix;
 // updated once per window of chunks, never per chunk.
 inline unsigned& parallel_reduce_peak_threads() noexcept {
   thread_local unsigned peak = 0;
@@ -59,8 +66,8 @@ std::size_t compute_chunks(Slot* out, std::size_t begin, std::size_t count, unsi
   peak = std::max({peak, workers, 1u});
   std::atomic<std::size_t> next{0};
   std::size_t failed_chunk = count;
-  std::mutex failure_mutex;
-  auto work = [&] {
+  std::mutex failure_mutex;  // taken only when a chunk throws
+  auto work = [&]() noexcept {
     for (std::size_t c = next.fetch_add(1); c < count; c = next.fetch_add(1)) {
       try {
         out[c].value = chunk_fn(begin + c);
@@ -77,11 +84,9 @@ std::size_t compute_chunks(Slot* out, std::size_t begin, std::size_t count, unsi
   if (workers <= 1) {
     work();
   } else {
-    std::vector<std::jthread> pool;
-    pool.reserve(workers - 1);
-    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
-    work();
-    pool.clear();  // joins
+    // Returns once every thread that took a chunk has finished it (the pool's retire
+    // synchronizes through its mutex, so the slots written by helpers are visible here).
+    detail::run_with_helpers(workers - 1, work);
   }
   return failed_chunk;
 }

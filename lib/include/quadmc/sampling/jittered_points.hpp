@@ -84,6 +84,82 @@ class jittered_points {
     const double k_double = static_cast<double>(k);
     double last = static_cast<double>(cell[s - 1]);
     std::uint64_t in_stratum = first % m_;  // points of the current stratum already placed
+    if (m_ == 1 && s >= 2 && s <= 8) {
+      // One point per stratum, 2 ≤ s ≤ 8 (the dimensions where N = k^s is practical): a loop
+      // compiled for each s, so a point is s unrolled shift-and-scale steps from a small array
+      // of cells, the last one stepped per point (no per-axis loop or branch). The same
+      // operations on the same operands as the general loop below, so the same bits.
+      std::array<double, 8> offset{};
+      for (std::size_t j = 0; j + 1 < s; ++j) offset[j] = leading[j];
+      offset[s - 1] = last;
+      const auto place = [&]<std::size_t S>() {
+        for (std::uint64_t p = 0; p < count; ++p) {
+          double* x = out.data() + p * S;
+#pragma GCC unroll 8
+          for (std::size_t j = 0; j < S; ++j) {
+            x[j] = std::min((offset[j] + x[j]) * inv_k, largest_below_one);
+          }
+          offset[S - 1] += 1.0;
+          if (offset[S - 1] == k_double) {  // the row of the last axis ends: carry
+            offset[S - 1] = 0.0;
+            cell[S - 1] = k - 1;
+            grid_.next_cell(cell);
+            // Cells < k ≤ 2^62: through int64_t one conversion instruction, the same double.
+            for (std::size_t j = 0; j + 1 < S; ++j) {
+              offset[j] = static_cast<double>(static_cast<std::int64_t>(cell[j]));
+            }
+          }
+        }
+      };
+      switch (s) {
+        case 2:
+          return place.template operator()<2>();
+        case 3:
+          return place.template operator()<3>();
+        case 4:
+          return place.template operator()<4>();
+        case 5:
+          return place.template operator()<5>();
+        case 6:
+          return place.template operator()<6>();
+        case 7:
+          return place.template operator()<7>();
+        default:
+          return place.template operator()<8>();
+      }
+    }
+    if (m_ == 1) {
+      // One point per stratum, s = 1 or s > 8: the batch in runs of whole rows of the last
+      // axis (the points that share their leading cells). Per run, each leading coordinate is
+      // shifted down its column with its cell in a register, and the last axis's cells are an
+      // induction variable (c, c + 1, …) — no per-point branch. The same operations on the same
+      // operands as the general loop below, so the same bits.
+      for (std::uint64_t p = 0; p < count;) {
+        const std::uint64_t run = std::min<std::uint64_t>(
+            count - p, k - static_cast<std::uint64_t>(last));  // to the end of the row
+        double* row = out.data() + p * s;
+        for (std::size_t j = 0; j + 1 < s; ++j) {
+          const double c = leading[j];
+          for (std::uint64_t r = 0; r < run; ++r) {
+            row[r * s + j] = std::min((c + row[r * s + j]) * inv_k, largest_below_one);
+          }
+        }
+        double c = last;
+        double* x_last = row + (s - 1);
+        for (std::uint64_t r = 0; r < run; ++r, c += 1.0) {
+          x_last[r * s] = std::min((c + x_last[r * s]) * inv_k, largest_below_one);
+        }
+        p += run;
+        last = c;
+        if (last == k_double) {
+          last = 0.0;
+          cell[s - 1] = k - 1;  // so that next_cell carries into the leading axes
+          grid_.next_cell(cell);
+          for (std::size_t j = 0; j + 1 < s; ++j) leading[j] = static_cast<double>(cell[j]);
+        }
+      }
+      return;
+    }
     for (std::uint64_t p = 0; p < count; ++p) {
       double* x = out.data() + p * s;
       for (std::size_t j = 0; j + 1 < s; ++j) {

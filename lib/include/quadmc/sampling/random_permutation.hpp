@@ -18,77 +18,89 @@
 #include "quadmc/core/rng.hpp"
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
 namespace quadmc {
 
+namespace detail {
+
+// The keyed bijection of [0, 2^w) that a random_permutation walks, and its key schedule: three
+// rounds of x ^= key, x = x·odd key mod 2^w, x ^= x >> shift. Exact integer arithmetic, so the
+// vector kernels below give the scalar bits.
+struct permutation_schedule {
+  // Three rounds: two leave visible structure for small n (consecutive i map to an arithmetic
+  // progression modulo 2^w before the last xorshift); three pass the uniformity test of
+  // random_permutation_test.cpp.
+  static constexpr int rounds = 3;
+  std::uint64_t n = 1;
+  std::uint64_t mask = 0;
+  int shift = 1;
+  std::uint64_t keys[2 * rounds] = {};
+
+  std::uint64_t bijection(std::uint64_t x) const noexcept {
+    for (int r = 0; r < rounds; ++r) {
+      x ^= keys[2 * r];
+      x = (x * keys[2 * r + 1]) & mask;
+      x ^= x >> shift;
+    }
+    return x;
+  }
+};
+
+// out[k] = element first + k of the permutation for k < count, at the active SIMD level
+// (core/simd_level.hpp): AVX-512DQ multiplies 8 lanes of 64 bits at once (vpmullq), AVX2 4 lanes
+// with the 64-bit product built from three 32-bit ones; SSE2 and scalar run the scalar loop.
+// lib/src/sampling/permutation_blocks*.cpp.
+void permutation_blocks(const permutation_schedule& p, std::uint64_t first, std::size_t count,
+                        std::uint64_t* out) noexcept;
+
+}  // namespace detail
+
 class random_permutation {
  public:
-  random_permutation(std::uint64_t n, std::uint64_t key) : n_(n) {
+  random_permutation(std::uint64_t n, std::uint64_t key) {
     require(n >= 1 && n <= (std::uint64_t{1} << 62), "permutation size n", n, "1 ≤ n ≤ 2^62");
+    p_.n = n;
     const int bits = std::bit_width(n - 1);
-    mask_ = bits == 0 ? 0 : (~std::uint64_t{0} >> (64 - bits));
+    p_.mask = bits == 0 ? 0 : (~std::uint64_t{0} >> (64 - bits));
     // Half the width (at least 1): each xorshift folds the high half into the low half, which
     // multiplication modulo 2^w alone never does (low bits of a product depend only on low bits).
-    shift_ = (bits + 1) / 2 > 0 ? (bits + 1) / 2 : 1;
+    p_.shift = (bits + 1) / 2 > 0 ? (bits + 1) / 2 : 1;
     std::uint64_t h = mix64(key ^ 0x6a09e667f3bcc909ULL);
-    for (auto& k : keys_) {
+    for (auto& k : p_.keys) {
       h = mix64(h + 0x9e3779b97f4a7c15ULL);
       k = h;
     }
     for (int r = 0; r < rounds; ++r) {
-      keys_[2 * r + 1] |= 1;  // multipliers must be odd
-      keys_[2 * r] &= mask_;  // x ^ (k & mask) = (x ^ k) & mask for x < 2^w: mask once, here
+      p_.keys[2 * r + 1] |= 1;    // multipliers must be odd
+      p_.keys[2 * r] &= p_.mask;  // x ^ (k & mask) = (x ^ k) & mask for x < 2^w: mask once, here
     }
   }
 
-  std::uint64_t size() const noexcept { return n_; }
+  std::uint64_t size() const noexcept { return p_.n; }
 
   // Element i of the permutation, i in [0, n).
   std::uint64_t operator()(std::uint64_t i) const noexcept {
     std::uint64_t x = i;
     do {
-      x = bijection(x);
-    } while (x >= n_);
+      x = p_.bijection(x);
+    } while (x >= p_.n);
     return x;
   }
 
-  // out[k] = (*this)(first + k) for k < out.size(). One pass of the bijection over the whole
-  // run first (independent iterations without a branch, which the CPU overlaps), then the cycle
-  // walk only for the values that landed in [n, 2^w): fewer than half of them, none when n is a
-  // power of two.
-  // (A copy of *this is used: out and the keys are both uint64_t, so without it every store to
-  // out would force the keys to be reloaded.)
+  // out[k] = (*this)(first + k) for k < out.size(): one pass of the bijection over the whole run
+  // in vector lanes, then the cycle walk for the lanes that landed in [n, 2^w) (fewer than half,
+  // none when n is a power of two); detail::permutation_blocks.
   void apply(std::uint64_t first, std::span<std::uint64_t> out) const noexcept {
-    const random_permutation p = *this;
-#pragma GCC unroll 4
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = p.bijection(first + k);
-    for (std::uint64_t& x : out) {
-      while (x >= p.n_) x = p.bijection(x);
-    }
+    detail::permutation_blocks(p_, first, out.size(), out.data());
   }
 
  private:
-  // Three rounds: two leave visible structure for small n (consecutive i map to an arithmetic
-  // progression modulo 2^w before the last xorshift); three pass the uniformity test of
-  // random_permutation_test.cpp.
-  static constexpr int rounds = 3;
+  static constexpr int rounds = detail::permutation_schedule::rounds;
 
-  // The keyed bijection of [0, 2^w) that the permutation walks.
-  std::uint64_t bijection(std::uint64_t x) const noexcept {
-    for (int r = 0; r < rounds; ++r) {
-      x ^= keys_[2 * r];
-      x = (x * keys_[2 * r + 1]) & mask_;
-      x ^= x >> shift_;
-    }
-    return x;
-  }
-
-  std::uint64_t n_;
-  std::uint64_t mask_ = 0;
-  int shift_ = 1;
-  std::uint64_t keys_[2 * rounds] = {};
+  detail::permutation_schedule p_;
 };
 
 }  // namespace quadmc
