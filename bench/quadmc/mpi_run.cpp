@@ -200,7 +200,7 @@ enum record_kind : std::uint64_t { ran = 0, skipped = 1 };
 struct rank_outcome {
   std::optional<std::size_t> failed_cell;  // the first cell that failed here (plan index)
   std::string failure;
-  std::vector<std::pair<std::size_t, std::vector<quadmc::repetition_result> > > ran;
+  std::vector<std::pair<std::size_t, quadmc::cell_run> > ran;
   std::vector<std::pair<std::size_t, std::string> > skipped;
 };
 
@@ -471,7 +471,7 @@ quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run
   std::string failure;
   quadmc::run_output out;
   if (w.rank == 0) {
-    std::vector<std::optional<std::vector<quadmc::repetition_result> > > by_cell(p.cells.size());
+    std::vector<std::optional<quadmc::cell_run> > by_cell(p.cells.size());
     std::vector<std::optional<std::string> > skip_reason(p.cells.size());
     std::optional<std::size_t> first_failed;
     for (unsigned r = 0; r < w.size; ++r) {
