@@ -42,6 +42,11 @@ void kill_child(pid_t child) {
   ::kill(child, SIGKILL);
 }
 
+std::atomic<bool>& quiet() {
+  static std::atomic<bool> value{false};
+  return value;
+}
+
 [[noreturn]] void on_signal(int signal) {
   shared_state& s = state();
   // The mutex before the kill, never after: the main thread, waiting for the child without the
@@ -61,11 +66,13 @@ void kill_child(pid_t child) {
   } catch (...) {
     done = "could not remove everything this run created";
   }
-  // A progress bar may be drawn on the terminal without a newline: start on a clean line.
-  if (::isatty(STDERR_FILENO) != 0) std::fputs("\r\033[K", stderr);
-  fmt::print(stderr, "quadmc: interrupted by {}{}{}\n", signal == SIGINT ? "SIGINT" : "SIGTERM",
-             done.empty() ? "" : "; ", done);
-  std::fflush(stderr);
+  if (!quiet().load()) {
+    // A progress bar may be drawn on the terminal without a newline: start on a clean line.
+    if (::isatty(STDERR_FILENO) != 0) std::fputs("\r\033[K", stderr);
+    fmt::print(stderr, "quadmc: interrupted by {}{}{}\n", signal == SIGINT ? "SIGINT" : "SIGTERM",
+               done.empty() ? "" : "; ", done);
+    std::fflush(stderr);
+  }
   ::_exit(128 + signal);
 }
 
@@ -81,6 +88,10 @@ void install() {
     }
     on_signal(signal);
   }).detach();
+}
+
+void set_quiet(bool value) {
+  quiet().store(value);
 }
 
 std::unique_lock<std::mutex> hold() {

@@ -38,6 +38,11 @@ std::unique_lock<std::mutex> hold();
 // results; results/x is as it was". An empty function: nothing to undo.
 void set_cleanup(std::function<std::string()> cleanup);
 
+// Whether a signal's line is printed. An MPI rank other than 0 is quiet: rank 0 speaks for the
+// run, and mpirun ends the other ranks with SIGTERM whenever one rank exits non-zero, which is
+// no news to the user (mpi_run.hpp).
+void set_quiet(bool quiet);
+
 // The running child process (the plot script), started in a process group of its own: on a
 // signal the whole group is killed (SIGKILL: its output is discarded anyway) and reaped before
 // the command exits, so no plot process outlives it. 0: none.

@@ -345,6 +345,7 @@ int main(int argc, char** argv) {
   mpi_session mpi;
   try {
     mpi.world = quadmc_cli::mpi::start(argc, argv);
+    interruption::set_quiet(mpi.world.rank != 0);
   } catch (const std::exception& e) {
     fmt::print(stderr, "quadmc: {}\n", e.what());
     return exit_failure;
