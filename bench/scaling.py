@@ -10,8 +10,9 @@ Measured: each scene is run with `--threads 1` on one process, then under
 with [output] plots = false is run from a scratch folder); the two runs' convergence.csv must be
 equal in every column but the timing ones (bench/same_results.py), or the script fails.
 
-Modelled: the cost of a cell is its measured seconds per estimate × its repetitions (the
-one-process run's convergence.csv). A cell costing more than total/(4K) is split across the K
+Modelled: the cost of a cell is what the one-process run spent on it (its convergence.csv):
+`seconds`, the wall time of its repetitions, plus its stable timing, `seconds_per_estimate` ×
+`timed_estimates` when it was repeated (`--model-only FOLDER…` re-models kept runs, see --keep). A cell costing more than total/(4K) is split across the K
 ranks by chunks (bench/quadmc/mpi_run.hpp): it takes cost / min(K, C), C its chunks per
 repetition (N / 12288 rounded up: sampling's chunk, the smaller of the library's two, so the
 model is on the generous side for rules); the other cells go to ranks by LPT (largest first to
@@ -39,11 +40,13 @@ MPIRUN = ["mpirun", "--oversubscribe", "--allow-run-as-root", "--mca", "btl", "s
 def cells(csv_path):
     with open(csv_path, newline="", encoding="utf-8") as f:
         for row in csv.DictReader(f):
-            reps = int(row["repetitions"])
-            seconds = float(row["seconds"])
+            seconds = float(row["seconds"])  # all repetitions of the cell
+            timed = int(row.get("timed_estimates") or 0)
+            if timed > 1:
+                seconds += float(row["seconds_per_estimate"]) * timed
             evals = int(row["evaluations"])
             name = f'{row["method"]} × {row["integrand"]}, N = {row["N"] or row["tolerance"]}'
-            yield name, seconds * reps, max(1, math.ceil(evals / CHUNK))
+            yield name, seconds, max(1, math.ceil(evals / CHUNK))
 
 
 def model(costs, ranks):
@@ -86,6 +89,7 @@ def main():
     ap.add_argument("--quadmc", required=True)
     ap.add_argument("--scene", action="append", required=True)
     ap.add_argument("--out", required=True)
+    ap.add_argument("--keep", help="keep the 1- and 2-rank results folders here")
     args = ap.parse_args()
     quadmc = os.path.abspath(args.quadmc)
     rows = []
@@ -110,6 +114,10 @@ def main():
             if same.returncode != 0:
                 sys.exit(f"scaling.py: 2 ranks differ from 1 on {name}:\n{same.stdout}")
             costs = list(cells(os.path.join(one, "convergence.csv")))
+            if args.keep:
+                for folder in (one, two):
+                    shutil.copytree(folder, os.path.join(args.keep, os.path.basename(folder)),
+                                    dirs_exist_ok=True)
             row = {"scene": name, "cells": len(costs), "one_rank_s": t1, "two_ranks_s": t2,
                    "measured_speedup_2": t1 / t2}
             for k in (8, 64, 1024):
