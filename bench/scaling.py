@@ -74,6 +74,19 @@ def model(costs, ranks):
     return total / makespan, len(split), bound
 
 
+def shown_args():
+    """The command line as the page shows it: --keep names a scratch folder of this machine."""
+    args, skip = [], False
+    for a in sys.argv[1:]:
+        if skip:
+            skip = False
+        elif a == "--keep":
+            skip = True
+        elif not a.startswith("--keep="):
+            args.append(a)
+    return args
+
+
 def timed(command, cwd):
     start = time.monotonic()
     done = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
@@ -133,7 +146,7 @@ def main():
         w.writeheader()
         w.writerows(rows)
     lines = ["# Scale-out on Open MPI", "",
-             "Made by `" + " ".join(["/usr/bin/python3", "bench/scaling.py"] + sys.argv[1:]) + "`"
+             "Made by `" + " ".join(["/usr/bin/python3", "bench/scaling.py"] + shown_args()) + "`"
              " (the method and the model are in the script's docstring). One thread per rank; "
              "every column but timing of the 2-rank run equals the 1-rank run "
              "(`bench/same_results.py`).", "",
