@@ -32,6 +32,9 @@ for source in $(ls lib/src/{core,functions,rules,sampling,estimators,analysis,me
   isa=()
   case "$source" in
     *_avx2.cpp) isa=(-mavx2) ;;
+    # As lib/CMakeLists.txt compiles them: the Latin hypercube permutation needs AVX-512DQ's
+    # 64-bit multiply (its dispatch checks DQ too).
+    *sampling/permutation_blocks_avx512.cpp) isa=(-mavx512f -mavx512dq) ;;
     *_avx512.cpp) isa=(-mavx512f) ;;
   esac
   if [ ! -f "$object" ] || [ "$source" -nt "$object" ] || [ -n "$(find lib/include -newer "$object" -name '*.hpp' -print -quit)" ]; then
