@@ -11,6 +11,7 @@
 #include "quadmc/sampling/periodogram.hpp"
 
 #include "build_provenance.hpp"
+#include "cli_validators.hpp"
 #include "interruption.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
@@ -354,16 +355,8 @@ CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request) {
                    "Independent realizations averaged in each power spectrum, 2 to 100000 "
                    "(default 256)")
       ->check(CLI::Range(std::uint64_t{2}, std::uint64_t{100000}));
-  // CLI11 would otherwise read "-3" into the unsigned seed as 2^64 − 3.
-  const CLI::Validator non_negative(
-      [](std::string& text) {
-        return text.find('-') == std::string::npos
-                   ? std::string()
-                   : fmt::format("expected an integer K ≥ 0, got {}", text);
-      },
-      "K ≥ 0");
   gallery->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key, default 2026)")
-      ->check(non_negative);
+      ->check(non_negative_integer());
   gallery
       ->add_option("--threads", request.threads,
                    "Threads, 0 = all cores, at most 4096 (default 0; one point set per thread)")

@@ -14,6 +14,7 @@
 #include "quadmc/report/results_folder.hpp"
 
 #include "build_provenance.hpp"
+#include "cli_validators.hpp"
 #include "interruption.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
@@ -258,16 +259,8 @@ CLI::App* add_render_subcommand(CLI::App& app, render_request& request) {
       "scene, against the exact image, into results/<scene name>/");
   render->add_option("scene", request.scene_file, "Render scene file (TOML)")->required();
   render->add_option("--out", request.out, "Output folder (default: results/<scene name>)");
-  // CLI11 would otherwise read "-3" into the unsigned seed as 2^64 − 3.
-  const CLI::Validator non_negative(
-      [](std::string& text) {
-        return text.find('-') == std::string::npos
-                   ? std::string()
-                   : fmt::format("expected an integer K ≥ 0, got {}", text);
-      },
-      "K ≥ 0");
   render->add_option("--seed", request.seed, "Seed K ≥ 0 (default: the scene's `seed`)")
-      ->check(non_negative);
+      ->check(non_negative_integer());
   render
       ->add_option("--threads", request.threads,
                    "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
