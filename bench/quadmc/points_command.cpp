@@ -1,6 +1,8 @@
 // `quadmc points`: see points_command.hpp.
 #include "points_command.hpp"
 
+#include "cli_validators.hpp"
+
 #include "quadmc/core/errors.hpp"
 #include "quadmc/estimators/point_set_catalogue.hpp"
 
@@ -26,8 +28,11 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
   points->add_option("--s", request.s, "Dimension s ≥ 1")
       ->required()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
-  points->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key)")->required();
-  points->add_option("--stream", request.stream, "Stream of the seed (default 0)");
+  points->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key)")
+      ->required()
+      ->check(non_negative_integer());
+  points->add_option("--stream", request.stream, "Stream of the seed (default 0)")
+      ->check(non_negative_integer());
   points->add_option("--randomization", request.randomization,
                      "sobol: owen|fast_owen|lms_shift|shift|none; halton: owen|permutation|none; "
                      "lattice: shift|none (default: the set's first)");

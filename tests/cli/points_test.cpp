@@ -55,6 +55,22 @@ void expect_one_line_error(const std::vector<std::string>& args, const std::stri
   EXPECT_TRUE(r.out.empty()) << describe(r);
 }
 
+TEST(PointsCommand, RefusesANegativeSeedOrStreamAsAUsageError) {
+  // CLI11 alone reads "-3" into an unsigned as 2^64 − 3 and would print the points of that seed.
+  for (const char* option : {"--seed", "--stream"}) {
+    scratch_folder dir;
+    std::vector<std::string> args{"points", "sobol", "--n", "4", "--s", "2", "--seed", "1"};
+    args.insert(args.end(), {option, "-3"});
+    const command_result r = run_quadmc(dir, args);
+    EXPECT_EQ(r.exit_status, 2) << describe(r);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
+    EXPECT_NE(r.err.find(std::string(option) + ": expected an integer K ≥ 0, got -3"),
+              std::string::npos)
+        << describe(r);
+    EXPECT_TRUE(r.out.empty()) << describe(r);
+  }
+}
+
 TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
   expect_one_line_error({"points", "sobol", "--n", "1000", "--s", "2", "--seed", "1"}, "--n",
                         "nearest valid sizes 512 and 1024");
