@@ -135,10 +135,15 @@ class report {
         "Machine: {}, {} hardware threads (shared with other work while measuring); quadmc's "
         "kernels at SIMD level {} (chosen at run time, core/simd_level.hpp). Compiler: "
         "GCC {}; build: {}. GSL {}, Boost {}, cubature (Debian libcubature-dev). Whole run: "
-        "{:.0f} s; load average (1/5/15 min) {} before, {} after.\n\n",
+        "{:.0f} s{}; load average (1/5/15 min) {} before, {} after.\n\n",
         cpu_model(), std::thread::hardware_concurrency(),
         quadmc::to_string(quadmc::active_simd_level()), __VERSION__, QUADMC_PEERS_BUILD,
-        GSL_VERSION, BOOST_LIB_VERSION, st_.wall_seconds, st_.load_before, st_.load_after);
+        GSL_VERSION, BOOST_LIB_VERSION, st_.wall_seconds,
+        st_.phase_seconds.size() == 3
+            ? fmt::format(" (methods {:.0f} s, QMC points {:.0f} s, peak memory {:.0f} s)",
+                          st_.phase_seconds[0], st_.phase_seconds[1], st_.phase_seconds[2])
+            : std::string(),
+        st_.load_before, st_.load_after);
     // The same fields, in the same words, as the header of a `quadmc run` page and meta.csv.
     o << fmt::format("- quadmc: {}, commit {}\n- compiler: {}\n- SIMD levels available: {}\n\n",
                      st_.build.version, st_.build.commit, st_.build.compiler,
@@ -421,7 +426,8 @@ class report {
          "Linux carries it over fork and exec, so a child would report the parent's peak "
          "(bench/common/peak_rss.hpp). Jittered and tensor sizes are the nearest valid ones "
          "(k² and (n+1)²); the lattice holds at most 2^20 points, so it is run at 2^19 and "
-         "2^20 (its N in parentheses). Baseline: the same child doing no integration "
+         "2^20, and the Halton set (2–5 M points/s) at most at 10⁷ to keep the study short "
+         "(their N in parentheses). Baseline: the same child doing no integration "
          "(libraries, one integrand). What grows with N is bounded: parallel_reduce folds at "
          "most 4096 chunk results at a time (core/parallel_reduce.hpp), so the slots stop "
          "growing at 4096 chunks — 4096 × 128-byte sample_statistics = 512 KiB for Monte Carlo "

@@ -119,6 +119,7 @@ struct study {
   std::vector<point_agreement> agreement;  // QMC peers: same kind of points as quadmc's
   long rss_baseline_kib = 0;               // the same child doing no integration
   double wall_seconds = 0.0;               // the whole run
+  std::vector<double> phase_seconds;       // methods, QMC points, peak memory
   quadmc::provenance build;  // what made the numbers (meta.csv, the README's machine paragraph)
 };
 

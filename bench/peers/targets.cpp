@@ -35,6 +35,15 @@ mark judge(double ratio, double goal, run_share numerator, run_share denominator
   return ratio >= goal ? mark::met : mark::missed;
 }
 
+namespace {
+
+// A run's share of the machine, "?" when unknown (a subprocess).
+std::string cores_text(double cores) {
+  return std::isnan(cores) ? std::string("?") : fmt::format("{:.2f}", cores);
+}
+
+}  // namespace
+
 std::vector<target_spec> issue_18_targets(std::uint64_t two_thread_min_n) {
   const std::vector<std::string> genz{"genz_oscillatory", "genz_gaussian"};
   const std::vector<std::string> points{"(points only)"};
@@ -231,7 +240,8 @@ std::string targets_table(const std::vector<target_line>& lines,
         o << " " << symbol(c.m);
       }
       if (l.spec.show_cores || c.m == mark::not_measurable) {
-        o << fmt::format(" ({:.2f} / {:.2f} cores)", c.numerator.cores, c.denominator.cores);
+        o << fmt::format(" ({} / {} cores)", cores_text(c.numerator.cores),
+                         cores_text(c.denominator.cores));
       }
       o << " |";
     }

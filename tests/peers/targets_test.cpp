@@ -145,6 +145,12 @@ TEST(PeersTargetMarks, PointRowsCompareAcrossFamiliesOnTheirOwnIntegrandName) {
   ASSERT_EQ(lines.size(), 1U);
   EXPECT_DOUBLE_EQ(*lines[0].cells[0].ratio, 6.0);
   EXPECT_EQ(lines[0].cells[0].m, mark::met);
+  // Starved on quadmc's side: ⚠, and scipy's unknown share printed as "?".
+  rows[0].cpu_seconds = 0.5;
+  const auto starved_lines = evaluate_targets({t}, rows, {2});
+  EXPECT_EQ(starved_lines[0].cells[0].m, mark::not_measurable);
+  EXPECT_NE(targets_table(starved_lines, {2}).find("6.00× ⚠ (0.50 / ? cores)"), std::string::npos)
+      << targets_table(starved_lines, {2});
   // The same rows under run = "throughput" are not the point rows: nothing to compare.
   t.run = "throughput";
   EXPECT_FALSE(evaluate_targets({t}, rows, {2})[0].cells[0].ratio.has_value());
