@@ -39,7 +39,7 @@ inline std::uint64_t jittered_size(std::uint64_t n, std::size_t s) {
   return tensor_grid_size(k, s);
 }
 
-// The smallest k^s ≥ N: the throughput size of jittered points (issue 18's two-thread target is
+// The smallest k^s ≥ N: the throughput size of jittered points (the two-thread target is
 // stated at N ≥ 2^22; 45^4 < 2^22 ≤ 46^4).
 inline std::uint64_t jittered_size_at_least(std::uint64_t n, std::size_t s) {
   auto k = std::max<std::uint64_t>(

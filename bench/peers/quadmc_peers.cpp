@@ -1,6 +1,6 @@
 // quadmc_peers: quadmc's plain Monte Carlo, jittered and Latin hypercube points, scrambled Sobol',
 // Halton and lattice points and tensor Simpson/trapezoid, each beside the integrand alone on a
-// batch in cache (the limit of its rate), and issue 18's targets marked met or missed
+// batch in cache (the limit of its rate), and the performance targets marked met or missed
 // (targets.hpp), measured in one run beside what a user would otherwise pick — a hand-written
 // xoshiro256+ loop, GSL plain/MISER/VEGAS, Boost.Math naive_monte_carlo and its 1D rules,
 // cubature's hcubature/pcubature — on the same integrands (Genz oscillatory and Gaussian, the sum

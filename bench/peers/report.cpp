@@ -218,11 +218,12 @@ class report {
 
   void targets(std::ostringstream& o) const {
     const std::vector<target_line> lines =
-        evaluate_targets(issue_18_targets(c_.throughput_n), st_.rows, c_.dimensions);
+        evaluate_targets(performance_targets(c_.throughput_n), st_.rows, c_.dimensions);
     const target_tally t = tally(lines);
     o << "## Targets (measured, never asserted)\n\n"
-         "Issue 18's targets, then the goals of issue 7 that still stand (plain MC against the "
-         "scalar loop, GSL and Boost). Issue 18 replaced issue 7's jittered ≥ 0.7× plain MC "
+         "The goals of docs/design.md#performance-targets, then the first goals that still stand "
+         "(plain MC against the scalar loop, GSL and Boost). The current goals replaced the "
+         "first ones for jittered points ≥ 0.7× plain MC "
          "(now ≥ 0.85×), tensor Simpson/trapezoid ≥ 2× plain MC (now ≥ 1.5× at s ≥ 2) and "
          "two threads ≥ 1.8× one thread at N ≥ 10⁶ for five methods (now ≥ 1.9× at N ≥ 2^22 "
          "for every method). Ratios of evaluations per second of the throughput rows (one "

@@ -32,8 +32,8 @@ struct configuration {
   std::vector<std::uint64_t> boost_naive_ladder{100000, 1000000};  // ≥ 0.1 s per run anyway
   std::vector<std::uint64_t> tolerance_exponents{2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
   // 2^22: at quadmc's 150–250 M evaluations/s a one-thread run of 2^20 lasts 4–7 ms, so the
-  // fixed cost of starting threads blurred the two-thread ratio; 2^22 runs last 15–30 ms. Issue
-  // 18's two-thread target is stated at N ≥ 2^22, so every method that holds that many points
+  // fixed cost of starting threads blurred the two-thread ratio; 2^22 runs last 15–30 ms. The
+  // two-thread target is stated at N ≥ 2^22, so every method that holds that many points
   // (jittered: the smallest k^s ≥ N; tensor rules: the smallest (n+1)^s ≥ N) is run at least at it.
   std::uint64_t throughput_n = std::uint64_t{1} << 22;
   std::uint64_t tensor_throughput_n = std::uint64_t{1} << 22;

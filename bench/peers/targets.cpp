@@ -44,7 +44,7 @@ std::string cores_text(double cores) {
 
 }  // namespace
 
-std::vector<target_spec> issue_18_targets(std::uint64_t two_thread_min_n) {
+std::vector<target_spec> performance_targets(std::uint64_t two_thread_min_n) {
   const std::vector<std::string> genz{"genz_oscillatory", "genz_gaussian"};
   const std::vector<std::string> points{"(points only)"};
   const std::string mc = "quadmc plain MC";
@@ -122,7 +122,7 @@ std::vector<target_spec> issue_18_targets(std::uint64_t two_thread_min_n) {
                {},
                0,
                false});
-  // Issue 7's goals that issue 18 did not replace.
+  // The first goals that still stand beside the current ones.
   t.push_back({"plain MC (1 thread) / scalar reference loop",
                "throughput",
                mc,

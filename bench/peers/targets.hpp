@@ -6,8 +6,8 @@
 // per second) or QMC point rows (points per second) — on named integrands, for every s of the
 // table; a cell can be outside the target's scope (an s the goal does not name, a run smaller
 // than the target's N) and is then shown but not counted. Not for measuring: nothing here
-// times anything. The goals are issue 18's (README of results/peers says which older goals they
-// replace).
+// times anything. The goals are those of docs/design.md#performance-targets (the page says which
+// first goals they replaced).
 #pragma once
 
 #include "study.hpp"
@@ -58,9 +58,9 @@ struct target_spec {
   bool show_cores = false;              // print the two runs' cores in every cell
 };
 
-// Issue 18's targets, then issue 7's that still stand (plain MC against the scalar loop, GSL and
-// Boost), for quadmc's methods by the names measurement.cpp gives them.
-std::vector<target_spec> issue_18_targets(std::uint64_t two_thread_min_n);
+// The current targets, then the first ones that still stand (plain MC against the scalar loop, GSL
+// and Boost), for quadmc's methods by the names measurement.cpp gives them.
+std::vector<target_spec> performance_targets(std::uint64_t two_thread_min_n);
 
 struct target_cell {
   std::size_t s = 0;

@@ -159,7 +159,7 @@ TEST(PeersTargetMarks, PointRowsCompareAcrossFamiliesOnTheirOwnIntegrandName) {
 TEST(PeersTargetMarks, EveryTwoThreadTargetIsAtTheGivenNAndEveryLineHasAGoal) {
   const std::uint64_t n = std::uint64_t{1} << 22;
   int two_thread = 0;
-  for (const target_spec& t : issue_18_targets(n)) {
+  for (const target_spec& t : performance_targets(n)) {
     EXPECT_GT(t.goal, 0.0) << t.label;
     EXPECT_FALSE(t.integrands.empty()) << t.label;
     if (t.numerator_threads == 2) {
