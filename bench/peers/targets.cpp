@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -226,7 +227,10 @@ std::string targets_table(const std::vector<target_line>& lines,
   o << "\n";
   for (const target_line& l : lines) {
     std::string goal = fmt::format("≥ {}×", l.spec.goal);
-    if (l.spec.min_evaluations > 0) goal += fmt::format(" (N ≥ {})", l.spec.min_evaluations);
+    if (const std::uint64_t n = l.spec.min_evaluations; n > 0) {
+      goal += std::has_single_bit(n) ? fmt::format(" (N ≥ 2^{})", std::countr_zero(n))
+                                     : fmt::format(" (N ≥ {})", n);
+    }
     o << "| " << l.spec.label << " | " << l.integrand << " | " << goal << " |";
     for (const target_cell& c : l.cells) {
       if (!c.ratio) {

@@ -131,6 +131,10 @@ TEST(PeersTargetMarks, ATwoThreadRunBelowTheTargetsNIsShownNotCounted) {
   const target_tally t = tally(lines);
   EXPECT_EQ(t.met + t.missed + t.not_measurable, 1);
   const std::string table = targets_table(lines, dims);
+  EXPECT_NE(table.find("| ≥ 1.9× (N ≥ 2^22) | 2.00× (N = 1048576 < 4194304) (1.98 / 1.00 cores) "
+                       "| — |"),
+            std::string::npos)
+      << table;
   EXPECT_NE(table.find("1.70× ❌ (1.99 / 1.00 cores) | — |"), std::string::npos) << table;
 }
 
