@@ -3,11 +3,13 @@
 // that quadmc's plain Monte Carlo gives the same bits on 1 and 2 threads and Boost's need not.
 //
 // Use it from quadmc_peers.cpp only; the README the program writes repeats how it measures:
-//  - throughput: each method at N ≥ 4·10^6 (2^22 points for Monte Carlo; the smallest grid with
-//    ≥ 4·10^6 points for tensor rules; jittered k^s nearest 2^22), run throughput_runs times with
-//    the same seed in rounds over all methods, the best (highest evaluations per second) kept: on
-//    a shared 2-core machine the noise only ever slows a run down, so the best run is the closest
-//    to the method's own cost;
+//  - throughput: each method at N ≥ 2^22 (2^22 points for Monte Carlo and Sobol'; the smallest
+//    grid with ≥ 2^22 points for tensor rules; jittered the smallest k^s ≥ 2^22; the lattice and
+//    Halton sets at 2^20), run with the same seed in rounds over all methods, at least
+//    min_throughput_runs times and until min_throughput_seconds have passed (at most
+//    throughput_runs), the best (highest evaluations per second) kept: on a shared 2-core machine
+//    the noise only ever slows a run down, so the best run is the closest to the method's own
+//    cost; first of all, the limit: the integrand alone on one batch of points in cache;
 //  - work-precision ladder: N = 10^2, 10^2.5, …, 10^6 (one thread); random methods are run with
 //    `repetitions` independent seeds and the RMS error is kept, with the median of their times;
 //    each run is repeated at least twice and until 2 ms have passed (at most 100 times) and its

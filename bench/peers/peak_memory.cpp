@@ -12,11 +12,16 @@
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
+#include "quadmc/sampling/rank1_lattice_points.hpp"
+#include "quadmc/sampling/sobol_points.hpp"
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -26,21 +31,35 @@
 namespace quadmc::peers {
 namespace {
 
-constexpr std::array<std::string_view, 7> methods = {
-    "baseline", "reference", "plain", "jittered", "latin_hypercube", "simpson", "trapezoid"};
+constexpr std::array<std::string_view, 12> methods = {
+    "baseline",        "reference",  "plain",       "jittered",
+    "latin_hypercube", "simpson",    "trapezoid",   "sobol_lms_shift",
+    "sobol_fast_owen", "sobol_owen", "halton_owen", "lattice_shift"};
 constexpr std::array<std::string_view, 3> integrands = {"genz_oscillatory", "genz_gaussian",
                                                         "sum_of_coordinates"};
 
-// The methods whose peak memory the report shows, by their `--one` name.
-const std::vector<std::string> rss_methods{"plain", "jittered", "latin_hypercube", "simpson",
-                                           "trapezoid"};
+// The methods whose peak memory the report shows: `--one` name and the name of the study's rows.
+const std::vector<std::pair<std::string, std::string>> rss_methods{
+    {"plain", "quadmc plain MC"},
+    {"jittered", "quadmc jittered"},
+    {"latin_hypercube", "quadmc Latin hypercube"},
+    {"simpson", "quadmc tensor Simpson"},
+    {"trapezoid", "quadmc tensor trapezoid"},
+    {"sobol_lms_shift", "quadmc sobol lms_shift"},
+    {"sobol_fast_owen", "quadmc sobol fast_owen"},
+    {"sobol_owen", "quadmc sobol owen"},
+    {"halton_owen", "quadmc halton owen"},
+    {"lattice_shift", "quadmc lattice shift"}};
 
-std::string rss_method_name(const std::string& key) {
-  if (key == "plain") return "quadmc plain MC";
-  if (key == "jittered") return "quadmc jittered";
-  if (key == "latin_hypercube") return "quadmc Latin hypercube";
-  if (key == "simpson") return "quadmc tensor Simpson";
-  return "quadmc tensor trapezoid";
+// The size a method is run at for a requested N: the nearest it holds (jittered k^s, tensor
+// (n+1)^s are chosen inside run_one_on); the lattice holds at most 2^20 points, so the largest
+// power of two ≤ min(N, 2^20); the digit-scrambled Halton set generates 2–5 M points/s, so
+// 10^8 points would cost 10–25 s of the study: at most 10^7 (one byte per point would still
+// add 9 MiB, above the report's 4 MiB bound).
+std::uint64_t rss_size(const std::string& method, std::uint64_t n) {
+  if (method == "lattice_shift") return std::bit_floor(std::min(n, max_lattice_points));
+  if (method == "halton_owen") return std::min<std::uint64_t>(n, 10000000);
+  return n;
 }
 
 template <class F>
@@ -62,9 +81,20 @@ int run_one_on(const F& f, const std::string& method, std::uint64_t n, unsigned 
     value = integrate(f, simpson_rule{}, tensor_panels(n, s, true, false), threads).value;
   } else if (method == "trapezoid") {
     value = integrate(f, trapezoid_rule{}, tensor_panels(n, s, false, false), threads).value;
+  } else if (method == "sobol_lms_shift") {
+    value = monte_carlo(f, sobol_points<linear_matrix_scramble>(s, n, seed, 1), threads).value;
+  } else if (method == "sobol_fast_owen") {
+    value = monte_carlo(f, sobol_points<fast_owen_scramble>(s, n, seed, 1), threads).value;
+  } else if (method == "sobol_owen") {
+    value = monte_carlo(f, sobol_points<owen_scramble>(s, n, seed, 1), threads).value;
+  } else if (method == "halton_owen") {
+    value = monte_carlo(f, halton_points<nested_digit_scramble>(s, n, seed, 1), threads).value;
+  } else if (method == "lattice_shift") {
+    value = monte_carlo(f, rank1_lattice_points<no_periodization>(s, n, seed, 1), threads).value;
   } else {
-    std::cerr << "--one: unknown method " << method
-              << " (baseline, reference, plain, jittered, latin_hypercube, simpson, trapezoid)\n";
+    std::string known;
+    for (std::string_view m : methods) known += (known.empty() ? "" : ", ") + std::string(m);
+    std::cerr << "--one: unknown method " << method << " (" << known << ")\n";
     return 2;
   }
   if (!std::isfinite(value)) return 1;
@@ -106,11 +136,12 @@ void measure_peak_memory(const configuration& c, study& out) {
         {"--one", method, "genz_gaussian", "2", std::to_string(n), "2"});
   };
   out.rss_baseline_kib = one("baseline", 1);
-  for (const auto& m : rss_methods) {
-    std::cerr << " " << m << std::flush;
-    rss_row r{rss_method_name(m), {}};
+  for (const auto& [key, name] : rss_methods) {
+    std::cerr << " " << key << std::flush;
+    rss_row r{name, {}, {}};
     for (std::uint64_t n : c.rss_sizes) {
-      r.kib.push_back(one(m, n));
+      r.n.push_back(rss_size(key, n));
+      r.kib.push_back(one(key, r.n.back()));
     }
     out.rss.push_back(r);
   }

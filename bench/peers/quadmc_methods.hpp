@@ -1,6 +1,7 @@
 // quadmc's own methods as peers: plain Monte Carlo over independent, jittered and Latin hypercube
-// points (estimators/monte_carlo.hpp) and the tensor-product Simpson and trapezoid rules
-// (rules/tensor_product.hpp), with the sizes each one accepts.
+// points (estimators/monte_carlo.hpp), over scrambled Sobol', Halton and lattice points, and the
+// tensor-product Simpson and trapezoid rules (rules/tensor_product.hpp), with the sizes each one
+// accepts.
 //
 // Use it from the peers driver only. Sizes: independent and Latin hypercube points take any N;
 // jittered points need N = k^s (k = round(N^{1/s}), so the nearest such size is measured);
@@ -15,9 +16,12 @@
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
+#include "quadmc/sampling/rank1_lattice_points.hpp"
+#include "quadmc/sampling/sobol_points.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +36,16 @@ namespace quadmc::peers {
 inline std::uint64_t jittered_size(std::uint64_t n, std::size_t s) {
   const auto k = std::max<std::uint64_t>(
       1, static_cast<std::uint64_t>(std::llround(std::pow(static_cast<double>(n), 1.0 / s))));
+  return tensor_grid_size(k, s);
+}
+
+// The smallest k^s ≥ N: the throughput size of jittered points (the two-thread target is
+// stated at N ≥ 2^22; 45^4 < 2^22 ≤ 46^4).
+inline std::uint64_t jittered_size_at_least(std::uint64_t n, std::size_t s) {
+  auto k = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(std::floor(std::pow(static_cast<double>(n), 1.0 / s))));
+  while (k > 1 && tensor_grid_size(k - 1, s) >= n) --k;  // pow may round up
+  while (tensor_grid_size(k, s) < n) ++k;
   return tensor_grid_size(k, s);
 }
 
@@ -82,7 +96,35 @@ peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
   m.random = true;
   m.kind = control_kind::evaluations;
   m.ladder = distinct_sorted(controls);
-  m.throughput_control = size(throughput_n);
+  m.throughput_control = throughput_n;
+  if constexpr (std::is_same_v<P, jittered_points>) {
+    m.throughput_control = jittered_size_at_least(throughput_n, s);
+  }
+  m.run = [&f, threads, s](std::uint64_t n, std::uint64_t seed) {
+    const P points(s, n, seed, stream_id({n}));
+    const estimate e = monte_carlo(f, points, threads);
+    return run_result{e.value, e.evaluations};
+  };
+  return m;
+}
+
+// Plain Monte Carlo over one randomization of a quasi-Monte Carlo set P (sobol_points,
+// halton_points, rank1_lattice_points: one constructor shape), built inside the run: the call a
+// `sobol`, `halton` or `lattice` method makes for one replicate (the suite's methods repeat it
+// for error bars; the rate per evaluation is the same). Throughput only: no ladder (the work-
+// precision ladders of these sets are the scenes' business, results/default), so they cost the
+// study little time.
+template <class P, class F>
+peer_method quadmc_quasi_monte_carlo(std::string name, const F& f, unsigned threads,
+                                     std::uint64_t throughput_n) {
+  const std::size_t s = f.dimension();
+  peer_method m;
+  m.name = std::move(name);
+  m.family = "quadmc";
+  m.threads = threads;
+  m.random = true;
+  m.kind = control_kind::evaluations;
+  m.throughput_control = throughput_n;
   m.run = [&f, threads, s](std::uint64_t n, std::uint64_t seed) {
     const P points(s, n, seed, stream_id({n}));
     const estimate e = monte_carlo(f, points, threads);
@@ -92,7 +134,7 @@ peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
 }
 
 // Tensor-product rule R with n panels per axis. The throughput size is the smallest grid with at
-// least throughput_n points, so that the two-thread target (N ≥ 10^6) applies to it.
+// least throughput_n points, so that the two-thread target (N ≥ 2^22) applies to it.
 template <class R, class F>
 peer_method quadmc_tensor_rule(std::string name, const F& f, unsigned threads,
                                const std::vector<std::uint64_t>& ladder,
