@@ -35,11 +35,12 @@ TEST(LatinHypercubePoints, ExactlyOnePointPerRowInEveryDimension) {
 }
 
 // AVX2 and AVX-512 run the permutations and the placement fused, lane by lane in the batch's
-// layout; scalar and SSE2 run the per-axis loop (and AVX2 does for n > 2^32). At every level this
+// layout; scalar and SSE2 run the per-axis loop (and AVX2 does for n > 2^31). At every level this
 // CPU has, each coordinate must be bit for bit the documented min((π_j(i) + u)·fl(1/N),
 // largest_below_one), with π_j rebuilt here from its key (random_permutation::operator()) and u =
 // uniform i·s + j of the stream: for s whose lanes fill registers exactly and not (1…9, 12, 16),
-// N that walks, never walks, or exceeds 2^32, and batches with a tail shorter than a block.
+// N that walks, never walks, is AVX2's largest (2^31) or above, and batches with a tail shorter
+// than a block.
 TEST(LatinHypercubePoints, FusedKernelIsThePerAxisFormulaAtEverySimdLevel) {
   const simd_level saved = active_simd_level();
   for (const simd_level level : available_simd_levels()) {
@@ -47,7 +48,8 @@ TEST(LatinHypercubePoints, FusedKernelIsThePerAxisFormulaAtEverySimdLevel) {
     for (const std::size_t s : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 12u, 16u}) {
       for (const std::uint64_t n :
            {std::uint64_t{1}, std::uint64_t{7}, std::uint64_t{1000}, std::uint64_t{4096},
-            std::uint64_t{100003}, (std::uint64_t{1} << 33) + 5}) {
+            std::uint64_t{100003}, std::uint64_t{1} << 31, (std::uint64_t{1} << 31) + 1,
+            (std::uint64_t{1} << 33) + 5}) {
         const latin_hypercube_points p(s, n, 21, n + s);
         const philox_stream rng(21, n + s);
         std::vector<random_permutation> axes;

@@ -44,7 +44,7 @@ bool latin_hypercube_place(const latin_hypercube_lanes& lanes, std::uint64_t fir
                            std::size_t count, double* x) noexcept {
 #if defined(__x86_64__)
   static const bool has_avx512dq = __builtin_cpu_supports("avx512dq");
-  const bool narrow = lanes.n <= (std::uint64_t{1} << 32);
+  const bool narrow = lanes.n <= (std::uint64_t{1} << 31);
   switch (active_simd_level()) {
     case simd_level::avx512:
       if (has_avx512dq) {

@@ -47,7 +47,7 @@ inline void latin_hypercube_place_scalar(const latin_hypercube_lanes& lanes, std
 }
 
 #if defined(__x86_64__)
-// AVX2: n ≤ 2^32 only (each product mod 2^w, w ≤ 32, is one 32-bit multiply).
+// AVX2: n ≤ 2^31 only (8 lanes of 32 bits; the tables' keys32 and point32).
 void latin_hypercube_place_avx2(const latin_hypercube_lanes& lanes, std::uint64_t first,
                                 std::size_t count, double* x) noexcept;
 // AVX-512DQ: any n.
