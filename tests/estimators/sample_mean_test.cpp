@@ -1,10 +1,15 @@
 #include "quadmc/estimators/sample_mean.hpp"
 
+#include "quadmc/core/rng.hpp"
+#include "quadmc/core/summation.hpp"
+
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -92,6 +97,53 @@ TEST(SampleMean, StratumDifferencesUseTriplesInsideARow) {
   EXPECT_EQ(triples, 5);  // starting at t = 0, 6, 12, 15, 21
   const estimate e = sample_mean(p, 1, values);
   EXPECT_NEAR(e.std_error * e.std_error, sum / triples / 25, 1e-16);
+}
+
+// The stratum-difference sum runs in runs of counted triples; it must give the bits of the
+// point-at-a-time loop (rebuilt here): Σd² per batch in triple order, each batch's sum / 6 added
+// with Neumaier summation, for rows of every length around the triple size and a long one, and
+// batches that start at every residue mod 3 (a chunk's batches start at multiples of 256 ≡ 1).
+TEST(SampleMean, StratumDifferencesEqualThePointAtATimeLoopBitForBit) {
+  philox_stream rng(3, 7);
+  std::vector<double> y(12288);
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = rng.uniform(i) * 10.0 - 3.0;
+  for (const std::uint64_t row : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 9u, 10u, 1024u}) {
+    for (const std::uint64_t start : {std::uint64_t{0}, std::uint64_t{12288}}) {
+      for (const std::size_t last_batch : {std::size_t{256}, std::size_t{100}}) {
+        const std::size_t total = 47 * 256 + last_batch;
+        sample_statistics stats({variance_kind::stratum_differences, row});
+        neumaier_sum reference;
+        std::uint64_t triples = 0;
+        double triple[3] = {0.0, 0.0, 0.0};
+        for (std::size_t b = 0; b < total; b += 256) {
+          const std::size_t count = std::min<std::size_t>(256, total - b);
+          const std::span<const double> batch(y.data() + b, count);
+          stats.add_batch(start + b, batch);
+          double batch_sum = 0.0;
+          for (std::size_t i = 0; i < count; ++i) {
+            const std::uint64_t index = start + b + i;
+            triple[index % 3] = batch[i];
+            if (index % 3 == 2 && index % row >= 2) {
+              const double d = triple[0] - 2.0 * triple[1] + triple[2];
+              batch_sum += d * d;
+              ++triples;
+            }
+          }
+          reference.add(batch_sum / 6.0);
+        }
+        const double n = static_cast<double>(total);
+        const double expected = std::sqrt(reference.value() / static_cast<double>(triples) / n);
+        const double got = stats.result().std_error;
+        if (triples == 0) {
+          EXPECT_TRUE(std::isnan(got)) << "row " << row;
+          continue;
+        }
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected))
+            << "row " << row << ", start " << start << ", last batch " << last_batch << ": " << got
+            << " vs " << expected;
+      }
+    }
+  }
 }
 
 // k < 3: no triple in a row, no estimate; NaN rather than a made-up number.

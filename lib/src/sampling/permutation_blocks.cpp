@@ -1,7 +1,8 @@
 // random_permutation::apply's kernel: the scalar reference and the run-time choice among the
 // vector kernels (permutation_kernels.hpp). Every kernel computes the same integer function, so
 // the choice changes only the speed (tests/sampling/random_permutation_test.cpp checks each
-// level against operator()).
+// level against operator()). Also the run-time choice of Latin hypercube's fused kernel
+// (tests/sampling/latin_hypercube_points_test.cpp checks each level against the per-axis loop).
 #include "permutation_kernels.hpp"
 
 #include "quadmc/core/simd_level.hpp"
@@ -37,6 +38,35 @@ void permutation_blocks(const permutation_schedule& p, std::uint64_t first, std:
   }
 #endif
   permutation_blocks_scalar(p, first, count, out);
+}
+
+bool latin_hypercube_place(const latin_hypercube_lanes& lanes, std::uint64_t first,
+                           std::size_t count, double* x) noexcept {
+#if defined(__x86_64__)
+  static const bool has_avx512dq = __builtin_cpu_supports("avx512dq");
+  const bool narrow = lanes.n <= (std::uint64_t{1} << 31);
+  switch (active_simd_level()) {
+    case simd_level::avx512:
+      if (has_avx512dq) {
+        latin_hypercube_place_avx512(lanes, first, count, x);
+        return true;
+      }
+      if (!narrow) return false;
+      latin_hypercube_place_avx2(lanes, first, count, x);
+      return true;
+    case simd_level::avx2:
+      if (!narrow) return false;
+      latin_hypercube_place_avx2(lanes, first, count, x);
+      return true;
+    default:
+      break;
+  }
+#endif
+  (void)lanes;
+  (void)first;
+  (void)count;
+  (void)x;
+  return false;
 }
 
 }  // namespace quadmc::detail

@@ -8,6 +8,8 @@
 
 #include <immintrin.h>
 
+#include <numeric>
+
 namespace quadmc::detail {
 namespace {
 
@@ -63,6 +65,60 @@ void permutation_blocks_avx2(const permutation_schedule& p, std::uint64_t first,
     index = _mm256_add_epi64(index, step);
   }
   if (k < count) permutation_blocks_scalar(p, first + k, count - k, out + k);
+}
+
+// Lanes in the batch's layout (latin_hypercube_lanes), 8 lanes of 32 bits per register:
+// lcm(s, 8) lanes = lcm(s, 8)/s points fill lcm(s, 8)/8 registers; lane l evaluates axis l mod s
+// at point l / s with that axis's keys (from the 32-bit table, as memory operands). n ≤ 2^31, so
+// every index and value is below 2^31 and w ≤ 31: x·key mod 2^w is the low 32 bits of the
+// product (vpmulld) masked, the signed compare tests x ≥ n, and vcvtdq2pd converts a row
+// exactly, as the scalar conversion does.
+void latin_hypercube_place_avx2(const latin_hypercube_lanes& table, std::uint64_t first,
+                                std::size_t count, double* x) noexcept {
+  // A copy: x and the tables are not known apart, so every store to x would reload the pointers.
+  const latin_hypercube_lanes lanes = table;
+  const std::size_t s = lanes.s;
+  const std::size_t block_lanes = lanes.period;  // lcm(s, 8)
+  const std::size_t block_points = block_lanes / s;
+  const __m256i mask = _mm256_set1_epi32(static_cast<int>(lanes.mask));
+  const __m128i shift = _mm_cvtsi32_si128(lanes.shift);
+  const __m256i n_minus_1 = _mm256_set1_epi32(static_cast<int>(lanes.n - 1));
+  const __m256d scale = _mm256_set1_pd(lanes.inv_n);
+  const __m256d below_one = _mm256_set1_pd(largest_below_one);
+  const std::size_t period = lanes.period;
+  const auto key = [&](int k, std::size_t l) {
+    return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(lanes.keys32 + k * period + l));
+  };
+  const auto bijection = [&](__m256i v, std::size_t l) {
+    for (int r = 0; r < permutation_schedule::rounds; ++r) {
+      v = _mm256_xor_si256(v, key(2 * r, l));
+      v = _mm256_and_si256(_mm256_mullo_epi32(v, key(2 * r + 1, l)), mask);
+      v = _mm256_xor_si256(v, _mm256_srl_epi32(v, shift));
+    }
+    return v;
+  };
+  const auto place = [&](double* out, __m128i rows) {
+    const __m256d row = _mm256_cvtepi32_pd(rows);
+    const __m256d u = _mm256_loadu_pd(out);
+    _mm256_storeu_pd(out, _mm256_min_pd(_mm256_mul_pd(_mm256_add_pd(row, u), scale), below_one));
+  };
+  std::size_t p = 0;
+  for (; p + block_points <= count; p += block_points) {
+    const __m256i base = _mm256_set1_epi32(static_cast<int>(first + p));
+    double* block = x + p * s;
+    for (std::size_t l = 0; l < block_lanes; l += 8) {
+      const __m256i point = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(lanes.point32 + l));
+      __m256i v = bijection(_mm256_add_epi32(base, point), l);
+      for (__m256i out_of_range = _mm256_cmpgt_epi32(v, n_minus_1);
+           !_mm256_testz_si256(out_of_range, out_of_range);
+           out_of_range = _mm256_cmpgt_epi32(v, n_minus_1)) {
+        v = _mm256_blendv_epi8(v, bijection(v, l), out_of_range);
+      }
+      place(block + l, _mm256_castsi256_si128(v));
+      place(block + l + 4, _mm256_extracti128_si256(v, 1));
+    }
+  }
+  latin_hypercube_place_scalar(lanes, first + p, count - p, x + p * s);
 }
 
 }  // namespace quadmc::detail

@@ -136,8 +136,10 @@ class sample_statistics {
     double triple[3] = {triple_[0], triple_[1], triple_[2]};
     double batch_sum = 0.0;
     std::uint64_t triples = 0;
-    for (const double v : y) {
-      triple[position] = v;
+    std::size_t i = 0;
+    // A triple begun in the previous batch: its last one or two points, one at a time.
+    for (; position != 0 && i < y.size(); ++i) {
+      triple[position] = y[i];
       if (position == 2 && in_row >= 2) {
         const double d = triple[0] - 2.0 * triple[1] + triple[2];
         batch_sum += d * d;
@@ -146,6 +148,35 @@ class sample_statistics {
       position = position == 2 ? 0 : position + 1;
       in_row = in_row + 1 == row ? 0 : in_row + 1;
     }
+    // Whole triples. With row ≥ 3, the triple whose first point has row position q counts iff
+    // q ≤ row − 3 (the same test as the last point's position ≥ 2): the counted triples come in
+    // runs of ⌊(row − 3 − q)/3⌋ + 1, each run a plain loop, and between two runs lies at most one
+    // triple across a row boundary (q ∈ {row − 2, row − 1}). The sum is taken in the same order
+    // as one point at a time, so the bits are those of the loop above. Rows shorter than 3 hold
+    // no triple.
+    if (row >= 3) {
+      const std::uint64_t last_start = row - 3;
+      while (i + 3 <= y.size()) {
+        if (in_row <= last_start) {
+          const std::size_t run = static_cast<std::size_t>(
+              std::min<std::uint64_t>((last_start - in_row) / 3 + 1, (y.size() - i) / 3));
+          for (std::size_t t = 0; t < run; ++t, i += 3) {
+            const double d = y[i] - 2.0 * y[i + 1] + y[i + 2];
+            batch_sum += d * d;
+          }
+          triples += run;
+          in_row += 3 * run;
+        } else {
+          i += 3;
+          in_row += 3;
+        }
+        if (in_row >= row) in_row -= row;  // in_row ≤ row + 2 < 2·row
+      }
+    } else {
+      i += (y.size() - i) / 3 * 3;
+    }
+    // A triple that the next batch finishes: its first one or two points.
+    for (std::size_t p = 0; i < y.size(); ++i, ++p) triple[p] = y[i];
     for (int k = 0; k < 3; ++k) triple_[k] = triple[k];
     groups_ += triples;
     group_sum_.add(batch_sum / 6.0);

@@ -33,6 +33,22 @@
 
 namespace quadmc {
 
+namespace detail {
+
+// Largest s that detail::jittered_rows places (a kernel is compiled for each s up to it).
+inline constexpr std::size_t jittered_rows_max_dimension = 8;
+
+// Places `count` points of a jittered set with one point per stratum, in place: x holds their
+// count·s uniforms (row-major), the first point lies in the stratum with cell coordinates
+// cell[0..s) (integers as doubles), the next ones follow row-major (last axis fastest, wrapping
+// at k strata per axis), and coordinate j becomes min((cell_j + u)·inv_k, largest_below_one).
+// 1 ≤ s ≤ jittered_rows_max_dimension. At the active SIMD level (core/simd_level.hpp), bitwise
+// the same at every level: lib/src/sampling/jittered_rows*.cpp.
+void jittered_rows(std::size_t s, double k, double inv_k, const double* cell, double* x,
+                   std::size_t count) noexcept;
+
+}  // namespace detail
+
 class jittered_points {
  public:
   // N = k^s points, one per stratum; rejects other N with the nearest valid sizes.
@@ -84,52 +100,19 @@ class jittered_points {
     const double k_double = static_cast<double>(k);
     double last = static_cast<double>(cell[s - 1]);
     std::uint64_t in_stratum = first % m_;  // points of the current stratum already placed
-    if (m_ == 1 && s >= 2 && s <= 8) {
-      // One point per stratum, 2 ≤ s ≤ 8 (the dimensions where N = k^s is practical): a loop
-      // compiled for each s, so a point is s unrolled shift-and-scale steps from a small array
-      // of cells, the last one stepped per point (no per-axis loop or branch). The same
-      // operations on the same operands as the general loop below, so the same bits.
-      std::array<double, 8> offset{};
+    if (m_ == 1 && s <= detail::jittered_rows_max_dimension) {
+      // One point per stratum, s ≤ 8 (the dimensions where N = k^s is practical): whole rows of
+      // the last axis in vector registers at the active SIMD level (detail::jittered_rows), the
+      // same operations on the same operands as the loops below, so the same bits at every level.
+      std::array<double, detail::jittered_rows_max_dimension> offset{};
       for (std::size_t j = 0; j + 1 < s; ++j) offset[j] = leading[j];
       offset[s - 1] = last;
-      const auto place = [&]<std::size_t S>() {
-        for (std::uint64_t p = 0; p < count; ++p) {
-          double* x = out.data() + p * S;
-#pragma GCC unroll 8
-          for (std::size_t j = 0; j < S; ++j) {
-            x[j] = std::min((offset[j] + x[j]) * inv_k, largest_below_one);
-          }
-          offset[S - 1] += 1.0;
-          if (offset[S - 1] == k_double) {  // the row of the last axis ends: carry
-            offset[S - 1] = 0.0;
-            cell[S - 1] = k - 1;
-            grid_.next_cell(cell);
-            // Cells < k ≤ 2^62: through int64_t one conversion instruction, the same double.
-            for (std::size_t j = 0; j + 1 < S; ++j) {
-              offset[j] = static_cast<double>(static_cast<std::int64_t>(cell[j]));
-            }
-          }
-        }
-      };
-      switch (s) {
-        case 2:
-          return place.template operator()<2>();
-        case 3:
-          return place.template operator()<3>();
-        case 4:
-          return place.template operator()<4>();
-        case 5:
-          return place.template operator()<5>();
-        case 6:
-          return place.template operator()<6>();
-        case 7:
-          return place.template operator()<7>();
-        default:
-          return place.template operator()<8>();
-      }
+      detail::jittered_rows(s, k_double, inv_k, offset.data(), out.data(),
+                            static_cast<std::size_t>(count));
+      return;
     }
     if (m_ == 1) {
-      // One point per stratum, s = 1 or s > 8: the batch in runs of whole rows of the last
+      // One point per stratum, s > 8: the batch in runs of whole rows of the last
       // axis (the points that share their leading cells). Per run, each leading coordinate is
       // shifted down its column with its cell in a register, and the last axis's cells are an
       // induction variable (c, c + 1, …) — no per-point branch. The same operations on the same

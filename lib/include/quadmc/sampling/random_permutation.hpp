@@ -81,6 +81,10 @@ class random_permutation {
 
   std::uint64_t size() const noexcept { return p_.n; }
 
+  // The bijection's parameters, for kernels that evaluate several permutations at once
+  // (detail::latin_hypercube_place).
+  const detail::permutation_schedule& schedule() const noexcept { return p_; }
+
   // Element i of the permutation, i in [0, n).
   std::uint64_t operator()(std::uint64_t i) const noexcept {
     std::uint64_t x = i;
