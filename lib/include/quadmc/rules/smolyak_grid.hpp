@@ -38,10 +38,14 @@
 //    (d = 3) and 11.8 at s = 8, L = 8 (d = 3), against runs of 3.3 and 2.1 along the last axis
 //    alone, which is what pays: a row's fixed cost (the carry into the leading axes, which
 //    recomputes their products) was the larger part of a point's cost;
-//  - d is the largest of 2 and 3 with d < s and N_d(L) ≤ smolyak_block::block_nodes_cap (16384)
-//    nodes, else 1 (so rows stay in cache, and a grid of s ≥ 2 is never one block); the tables
-//    are the process's (smolyak_block.hpp), not the grid's, and a call maps the block's N_d(L)·d
-//    coordinates to the box once;
+//  - d is the largest of 2 and 3 with d ≤ s and N_d(L) ≤ smolyak_block::block_nodes_cap (16384)
+//    nodes, else 1 (so rows stay in cache); the tables are the process's (smolyak_block.hpp), not
+//    the grid's, and a call maps the block's N_d(L)·d coordinates to the box once. With d = s
+//    (s = 2 to L = 11, s = 3 to L = 9 for Clenshaw–Curtis) the whole grid is one block and one
+//    row: P = 1, so a weight is T_L[i] itself (1.0·T, bit for bit) and the walk is a straight
+//    copy of the table's prefix — no leading axis, no carry. At s = 2 the d = 1 walk it replaces
+//    had rows of 8 points on average (half the first axis's ids are born at level L and hold one
+//    point each), so a row's fixed cost had made it 0.71× tensor Simpson's throughput;
 //  - nodes are the tuples of 1D ids (leading ids, block node) in lexicographic order of the
 //    leading ids, the block in shell order. count[j][r], the number of tuples of axes j…s−1
 //    with levels summing to ≤ r (an s × (L + 1) table; count[s − d][r] = N_d(r)), decodes an index
@@ -381,7 +385,7 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
     k += run;
     if (k == end && i < count) {
       // Carry: the rightmost leading axis whose next id still fits its budget moves; the axes
-      // after it restart at id 0 (birth 0 always fits). With no leading axis (s = 1) the block
+      // after it restart at id 0 (birth 0 always fits). With no leading axis (d = s) the block
       // is the whole grid and this is never reached.
       std::size_t j = lead;
       while (j-- > 0) {
