@@ -411,6 +411,7 @@ TEST(SmolyakGrid, WeightsAreTheSurplusFormulaBitForBitAndEachNodeComesOnce) {
                                {2, 12},
                                {3, 5},
                                {3, 7},
+                               {3, 10},
                                {4, 6},
                                {5, 4},
                                {8, 4},
@@ -485,7 +486,9 @@ struct scalar_gaussian {
 
 // The block walk changed the order of the arithmetic (s ≥ 3, and s = 2 at the levels where the
 // whole grid is one block): each weight now sums the block's terms in long double and the leading
-// product's in double (none when d = s), and the nodes of a row come in shell order. Both it and
+// product's in double (none when d = s), and the nodes of a row come in shell order; with one
+// leading axis the nodes come in birth groups (s = 2, L = 13: the weights are the previous walk's
+// bits, only the order of the sum differs). Both it and
 // the previous walk evaluate w(x) = Σ_k Π_j d_{k_j}(x_j) with at most n = s·(L + 2) roundings on
 // each term's path (per axis one difference, one product and ≤ L additions; the block's long double
 // part costs < 1 double rounding), so each is within γ_n·|w|(x) of the exact sum [Higham 2002,
@@ -497,9 +500,8 @@ struct scalar_gaussian {
 TEST(SmolyakGrid, BlockWalkAgreesWithThePreviousWalkWithinTheRoundingBound) {
   const auto gamma = [](double n) { return n * eps / (1.0 - n * eps); };
   for (const auto& [s, L] : std::vector<std::pair<std::size_t, unsigned>>{
-           {2, 11}, {3, 9}, {3, 10}, {4, 9}, {5, 6}, {8, 5}, {16, 3}}) {
+           {2, 11}, {2, 13}, {3, 9}, {3, 10}, {4, 9}, {5, 6}, {8, 5}, {16, 3}}) {
     const smolyak_grid g(cc(), s, L);
-    ASSERT_GE(g.block_axes(), 2u) << s;
     const grid_points p = all_points(g);
     const auto ids = ids_of(cc(), g, p);
     ASSERT_EQ(ids.size(), g.size());
@@ -541,14 +543,27 @@ TEST(SmolyakGrid, BlockWalkAgreesWithThePreviousWalkWithinTheRoundingBound) {
   }
 }
 
+// One point at a time, from every index, and batches of 97 from every 7th index: the points of
+// one whole-grid batch, for each walk — birth groups (s = d + 1: s = 4, L = 6 and s = 3, L = 10
+// with d = 3 and 2, s = 2, L = 12 with d = 1, where both row directions occur), rows (s = 5,
+// L = 6; s = 3, L = 12 with d = 1) and the whole grid as one block (s = 2, L = 6).
 TEST(SmolyakGrid, AnyBatchStartGivesTheSameNodesAndWeights) {
-  const smolyak_grid g(cc(), 4, 6);
-  const grid_points p = all_points(g);
-  std::vector<double> x(4), w(1);
-  for (std::uint64_t i = 0; i < g.size(); ++i) {
-    g.generate(i, x, w);
-    for (std::size_t j = 0; j < 4; ++j) ASSERT_EQ(x[j], p.x[i * 4 + j]) << i;
-    ASSERT_EQ(std::bit_cast<std::uint64_t>(w[0]), std::bit_cast<std::uint64_t>(p.w[i])) << i;
+  for (const auto& [s, L] : std::vector<std::pair<std::size_t, unsigned>>{
+           {4, 6}, {3, 10}, {2, 12}, {5, 6}, {3, 12}, {2, 6}}) {
+    const smolyak_grid g(cc(), s, L);
+    const grid_points p = all_points(g);
+    std::vector<double> x(97 * s), w(97);
+    for (std::uint64_t i = 0; i < g.size(); ++i) {
+      const std::size_t n = (i % 7 == 0) ? std::min<std::uint64_t>(97, g.size() - i) : 1;
+      g.generate(i, std::span<double>(x.data(), n * s), std::span<double>(w.data(), n));
+      for (std::size_t q = 0; q < n; ++q) {
+        for (std::size_t j = 0; j < s; ++j) {
+          ASSERT_EQ(x[q * s + j], p.x[(i + q) * s + j]) << "s " << s << " L " << L << " " << i;
+        }
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(w[q]), std::bit_cast<std::uint64_t>(p.w[i + q]))
+            << "s " << s << " L " << L << " " << i;
+      }
+    }
   }
 }
 

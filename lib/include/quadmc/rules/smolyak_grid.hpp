@@ -43,13 +43,23 @@
 //    the grid's, and a call maps the block's N_d(L)·d coordinates to the box once. With d = s
 //    (s = 2 to L = 11, s = 3 to L = 9 for Clenshaw–Curtis) the whole grid is one block and one
 //    row: P = 1, so a weight is T_L[i] itself (1.0·T, bit for bit) and the walk is a straight
-//    copy of the table's prefix — no leading axis, no carry. At s = 2 the d = 1 walk it replaces
-//    had rows of 8 points on average (half the first axis's ids are born at level L and hold one
-//    point each), so a row's fixed cost had made it 0.71× tensor Simpson's throughput;
-//  - nodes are the tuples of 1D ids (leading ids, block node) in lexicographic order of the
-//    leading ids, the block in shell order. count[j][r], the number of tuples of axes j…s−1
+//    copy of the table's prefix — no leading axis, no carry;
+//  - with one leading axis (s = d + 1: s = 2 above the cap, s = 3 at L ≥ 10, s = 4 to L = 9 for
+//    Clenshaw–Curtis) the grid is walked by birth groups: for b = 0 … L, the new_count(b) ids
+//    born at level b on the first axis times the N_d(L − b) block nodes. Rows over the block
+//    (one id, its block row) are short where the ids are many — at s = 2 half the first axis's
+//    ids are born at level L and hold one point each (rows of 8 points on average at L = 13,
+//    which made the walk 0.71× tensor Simpson's throughput) — so a group with more ids than
+//    block nodes goes the other way: one row per block node q over the group's ids, w_k =
+//    Σ_u T_(r−u)[q]·d_(b+u)[k], the differences read contiguously by birth level
+//    (nested_rule::differences_by_birth). The products are those of the rows over the block
+//    (P = d_(b+u) exactly with one leading axis), added in the same ascending u, so the weights
+//    are the same bits either way; only the order of the nodes in the grid differs;
+//  - otherwise nodes are the tuples of 1D ids (leading ids, block node) in lexicographic order of
+//    the leading ids, the block in shell order. count[j][r], the number of tuples of axes j…s−1
 //    with levels summing to ≤ r (an s × (L + 1) table; count[s − d][r] = N_d(r)), decodes an index
-//    into its tuple in O(s·L) once per batch; the batch then walks like an odometer;
+//    into its tuple in O(s·L) once per batch; the batch then walks like an odometer (a birth
+//    group's offset decodes the same way, by the group sizes);
 //  - the truncated products P_j = Π_{i<j} A_i are kept per leading axis and recomputed only when
 //    axis j moves (O(L²) at a carry), from the 1D rule's by-node difference tables
 //    (nested_rule.hpp), in double; the block's T_l are sums over d axes formed in long double
@@ -192,21 +202,38 @@ class smolyak_grid {
   template <class Coordinate>
   void walk(std::uint64_t first, std::span<double> x, std::span<double> weights,
             const Coordinate& coordinate, const double* block_coordinate) const {
+    // One leading axis (s = d + 1): by birth groups; none or more: by rows.
+    const bool groups = s_ == block_axes_ + 1;
     switch (block_axes_) {
       case 1:
-        walk_rows<1>(first, x, weights, coordinate, block_coordinate);
+        if (groups) {
+          walk_groups<1>(first, x, weights, coordinate, block_coordinate);
+        } else {
+          walk_rows<1>(first, x, weights, coordinate, block_coordinate);
+        }
         break;
       case 2:
-        walk_rows<2>(first, x, weights, coordinate, block_coordinate);
+        if (groups) {
+          walk_groups<2>(first, x, weights, coordinate, block_coordinate);
+        } else {
+          walk_rows<2>(first, x, weights, coordinate, block_coordinate);
+        }
         break;
       default:
-        walk_rows<3>(first, x, weights, coordinate, block_coordinate);
+        if (groups) {
+          walk_groups<3>(first, x, weights, coordinate, block_coordinate);
+        } else {
+          walk_rows<3>(first, x, weights, coordinate, block_coordinate);
+        }
         break;
     }
   }
   template <std::size_t D, class Coordinate>
   void walk_rows(std::uint64_t first, std::span<double> x, std::span<double> weights,
                  const Coordinate& coordinate, const double* block_coordinate) const;
+  template <std::size_t D, class Coordinate>
+  void walk_groups(std::uint64_t first, std::span<double> x, std::span<double> weights,
+                   const Coordinate& coordinate, const double* block_coordinate) const;
 
   const nested_rule* rule_;
   std::size_t s_;
@@ -399,6 +426,94 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
         place(t);
       }
       k = 0;
+    }
+  }
+}
+
+template <std::size_t D, class Coordinate>
+void smolyak_grid::walk_groups(std::uint64_t first, std::span<double> x, std::span<double> weights,
+                               const Coordinate& coordinate, const double* block_coordinate) const {
+  require_weighted_batch(s_, total_, first, x, weights);
+  const std::size_t count = weights.size();
+  if (count == 0) return;
+  constexpr std::size_t s = D + 1;
+  const unsigned L = level_;
+  const nested_rule& rule = *rule_;
+  std::array<const double*, max_levels> table{};
+  std::array<std::size_t, max_levels> block_size{};
+  for (unsigned l = 0; l <= L; ++l) {
+    table[l] = block_weights(l);
+    block_size[l] = static_cast<std::size_t>(block_count(l));
+  }
+  // The group of `first`: birth b of the first axis, n0 = new_count(b) ids times N_d(L − b)
+  // block nodes each.
+  unsigned b = 0;
+  std::uint64_t rest = first;
+  while (true) {
+    const std::uint64_t group = rule.new_count(b) * block_size[L - b];
+    if (rest < group) break;
+    rest -= group;
+    ++b;
+  }
+  for (std::size_t i = 0; i < count; ++b, rest = 0) {
+    const unsigned r = L - b;
+    const auto n0 = static_cast<std::size_t>(rule.new_count(b));
+    const std::size_t m = block_size[r];
+    const std::size_t first_id = b == 0 ? 0 : static_cast<std::size_t>(rule.count(b - 1));
+    if (n0 <= m) {
+      // Rows over the block: the first axis's id first_id + k fixed, the block nodes q … in
+      // shell order; P[u] = d_(b+u)(id), so these are walk_rows' bits (its P_1 is exactly d).
+      auto k = static_cast<std::size_t>(rest / m);
+      auto q = static_cast<std::size_t>(rest % m);
+      for (; i < count && k < n0; ++k, q = 0) {
+        const std::size_t id = first_id + k;
+        const std::size_t run = std::min(m - q, count - i);
+        const double* p = rule.differences_from_birth(id);
+        double* w_out = weights.data() + i;
+        detail::scaled_row<false>(w_out, p[0], table[r] + q, run);
+        const double leading = coordinate(0, id);
+        double* point = x.data() + i * s;
+        const double* block = block_coordinate + q * D;
+#pragma GCC unroll 4
+        for (std::size_t c = 0; c < run; ++c, point += s, block += D) {
+          point[0] = leading;
+          std::memcpy(point + 1, block, D * sizeof(double));
+        }
+        for (unsigned u = 1; u <= r; ++u) {
+          const std::size_t size = block_size[r - u];
+          if (size <= q) break;
+          if (p[u] == 0.0) continue;
+          detail::scaled_row<true>(w_out, p[u], table[r - u] + q, std::min(size - q, run));
+        }
+        i += run;
+      }
+    } else {
+      // Rows over the first axis (more new ids than block nodes: the high birth levels, where
+      // the rows over the block would be a few points long): block node q fixed, ids first_id
+      // + k …, w_k = Σ_u T_(r−u)[q]·d_(b+u)[k] in ascending u over the u with q < N_d(r − u) —
+      // the same products (a·b = b·a) added in the same order as the rows over the block; the
+      // zero products those skip add ±0 to a weight that is never −0 (walk_rows), so the bits
+      // are the same.
+      auto q = static_cast<std::size_t>(rest / n0);
+      auto k = static_cast<std::size_t>(rest % n0);
+      for (; i < count && q < m; ++q, k = 0) {
+        const std::size_t run = std::min(n0 - k, count - i);
+        double* w_out = weights.data() + i;
+        detail::scaled_row<false>(w_out, table[r][q], rule.differences_by_birth(b, 0) + k, run);
+        for (unsigned u = 1; u <= r && q < block_size[r - u]; ++u) {
+          detail::scaled_row<true>(w_out, table[r - u][q], rule.differences_by_birth(b, u) + k,
+                                   run);
+        }
+        std::array<double, D> block{};
+        std::memcpy(block.data(), block_coordinate + q * D, D * sizeof(double));
+        double* point = x.data() + i * s;
+#pragma GCC unroll 4
+        for (std::size_t c = 0; c < run; ++c, point += s) {
+          point[0] = coordinate(0, first_id + k + c);
+          std::memcpy(point + 1, block.data(), D * sizeof(double));
+        }
+        i += run;
+      }
     }
   }
 }
