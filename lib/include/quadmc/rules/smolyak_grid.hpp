@@ -125,7 +125,7 @@ class smolyak_grid {
   void generate(std::uint64_t first, std::span<double> nodes, std::span<double> weights) const {
     walk(
         first, nodes, weights, [this](std::size_t, std::size_t id) { return rule_->node(id); },
-        block_nodes());
+        block_nodes(), rule_->nodes().data());
   }
 
   class on_box {
@@ -146,23 +146,32 @@ class smolyak_grid {
       }
       if (identity) {
         block_coordinate_ = unit;
-        return;
+      } else {
+        mapped_block_ = std::make_unique_for_overwrite<double[]>(n * d);
+        for (std::size_t c = 0; c < d; ++c) {
+          const double a = map_.lower[leading + c];
+          const double w = map_.width[leading + c];
+          double* out = mapped_block_.get() + c;
+          const double* in = unit + c;
+          for (std::size_t i = 0; i < n; ++i) out[i * d] = a + w * in[i * d];
+        }
+        block_coordinate_ = mapped_block_.get();
       }
-      mapped_block_ = std::make_unique_for_overwrite<double[]>(n * d);
-      for (std::size_t c = 0; c < d; ++c) {
-        const double a = map_.lower[leading + c];
-        const double w = map_.width[leading + c];
-        double* out = mapped_block_.get() + c;
-        const double* in = unit + c;
-        for (std::size_t i = 0; i < n; ++i) out[i * d] = a + w * in[i * d];
+      // With one leading axis (birth groups), its count(L) coordinates too, when not unit: the
+      // rows over the first axis then copy them from one contiguous run.
+      first_axis_ = grid.rule_->nodes().data();
+      if (leading == 1 && !(map_.lower[0] == 0.0 && map_.width[0] == 1.0)) {
+        const auto m = static_cast<std::size_t>(grid.rule_->count(grid.level_));
+        mapped_first_ = std::make_unique_for_overwrite<double[]>(m);
+        for (std::size_t i = 0; i < m; ++i) mapped_first_[i] = map_(0, first_axis_[i]);
+        first_axis_ = mapped_first_.get();
       }
-      block_coordinate_ = mapped_block_.get();
     }
     void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {
       grid_->walk(
           first, x, weights,
           [this](std::size_t j, std::size_t id) { return map_(j, grid_->rule_->node(id)); },
-          block_coordinate_);
+          block_coordinate_, first_axis_);
     }
 
    private:
@@ -170,6 +179,8 @@ class smolyak_grid {
     cube_to_box map_;
     std::unique_ptr<double[]> mapped_block_;  // unless the block's axes are unit
     const double* block_coordinate_ = nullptr;
+    std::unique_ptr<double[]> mapped_first_;  // one leading axis, not unit
+    const double* first_axis_ = nullptr;
   };
   // The same points in the box of `map`, bitwise what generate() and map.apply() give. Refers to
   // this grid, which must outlive it.
@@ -201,27 +212,28 @@ class smolyak_grid {
 
   template <class Coordinate>
   void walk(std::uint64_t first, std::span<double> x, std::span<double> weights,
-            const Coordinate& coordinate, const double* block_coordinate) const {
+            const Coordinate& coordinate, const double* block_coordinate,
+            const double* first_axis) const {
     // One leading axis (s = d + 1): by birth groups; none or more: by rows.
     const bool groups = s_ == block_axes_ + 1;
     switch (block_axes_) {
       case 1:
         if (groups) {
-          walk_groups<1>(first, x, weights, coordinate, block_coordinate);
+          walk_groups<1>(first, x, weights, coordinate, block_coordinate, first_axis);
         } else {
           walk_rows<1>(first, x, weights, coordinate, block_coordinate);
         }
         break;
       case 2:
         if (groups) {
-          walk_groups<2>(first, x, weights, coordinate, block_coordinate);
+          walk_groups<2>(first, x, weights, coordinate, block_coordinate, first_axis);
         } else {
           walk_rows<2>(first, x, weights, coordinate, block_coordinate);
         }
         break;
       default:
         if (groups) {
-          walk_groups<3>(first, x, weights, coordinate, block_coordinate);
+          walk_groups<3>(first, x, weights, coordinate, block_coordinate, first_axis);
         } else {
           walk_rows<3>(first, x, weights, coordinate, block_coordinate);
         }
@@ -233,7 +245,8 @@ class smolyak_grid {
                  const Coordinate& coordinate, const double* block_coordinate) const;
   template <std::size_t D, class Coordinate>
   void walk_groups(std::uint64_t first, std::span<double> x, std::span<double> weights,
-                   const Coordinate& coordinate, const double* block_coordinate) const;
+                   const Coordinate& coordinate, const double* block_coordinate,
+                   const double* first_axis) const;
 
   const nested_rule* rule_;
   std::size_t s_;
@@ -286,6 +299,34 @@ inline void scaled_row(double* out, double a, const double* in, std::size_t n) n
     std::memcpy(out + q, &y, sizeof y);
   }
   if (q < n) out[q] = Add ? out[q] + a * in[q] : a * in[q];
+}
+
+// out[q] = c[0]·in[0][q] + c[1]·in[1][q] + … + c[T−1]·in[T−1][q] for q < n, added left to right:
+// the same IEEE operations per element as scaled_row<false> with a = c[0] and T − 1 passes of
+// scaled_row<true> (a·x = x·a), so the same bits, with out stored once instead of T times.
+template <std::size_t T>
+inline void combined_row(double* out, const double* c, const double* const* in,
+                         std::size_t n) noexcept {
+  using pair = double __attribute__((vector_size(16)));
+  std::array<pair, T> c2;
+  for (std::size_t t = 0; t < T; ++t) c2[t] = pair{c[t], c[t]};
+  std::size_t q = 0;
+#pragma GCC unroll 2
+  for (; q + 2 <= n; q += 2) {
+    pair x;
+    std::memcpy(&x, in[0] + q, sizeof x);
+    pair y = c2[0] * x;
+    for (std::size_t t = 1; t < T; ++t) {
+      std::memcpy(&x, in[t] + q, sizeof x);
+      y = y + c2[t] * x;
+    }
+    std::memcpy(out + q, &y, sizeof y);
+  }
+  if (q < n) {
+    double y = c[0] * in[0][q];
+    for (std::size_t t = 1; t < T; ++t) y = y + c[t] * in[t][q];
+    out[q] = y;
+  }
 }
 
 }  // namespace detail
@@ -432,7 +473,8 @@ void smolyak_grid::walk_rows(std::uint64_t first, std::span<double> x, std::span
 
 template <std::size_t D, class Coordinate>
 void smolyak_grid::walk_groups(std::uint64_t first, std::span<double> x, std::span<double> weights,
-                               const Coordinate& coordinate, const double* block_coordinate) const {
+                               const Coordinate& coordinate, const double* block_coordinate,
+                               const double* first_axis) const {
   require_weighted_batch(s_, total_, first, x, weights);
   const std::size_t count = weights.size();
   if (count == 0) return;
@@ -499,17 +541,40 @@ void smolyak_grid::walk_groups(std::uint64_t first, std::span<double> x, std::sp
       for (; i < count && q < m; ++q, k = 0) {
         const std::size_t run = std::min(n0 - k, count - i);
         double* w_out = weights.data() + i;
-        detail::scaled_row<false>(w_out, table[r][q], rule.differences_by_birth(b, 0) + k, run);
-        for (unsigned u = 1; u <= r && q < block_size[r - u]; ++u) {
-          detail::scaled_row<true>(w_out, table[r - u][q], rule.differences_by_birth(b, u) + k,
-                                   run);
+        // The terms u = 0 … with q < N_d(r − u): most block nodes have one to three (a node born
+        // at level t has r − t + 1), summed in one pass.
+        unsigned terms = 1;
+        while (terms <= r && q < block_size[r - terms]) ++terms;
+        std::array<double, max_levels> c;
+        std::array<const double*, max_levels> in;
+        for (unsigned u = 0; u < terms; ++u) {
+          c[u] = table[r - u][q];
+          in[u] = rule.differences_by_birth(b, u) + k;
+        }
+        switch (terms) {
+          case 1:
+            detail::combined_row<1>(w_out, c.data(), in.data(), run);
+            break;
+          case 2:
+            detail::combined_row<2>(w_out, c.data(), in.data(), run);
+            break;
+          case 3:
+            detail::combined_row<3>(w_out, c.data(), in.data(), run);
+            break;
+          default:
+            detail::combined_row<4>(w_out, c.data(), in.data(), run);
+            for (unsigned u = 4; u < terms; ++u) {
+              detail::scaled_row<true>(w_out, c[u], in[u], run);
+            }
+            break;
         }
         std::array<double, D> block{};
         std::memcpy(block.data(), block_coordinate + q * D, D * sizeof(double));
         double* point = x.data() + i * s;
+        const double* leading = first_axis + first_id + k;
 #pragma GCC unroll 4
         for (std::size_t c = 0; c < run; ++c, point += s) {
-          point[0] = coordinate(0, first_id + k + c);
+          point[0] = leading[c];
           std::memcpy(point + 1, block.data(), D * sizeof(double));
         }
         i += run;
