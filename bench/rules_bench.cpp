@@ -131,10 +131,15 @@ void BM_equal_n_smolyak(benchmark::State& state) {
 
 // s = 4 at N = 2^16 (Simpson 15^4 = 50 625 points, Smolyak L = 9: 46 721); s = 8 at N = 2^20
 // (Simpson 5^8 = 390 625, Smolyak L = 8: 609 025): both large enough that the per-call costs
-// (the grid's tables, the kernel's buffers) are a small part of the time. One thread, timed by
+// (the grid's tables, the kernel's buffers) are a small part of the time. s = 2 and 3 each on
+// both sides of the block's cap (smolyak_grid.hpp): s = 2 at N = 2^14 (Simpson 127² = 16 129,
+// Smolyak L = 11: 15 361, the whole grid one block) and 2^17 (361² = 130 321; L = 13: 69 633,
+// birth groups), s = 3 at 2^14 (25³ = 15 625; L = 9: 13 953, one block) and 2^16 (39³ = 59 319;
+// L = 10: 32 001, birth groups). One thread, timed by
 // CPU time (not UseRealTime): on a machine shared with other jobs the wall clock also counts the
 // time the process waited for a core.
 void equal_n_sizes(benchmark::internal::Benchmark* b) {
+  b->Args({2, 1 << 14})->Args({2, 1 << 17})->Args({3, 1 << 14})->Args({3, 1 << 16});
   b->Args({4, 1 << 16})->Args({8, 1 << 20})->ArgNames({"s", "N"});
   b->Unit(benchmark::kMillisecond);
 }

@@ -186,6 +186,10 @@ TEST(NestedRule, ByNodeTablesAreTheByLevelWeightsAndTheirDifferences) {
         magnitude += std::abs(d[m]);
         ASSERT_LE(std::abs(sum - rule.weight(l, id)), (m + 1) * eps * magnitude)
             << to_string(kind) << " id " << id << " level " << l;
+        // The by-birth table holds the same bits, contiguous over the nodes born at b.
+        const std::size_t k = id - (b == 0 ? 0 : static_cast<std::size_t>(rule.count(b - 1)));
+        ASSERT_EQ(bits(rule.differences_by_birth(b, m)[k]), bits(d[m]))
+            << to_string(kind) << " id " << id << " level " << l;
       }
     }
   }

@@ -358,12 +358,13 @@ long double absolute_terms(const nested_rule& rule, const std::vector<std::size_
   return total;
 }
 
-// The block size d the header documents: the largest of 2 and 3 with d < s and N_d(L) ≤ the cap.
+// The block size d the header documents: the largest of 2 and 3 with d ≤ s and N_d(L) ≤ the cap
+// (d = s: the whole grid is the block).
 std::size_t documented_block_axes(const nested_rule& rule, std::size_t s, unsigned L) {
   std::size_t d = 1;
   for (std::size_t c = 2; c <= 3; ++c) {
     const auto n = smolyak_point_count(rule, c, L);
-    if (c < s && n && *n <= smolyak_block::block_nodes_cap) d = c;
+    if (c <= s && n && *n <= smolyak_block::block_nodes_cap) d = c;
   }
   return d;
 }
@@ -393,28 +394,35 @@ std::vector<std::vector<std::size_t>> ids_of(const nested_rule& rule, const smol
 
 // The weights are the documented block formula bit for bit — the leading product in double, the
 // block's T tables in long double rounded once, u ascending — for every d the grid picks (1 for
-// s ≤ 2, where they are also the previous walk's weights bit for bit, 2 and 3 above), in every
-// dimension the copy is specialised for and beyond (s = 17, 20: the loop); each node comes once.
-// Reversing a product order, or summing the block's terms in double, fails it.
+// s = 1 and for s = 2 beyond the block's cap, where they are also the previous walk's weights bit
+// for bit; 2 and 3 above, and d = s, the whole grid one block, for s = 2, 3 at small levels: then
+// a weight is T_L itself), in every dimension the copy is specialised for and beyond (s = 17,
+// 20: the loop); each node comes once. Reversing a product order, or summing the block's terms
+// in double, fails it.
 TEST(SmolyakGrid, WeightsAreTheSurplusFormulaBitForBitAndEachNodeComesOnce) {
   for (const nested_rule_kind kind :
        {nested_rule_kind::clenshaw_curtis, nested_rule_kind::gauss_patterson,
         nested_rule_kind::trapezoid}) {
     const nested_rule& rule = nested_rule_table(kind);
     std::set<std::size_t> block_axes_seen;
+    std::set<std::size_t> whole_grid_blocks_seen;  // the s with d = s
     for (const auto& [s, L] : {std::pair<std::size_t, unsigned>{1, 7},
                                {2, 6},
+                               {2, 12},
                                {3, 5},
                                {3, 7},
+                               {3, 10},
                                {4, 6},
                                {5, 4},
                                {8, 4},
                                {16, 2},
                                {17, 2},
                                {20, 2}}) {
+      if (L > rule.max_level()) continue;  // s = 2, L = 12: beyond Gauss–Patterson's tables
       const smolyak_grid g(rule, s, L);
       ASSERT_EQ(g.block_axes(), documented_block_axes(rule, s, L)) << s << " " << L;
       block_axes_seen.insert(g.block_axes());
+      if (g.block_axes() == s) whole_grid_blocks_seen.insert(s);
       const grid_points p = all_points(g);
       const auto ids = ids_of(rule, g, p);
       ASSERT_EQ(ids.size(), g.size());
@@ -435,6 +443,7 @@ TEST(SmolyakGrid, WeightsAreTheSurplusFormulaBitForBitAndEachNodeComesOnce) {
       EXPECT_EQ(visits.size(), g.size()) << to_string(kind) << " s " << s;
     }
     EXPECT_EQ(block_axes_seen, (std::set<std::size_t>{1, 2, 3})) << to_string(kind);
+    EXPECT_EQ(whole_grid_blocks_seen, (std::set<std::size_t>{1, 2, 3})) << to_string(kind);
   }
 }
 
@@ -475,22 +484,24 @@ struct scalar_gaussian {
   }
 };
 
-// The block walk changed the order of the arithmetic (s ≥ 3): each weight now sums the block's
-// terms in long double and the leading product's in double, and the nodes of a row come in
-// shell order. Both it and the previous walk evaluate w(x) = Σ_k Π_j d_{k_j}(x_j) with at most
-// n = s·(L + 2) roundings on each term's path (per axis one difference, one product and ≤ L
-// additions; the block's long double part costs < 1 double rounding), so each is within γ_n·|w|(x)
-// of the exact sum [Higham 2002, §3.1], |w|(x) = Σ_k Π_j |d_{k_j}(x_j)|, and they differ by at
-// most 2γ_n·|w|(x). The kernel's sums then add ≤ γ_12·Σ|w_i f_i| each (the product w·f, pairwise
-// over 256 terms, Neumaier across batches: weighted_point_set.hpp), so
+// The block walk changed the order of the arithmetic (s ≥ 3, and s = 2 at the levels where the
+// whole grid is one block): each weight now sums the block's terms in long double and the leading
+// product's in double (none when d = s), and the nodes of a row come in shell order; with one
+// leading axis the nodes come in birth groups (s = 2, L = 13: the weights are the previous walk's
+// bits, only the order of the sum differs). Both it and
+// the previous walk evaluate w(x) = Σ_k Π_j d_{k_j}(x_j) with at most n = s·(L + 2) roundings on
+// each term's path (per axis one difference, one product and ≤ L additions; the block's long double
+// part costs < 1 double rounding), so each is within γ_n·|w|(x) of the exact sum [Higham 2002,
+// §3.1], |w|(x) = Σ_k Π_j |d_{k_j}(x_j)|, and they differ by at most 2γ_n·|w|(x). The kernel's sums
+// then add ≤ γ_12·Σ|w_i f_i| each (the product w·f, pairwise over 256 terms, Neumaier across
+// batches: weighted_point_set.hpp), so
 //   |Q_new − Q_prev| ≤ Σ_i 2γ_n·|w|(x_i)·|f_i| + γ_12·(Σ|w_new,i f_i| + Σ|w_prev,i f_i|).
 // Checked per weight and for the sum, on the levels of the benchmark's equal-N comparison.
 TEST(SmolyakGrid, BlockWalkAgreesWithThePreviousWalkWithinTheRoundingBound) {
   const auto gamma = [](double n) { return n * eps / (1.0 - n * eps); };
-  for (const auto& [s, L] :
-       std::vector<std::pair<std::size_t, unsigned>>{{3, 9}, {4, 9}, {5, 6}, {8, 5}, {16, 3}}) {
+  for (const auto& [s, L] : std::vector<std::pair<std::size_t, unsigned>>{
+           {2, 11}, {2, 13}, {3, 9}, {3, 10}, {4, 9}, {5, 6}, {8, 5}, {16, 3}}) {
     const smolyak_grid g(cc(), s, L);
-    ASSERT_GE(g.block_axes(), 2u) << s;
     const grid_points p = all_points(g);
     const auto ids = ids_of(cc(), g, p);
     ASSERT_EQ(ids.size(), g.size());
@@ -532,14 +543,27 @@ TEST(SmolyakGrid, BlockWalkAgreesWithThePreviousWalkWithinTheRoundingBound) {
   }
 }
 
+// One point at a time, from every index, and batches of 97 from every 7th index: the points of
+// one whole-grid batch, for each walk — birth groups (s = d + 1: s = 4, L = 6 and s = 3, L = 10
+// with d = 3 and 2, s = 2, L = 12 with d = 1, where both row directions occur), rows (s = 5,
+// L = 6; s = 3, L = 12 with d = 1) and the whole grid as one block (s = 2, L = 6).
 TEST(SmolyakGrid, AnyBatchStartGivesTheSameNodesAndWeights) {
-  const smolyak_grid g(cc(), 4, 6);
-  const grid_points p = all_points(g);
-  std::vector<double> x(4), w(1);
-  for (std::uint64_t i = 0; i < g.size(); ++i) {
-    g.generate(i, x, w);
-    for (std::size_t j = 0; j < 4; ++j) ASSERT_EQ(x[j], p.x[i * 4 + j]) << i;
-    ASSERT_EQ(std::bit_cast<std::uint64_t>(w[0]), std::bit_cast<std::uint64_t>(p.w[i])) << i;
+  for (const auto& [s, L] : std::vector<std::pair<std::size_t, unsigned>>{
+           {4, 6}, {3, 10}, {2, 12}, {5, 6}, {3, 12}, {2, 6}}) {
+    const smolyak_grid g(cc(), s, L);
+    const grid_points p = all_points(g);
+    std::vector<double> x(97 * s), w(97);
+    for (std::uint64_t i = 0; i < g.size(); ++i) {
+      const std::size_t n = (i % 7 == 0) ? std::min<std::uint64_t>(97, g.size() - i) : 1;
+      g.generate(i, std::span<double>(x.data(), n * s), std::span<double>(w.data(), n));
+      for (std::size_t q = 0; q < n; ++q) {
+        for (std::size_t j = 0; j < s; ++j) {
+          ASSERT_EQ(x[q * s + j], p.x[(i + q) * s + j]) << "s " << s << " L " << L << " " << i;
+        }
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(w[q]), std::bit_cast<std::uint64_t>(p.w[i + q]))
+            << "s " << s << " L " << L << " " << i;
+      }
+    }
   }
 }
 
@@ -564,20 +588,31 @@ struct product_exp {
 TEST(SmolyakGrid, SumIsBitwiseTheSameForAnyThreadCountAndThroughTheFastPath) {
   const smolyak_grid g(cc(), 4, 10);  // several chunks of 2^14 points
   ASSERT_GT(g.size(), 3u * 16384u);
-  const product_exp f{4};
-  const double one = weighted_sum(f, g, 1).value;
-  for (const unsigned threads : {2u, 3u, 8u}) {
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(weighted_sum(f, g, threads).value),
-              std::bit_cast<std::uint64_t>(one))
-        << threads;
+  // The whole grid one block (d = s): s = 2 at L = 11, s = 3 at L = 9, each the largest level
+  // within the block's cap; and s = 2 at L = 13, beyond it (d = 1, several chunks).
+  const smolyak_grid whole2(cc(), 2, 11);
+  const smolyak_grid whole3(cc(), 3, 9);
+  const smolyak_grid rows2(cc(), 2, 13);
+  ASSERT_EQ(whole2.block_axes(), 2u);
+  ASSERT_EQ(whole3.block_axes(), 3u);
+  ASSERT_EQ(rows2.block_axes(), 1u);
+  for (const smolyak_grid* grid : {&g, &whole2, &whole3, &rows2}) {
+    const product_exp f{grid->dimension()};
+    const double one = weighted_sum(f, *grid, 1).value;
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(weighted_sum(f, *grid, threads).value),
+                std::bit_cast<std::uint64_t>(one))
+          << "s " << grid->dimension() << " threads " << threads;
+    }
   }
   // mapped() writes box coordinates: bitwise what generate() and the kernel's map give, for a
-  // block of 2 and of 3 axes (d = 2 here, 3 at s = 5, L = 6), on a box (the block's coordinates
-  // mapped per call) and on the unit cube (the process's table used as it is).
+  // block of 2 and of 3 axes (d = 2 here, 3 at s = 5, L = 6), for whole-grid blocks and for d = 1,
+  // on a box (the block's coordinates mapped per call) and on the unit cube (the process's table
+  // used as it is).
   const smolyak_grid g3(cc(), 5, 6);
   ASSERT_EQ(g.block_axes(), 2u);
   ASSERT_EQ(g3.block_axes(), 3u);
-  for (const smolyak_grid* grid : {&g, &g3}) {
+  for (const smolyak_grid* grid : {&g, &g3, &whole2, &whole3, &rows2}) {
     const std::size_t s = grid->dimension();
     for (const box& domain :
          {box{std::vector<double>(s, -1.0), std::vector<double>(s, 2.0)}, box::unit(s)}) {

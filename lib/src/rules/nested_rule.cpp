@@ -207,6 +207,19 @@ nested_rule::nested_rule(nested_rule_kind kind) : kind_(kind) {
                                                      : weight(l, id) - weight(l - 1, id));
     }
   }
+  // The by-birth table: the same differences, for birth b and step m the new_count(b) values
+  // in id order (copied from the by-node table: the same bits).
+  by_birth_offset_.resize(top + 1);
+  for (unsigned b = 0; b <= top; ++b) {
+    by_birth_offset_[b] = by_birth_differences_.size();
+    const std::size_t first = b == 0 ? 0 : static_cast<std::size_t>(count_[b - 1]);
+    const auto n = static_cast<std::size_t>(new_count(b));
+    for (unsigned m = 0; m + b <= top; ++m) {
+      for (std::size_t k = 0; k < n; ++k) {
+        by_birth_differences_.push_back(differences_from_birth(first + k)[m]);
+      }
+    }
+  }
 }
 
 unsigned nested_rule::degree(unsigned level) const noexcept {

@@ -50,9 +50,10 @@ smolyak_grid::smolyak_grid(const nested_rule& rule, std::size_t s, unsigned leve
   count_ = std::move(*table);
   total_ = count_[level];
   static_assert(max_levels > 16, "nested_rule_max_level is at most 16");
-  // d: the largest of 2 and 3 that leaves a leading axis and keeps the block within the cap.
+  // d: the largest of 2 and 3 with d ≤ s that keeps the block within the cap. d = s makes the
+  // whole grid one block (s = 2, 3 at small levels): one row, a straight run over the table.
   for (std::size_t d = 2; d <= 3; ++d) {
-    if (d < s && tuples(s - d, level) <= smolyak_block::block_nodes_cap) block_axes_ = d;
+    if (d <= s && tuples(s - d, level) <= smolyak_block::block_nodes_cap) block_axes_ = d;
   }
   if (block_axes_ >= 2) {
     block_ = &smolyak_block_table(rule.kind(), block_axes_);

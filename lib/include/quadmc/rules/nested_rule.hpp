@@ -22,11 +22,12 @@
 //
 // Node ids are in birth order: the nodes of level l are ids [0, count(l)), the new ones of level
 // l are [count(l − 1), count(l)). A node's coordinate and its weight in every level that holds it
-// are table lookups, by level or by node (weights_from_birth, differences_from_birth). Memory:
-// Σ_l count(l) weights, < 2·count(Lmax) + Lmax for these families (count doubles per level),
-// held three times (by level; by node; the differences by node), plus count(Lmax) nodes — 16385
-// nodes and 3 × about 33 000 weights (0.8 MB) for Clenshaw–Curtis at level 14, the largest
-// tabulated (its cosine sums cost O(n²) once per process, ~0.1 s at n = 2^14).
+// are table lookups, by level or by node (weights_from_birth, differences_from_birth) or by
+// birth level (differences_by_birth). Memory: Σ_l count(l) weights, < 2·count(Lmax) + Lmax for
+// these families (count doubles per level), held four times (by level; by node; the differences
+// by node and by birth level), plus count(Lmax) nodes — 16385 nodes and 4 × about 33 000 weights
+// (1.1 MB) for Clenshaw–Curtis at level 14, the largest tabulated (its cosine sums cost O(n²) once
+// per process, ~0.1 s at n = 2^14).
 #pragma once
 
 #include <cstddef>
@@ -89,6 +90,14 @@ class nested_rule {
   const double* differences_from_birth(std::size_t id) const noexcept {
     return by_node_differences_.data() + by_node_offset_[id];
   }
+  // The same differences by birth level: for the nodes born at level b (ids count(b − 1) + k,
+  // k < new_count(b)) and m ≤ max_level() − b, differences_by_birth(b, m)[k] =
+  // differences_from_birth(count(b − 1) + k)[m], contiguous in k (bit for bit the same values):
+  // a Smolyak walk whose rows run along the first axis's new nodes reads them in a stream.
+  const double* differences_by_birth(unsigned birth, unsigned m) const noexcept {
+    return by_birth_differences_.data() + by_birth_offset_[birth] +
+           m * static_cast<std::size_t>(new_count(birth));
+  }
 
  private:
   void add_level(std::span<const double> nodes_in_birth_order, std::span<const double> weights);
@@ -102,6 +111,8 @@ class nested_rule {
   std::vector<std::size_t> by_node_offset_;
   std::vector<double> by_node_weights_;
   std::vector<double> by_node_differences_;
+  std::vector<std::size_t> by_birth_offset_;
+  std::vector<double> by_birth_differences_;
 };
 
 // The tables of each kind, built on first use (thread-safe) and kept for the process.

@@ -16,7 +16,8 @@
 //    (tests/rules/smolyak_grid_test.cpp rebuilds it in this order, bit for bit). T_l of a grid of
 //    lower level is the same prefix, the same bits: a grid's weights do not depend on how far the
 //    table was built.
-// Use it through smolyak_grid; not a rule of its own (a grid of s = d axes is smolyak_grid's).
+// Use it through smolyak_grid, which also takes it as the whole grid when s = d and the level
+// is tabulated (smolyak_grid.hpp); not a weighted point set of its own.
 //
 // Memory: count(level()) ≤ block_nodes_cap = 16384 nodes, d coordinates each, and Σ_l count(l)
 // weights (< 2.5·count(level()) for the three rule families), at most 0.6 MB per table; one table
