@@ -304,8 +304,8 @@ void register_integrand(genz_family family) {
 
 // --- tensor rules against plain Monte Carlo at N ≈ 4·10⁶ -----------------------------------
 // tensor_vs_plain/<method>/<integrand>/s:S (method ∈ {plain_mc, trapezoid, simpson}, integrand ∈
-// {genz_oscillatory, genz_gaussian}, s ∈ {1, 2, 4, 8}, one thread): issue 18's target "tensor
-// Simpson and trapezoid ≥ 1.5× plain MC at s ≥ 2" at the size bench/peers times them (the
+// {genz_oscillatory, genz_gaussian}, s ∈ {1, 2, 4, 8}, one thread): the tensor-rule row of
+// docs/design.md#performance-targets at the size bench/peers times them (the
 // smallest grid (n + 1)^s ≥ 4·10⁶: 2001², 45⁴, 7⁸; plain MC 4·10⁶ points). ratio_to_plain_mc =
 // this row's evaluations per wall second ÷ plain_mc's for the same integrand and s (the plain_mc
 // rows run first; with a filter that leaves them out, plain MC is timed on demand, best of 3).
