@@ -101,9 +101,9 @@ class tensor_product_grid {
     on_box(const tensor_product_grid& grid, const cube_to_box& map) : grid_(&grid), map_(map) {
       require(map_.dimension() == grid.s_, "box dimension", map_.dimension(),
               fmt::format("the grid's dimension {}", grid.s_));
-      // Every axis's box coordinates, s·m ≤ N values (m^s ≥ s·m for m ≥ 2), the last axis's
-      // m at the end: the row kernel's tables. The same map(j, t_k) as the walk computes per
-      // carry, so the same bits.
+      // Every axis's box coordinates, the last axis's m at the end: the row kernel's tables, s·m
+      // values (≤ N, since m^s ≥ s·m for m ≥ 2; ≤ 64 for m = 1), built once per call. The same
+      // map(j, t_k) as the walk computes per carry, so the same bits.
       if (!grid.tabulated()) return;
       const std::size_t m = grid.node_table_.size();
       const std::size_t axes = grid.s_ <= detail::tensor_row_max_axes ? grid.s_ : 1;
