@@ -18,6 +18,8 @@
 //    integrand ∈ {genz_oscillatory, genz_gaussian, genz_continuous, genz_product_peak,
 //    genz_corner_peak, genz_discontinuous}, T = 1 for every s and T = 2 for s ∈ {1, 8}
 //    (T is quadmc's own thread count; Google Benchmark runs each benchmark on one thread);
+//  - tensor_vs_plain/<method>/<integrand>/s:S — tensor rules against plain MC at N ≈ 4·10⁶
+//    (see its section below);
 //  - peak_rss/<method> — see below.
 // Sizes per iteration: N = 2^20 for plain, Latin hypercube and padded jittered points; k^s with
 // k = round(2^(20/s)) for jittered points (the stratified size nearest 2^20 on a log scale:
@@ -54,7 +56,7 @@
 //   integrators_bench --benchmark_filter=-peak_rss
 // and run only them with --benchmark_filter=peak_rss.
 //
-// Default run: 320 benchmarks in about 2 minutes on 2 shared cores (MinTime 0.2 s each; the
+// Default run: 344 benchmarks in about 2½ minutes on 2 shared cores (MinTime 0.2 s each; the
 // peak_rss rows about 6 s of it). Timer: wall clock (UseRealTime), since quadmc's threads run
 // outside the calling thread's CPU time. Google Benchmark appends /min_time:0.200/real_time
 // (peak_rss: /iterations:1/real_time) to every name.
@@ -300,6 +302,92 @@ void register_integrand(genz_family family) {
   });
 }
 
+// --- tensor rules against plain Monte Carlo at N ≈ 4·10⁶ -----------------------------------
+// tensor_vs_plain/<method>/<integrand>/s:S (method ∈ {plain_mc, trapezoid, simpson}, integrand ∈
+// {genz_oscillatory, genz_gaussian}, s ∈ {1, 2, 4, 8}, one thread): the tensor-rule row of
+// docs/design.md#performance-targets at the size bench/peers times them (the
+// smallest grid (n + 1)^s ≥ 4·10⁶: 2001², 45⁴, 7⁸; plain MC 4·10⁶ points). ratio_to_plain_mc =
+// this row's evaluations per wall second ÷ plain_mc's for the same integrand and s (the plain_mc
+// rows run first; with a filter that leaves them out, plain MC is timed on demand, best of 3).
+//   build/release/bench/integrators_bench --benchmark_filter=tensor_vs_plain
+//   --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+constexpr std::uint64_t tensor_vs_plain_n = 4'000'000;
+
+// The smallest panel count (even for Simpson) whose grid has at least n points.
+template <class R>
+std::uint64_t panels_at_least(const tensor_method<R>& method, std::size_t s, std::uint64_t n) {
+  std::uint64_t panels = method.control(s, n);
+  while (method.evaluations(s, panels) < n) panels += tensor_method<R>::panel_step;
+  return panels;
+}
+
+std::map<std::pair<genz_family, std::size_t>, double>& plain_mc_rates() {
+  static std::map<std::pair<genz_family, std::size_t>, double> rates;
+  return rates;
+}
+
+template <class F>
+double timed_rate(const F& f, auto&& run) {
+  const auto start = std::chrono::steady_clock::now();
+  const sized_run r = run(f);
+  benchmark::DoNotOptimize(r);
+  return static_cast<double>(r.evaluations) / seconds_since(start);
+}
+
+template <class F, class M>
+void tensor_vs_plain_bench(benchmark::State& state, genz_family family, const M& method,
+                           bool is_plain) {
+  const auto s = static_cast<std::size_t>(state.range(0));
+  const F f = make_genz<F>(family, s);
+  const monte_carlo_method<independent_points> plain;
+  auto run_plain = [&](const F& g, std::uint64_t stream) {
+    return plain.run(g, tensor_vs_plain_n, 1, stream);
+  };
+  std::uint64_t control = tensor_vs_plain_n;
+  if constexpr (!std::is_same_v<M, monte_carlo_method<independent_points>>) {
+    control = panels_at_least(method, s, tensor_vs_plain_n);
+  }
+  auto& rates = plain_mc_rates();
+  if (!is_plain && rates.find({family, s}) == rates.end()) {
+    double best = 0.0;
+    for (std::uint64_t k = 0; k < 3; ++k) {
+      best = std::max(best, timed_rate(f, [&](const F& g) { return run_plain(g, 1000 + k); }));
+    }
+    rates[{family, s}] = best;
+  }
+  std::uint64_t stream = 0;
+  sized_run r;
+  const auto start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    r = method.run(f, control, 1, ++stream);
+    benchmark::DoNotOptimize(r);
+  }
+  const double wall = seconds_since(start);
+  const double rate =
+      static_cast<double>(r.evaluations) * static_cast<double>(state.iterations()) / wall;
+  if (is_plain) rates[{family, s}] = rate;
+  state.counters["evals_per_second"] = benchmark::Counter(
+      static_cast<double>(r.evaluations), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["ratio_to_plain_mc"] = rate / rates[{family, s}];
+  state.counters["abs_error"] = std::abs(r.value - f.info().exact);
+  state.counters["evaluations"] = static_cast<double>(r.evaluations);
+}
+
+template <class F>
+void register_tensor_vs_plain(genz_family family) {
+  const std::string integrand(to_string(family));
+  auto add = [&](const char* name, auto method, bool is_plain) {
+    benchmark::RegisterBenchmark(("tensor_vs_plain/" + std::string(name) + "/" + integrand).c_str(),
+                                 [family, method, is_plain](benchmark::State& state) {
+                                   tensor_vs_plain_bench<F>(state, family, method, is_plain);
+                                 })
+        ->Apply(dimensions_one_thread);
+  };
+  add("plain_mc", monte_carlo_method<independent_points>{}, true);
+  add("trapezoid", tensor_method<trapezoid_rule>{trapezoid_rule{}}, false);
+  add("simpson", tensor_method<simpson_rule>{simpson_rule{}}, false);
+}
+
 // --- peak RSS -------------------------------------------------------------------------------
 
 // The child: integrate the memory case with `method` at size n, print VmHWM, exit. "baseline"
@@ -388,6 +476,8 @@ int main(int argc, char** argv) {
   register_integrand<genz_product_peak>(genz_family::product_peak);
   register_integrand<genz_corner_peak>(genz_family::corner_peak);
   register_integrand<genz_discontinuous>(genz_family::discontinuous);
+  register_tensor_vs_plain<genz_oscillatory>(genz_family::oscillatory);
+  register_tensor_vs_plain<genz_gaussian>(genz_family::gaussian);
   register_peak_rss();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

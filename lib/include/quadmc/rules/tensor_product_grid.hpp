@@ -20,15 +20,18 @@
 //    nodes and weights are tabulated once at construction (each entry is reused m^(s−1) times;
 //    the rules' node() and weight() divide), else computed per point — the same functions either
 //    way, so the same bits;
-//  - mapped(map) is the fast path of weighted_point_set.hpp: it tabulates the last axis's box
-//    coordinates once per call and maps a leading coordinate only when its axis moves, so a
-//    point costs copies, not s multiply-adds.
+//  - mapped(map) is the fast path of weighted_point_set.hpp: for a tabulated grid it tabulates
+//    every axis's box coordinates once per call and hands each batch to the row kernel
+//    (tensor_product_rows.hpp: whole rows of the last axis, vector code chosen at run time), so
+//    a point costs a few register stores and one multiply for its weight, not s multiply-adds;
+//    bitwise what generate() followed by map.apply() gives.
 #pragma once
 
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/integer_powers.hpp"
 #include "quadmc/rules/rule.hpp"
+#include "quadmc/rules/tensor_product_rows.hpp"
 #include "quadmc/rules/weighted_point_set.hpp"
 
 #include <fmt/format.h>
@@ -98,21 +101,35 @@ class tensor_product_grid {
     on_box(const tensor_product_grid& grid, const cube_to_box& map) : grid_(&grid), map_(map) {
       require(map_.dimension() == grid.s_, "box dimension", map_.dimension(),
               fmt::format("the grid's dimension {}", grid.s_));
-      const std::size_t last = grid.s_ - 1;
-      last_coordinate_.resize(grid.node_table_.size());
-      for (std::size_t k = 0; k < last_coordinate_.size(); ++k) {
-        last_coordinate_[k] = map_(last, grid.node_table_[k]);
+      // Every axis's box coordinates, the last axis's m at the end: the row kernel's tables, s·m
+      // values (≤ N, since m^s ≥ s·m for m ≥ 2; ≤ 64 for m = 1), built once per call. The same
+      // map(j, t_k) as the walk computes per carry, so the same bits.
+      if (!grid.tabulated()) return;
+      const std::size_t m = grid.node_table_.size();
+      const std::size_t axes = grid.s_ <= detail::tensor_row_max_axes ? grid.s_ : 1;
+      const std::size_t first_axis = grid.s_ - axes;
+      axis_coordinate_.resize(axes * m);
+      for (std::size_t j = 0; j < axes; ++j) {
+        for (std::size_t k = 0; k < m; ++k) {
+          axis_coordinate_[j * m + k] = map_(first_axis + j, grid.node_table_[k]);
+        }
       }
     }
 
     void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {
       const tensor_product_grid& g = *grid_;
-      if (g.tabulated()) {
+      if (g.tabulated() && g.s_ <= detail::tensor_row_max_axes) {
+        require_weighted_batch(g.s_, g.total_, first, x, weights);
+        if (weights.empty()) return;
+        const detail::tensor_row_tables tables{g.s_, g.m_, axis_coordinate_.data(),
+                                               g.weight_table_.data()};
+        detail::tensor_rows(tables, first, weights.size(), x.data(), weights.data());
+      } else if (g.tabulated()) {  // m = 1: the one point
         const auto coordinate = [this, &g](std::size_t j, std::uint64_t k) {
           return map_(j, g.node_table_[k]);
         };
         g.template walk<true>(first, x, weights, coordinate,
-                              [this](std::uint64_t k) { return last_coordinate_[k]; });
+                              [this](std::uint64_t) { return axis_coordinate_.front(); });
       } else {
         const auto coordinate = [this, &g](std::size_t j, std::uint64_t k) {
           return map_(j, g.q_.node(k));
@@ -127,7 +144,9 @@ class tensor_product_grid {
    private:
     const tensor_product_grid* grid_;
     cube_to_box map_;
-    std::vector<double> last_coordinate_;
+    // Tabulated grids: axis j's box coordinate of node k at [j·m + k] (s ≤ tensor_row_max_axes),
+    // else the last axis's only (m = 1).
+    std::vector<double> axis_coordinate_;
   };
 
   on_box mapped(const cube_to_box& map) const { return on_box(*this, map); }
@@ -135,7 +154,7 @@ class tensor_product_grid {
  private:
   // With m ≥ 2 nodes per axis, m^s < 2^64 forces s ≤ 63, so the odometer's per-axis state fits in
   // arrays of this size on the stack; a larger s means m = 1 and a single point.
-  static constexpr std::size_t max_axes = 64;
+  static constexpr std::size_t max_axes = detail::tensor_row_max_axes;
 
   bool tabulated() const noexcept { return !node_table_.empty(); }
 

@@ -17,6 +17,8 @@
 //    the same bits (core/batching.hpp);
 //  - every batch is checked for NaN/±inf (check_finite_batch), the error naming the point in box
 //    coordinates;
+//  - the default sum forms w_i·f_i inside its pairwise pass (detail::weighted_pairwise_sum, a
+//    vector kernel), bitwise what multiplying first and summing after gives;
 //  - the sum can instead be naive, all-Neumaier or long double (enum summation), so the stress
 //    scene can show what each accumulator's rounding floor is on the same terms;
 //  - no allocation or virtual call per point: buffers once per chunk, the set's generate() once
@@ -62,20 +64,41 @@ inline void require_integration_box(const box& domain) {
 
 namespace detail {
 
-// The accumulators of enum summation (core/summation.hpp), each a value type with the same three
+// pairwise_sum (core/summation.hpp) of the products w_i·y_i, bitwise: the same split, the same
+// eight accumulators per leaf, each product rounded before it is added (never a fused
+// multiply-add). One pass instead of a multiply pass and a sum pass, the leaves vector code
+// chosen at run time (lib/src/rules/weighted_row_sum*.cpp; docs/design.md#hot-path-contract).
+// w and y have the same size.
+double weighted_pairwise_sum(std::span<const double> w, std::span<const double> y) noexcept;
+
+// The accumulators of enum summation (core/summation.hpp), each a value type with the same
 // operations, so the kernel below is one template and the default path compiles to the same code
-// as before the option existed.
+// as before the option existed. add_weighted(w, y) adds the terms w_i·y_i, overwriting w with
+// them where the accumulator needs them stored.
 struct pairwise_accumulator {
   neumaier_sum sum;
   void add_batch(std::span<const double> terms) noexcept { sum.add(pairwise_sum(terms)); }
+  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
+    sum.add(weighted_pairwise_sum(w, y));
+  }
   void merge(const pairwise_accumulator& other) noexcept { sum.merge(other.sum); }
   double value() const noexcept { return sum.value(); }
 };
+
+// w_i ← w_i·y_i, then add_batch: the accumulators that add the terms one at a time.
+template <class Accumulator>
+void multiply_then_add(Accumulator& acc, std::span<double> w, std::span<const double> y) noexcept {
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] *= y[i];
+  acc.add_batch(std::span<const double>(w));
+}
 
 struct neumaier_accumulator {
   neumaier_sum sum;
   void add_batch(std::span<const double> terms) noexcept {
     for (double t : terms) sum.add(t);
+  }
+  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
+    multiply_then_add(*this, w, y);
   }
   void merge(const neumaier_accumulator& other) noexcept { sum.merge(other.sum); }
   double value() const noexcept { return sum.value(); }
@@ -85,6 +108,9 @@ struct long_double_accumulator {
   long double sum = 0.0L;
   void add_batch(std::span<const double> terms) noexcept {
     for (double t : terms) sum += static_cast<long double>(t);
+  }
+  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
+    multiply_then_add(*this, w, y);
   }
   void merge(const long_double_accumulator& other) noexcept { sum += other.sum; }
   double value() const noexcept { return static_cast<double>(sum); }
@@ -109,6 +135,9 @@ struct naive_accumulator {
   double sum = 0.0;
   void add_batch(std::span<const double> terms) noexcept {
     for (double t : terms) sum += t;
+  }
+  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
+    multiply_then_add(*this, w, y);
   }
   double value() const noexcept { return sum; }
 };
@@ -150,15 +179,14 @@ rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std:
     // Buffers once per chunk (2^14 points), never per point.
     std::vector<double> x(batch_points * s);
     std::vector<double> y(batch_points);
-    std::vector<double> terms(batch_points);  // the weights, then w·f in place
+    std::vector<double> terms(batch_points);  // the weights (then w·f, if the sum stores them)
     for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
       const std::span<double> xs(x.data(), count * s);
       const std::span<double> ys(y.data(), count);
       generate(first, xs, std::span<double>(terms.data(), count));
       f.evaluate(std::span<const double>(xs), ys);
       check_finite_batch(info.name, xs, ys, s);
-      for (std::size_t i = 0; i < count; ++i) terms[i] *= y[i];
-      sum.add_batch(std::span<const double>(terms.data(), count));
+      sum.add_weighted(std::span<double>(terms.data(), count), std::span<const double>(ys));
     });
     return sum;
   };
