@@ -12,11 +12,14 @@ equal in every column but the timing ones (bench/same_results.py), or the script
 
 Modelled: the cost of a cell is what the one-process run spent on it (its convergence.csv):
 `seconds`, the wall time of its repetitions, plus its stable timing, `seconds_per_estimate` ×
-`timed_estimates` when it was repeated (`--model-only FOLDER…` re-models kept runs, see --keep). A cell costing more than total/(4K) is split across the K
-ranks by chunks (bench/quadmc/mpi_run.hpp): it takes cost / min(K, C), C its chunks per
+`timed_estimates` when it was repeated. Whether its method shares chunks between processes
+comes from the same run's `--cells-csv` (column shares_chunks: method::shares_chunks, the flag
+the planner splits by; `--model-only FOLDER…` re-models runs kept with --keep, whose folders hold
+that file as cells.csv). A cell costing more than total/(4K) whose method shares chunks is split
+across the K ranks by chunks (bench/quadmc/mpi_run.hpp): it takes cost / min(K, C), C its chunks per
 repetition (N / 12288 rounded up: sampling's chunk, the smaller of the library's two, so the
-model is on the generous side for rules); the other cells go to ranks by LPT (largest first to
-the least-loaded rank). Speedup = total / (Σ split times + LPT makespan); the model ignores
+model is on the generous side for rules); the other cells — a costly cell whose method does not
+share chunks among them — go to ranks by LPT (largest first to the least-loaded rank). Speedup = total / (Σ split times + LPT makespan); the model ignores
 communication (one allgather per window of 4096 chunks and one gather per run) and the ranks'
 start-up, so it is an upper bound, and it says which cell bounds it.
 """
@@ -37,7 +40,30 @@ MPIRUN = ["mpirun", "--oversubscribe", "--allow-run-as-root", "--mca", "btl", "s
           "--mca", "btl_vader_single_copy_mechanism", "none"]
 
 
-def cells(csv_path):
+def sharing(cells_csv):
+    """Method label -> whether its cells share chunks, from `quadmc run --cells-csv`."""
+    shares = {}
+    with open(cells_csv, newline="", encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            flag = row["shares_chunks"] == "1"
+            if shares.setdefault(row["method"], flag) != flag:
+                sys.exit(f"scaling.py: {cells_csv}: method {row['method']} has cells that share "
+                         "chunks and cells that do not; the model keys the flag by method")
+    return shares
+
+
+def placements(cells_csv):
+    """(split cells, split cells whose method does not share) of a `--cells-csv` file."""
+    split = unshared = 0
+    with open(cells_csv, newline="", encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            if row["placement"] == "split":
+                split += 1
+                unshared += row["shares_chunks"] != "1"
+    return split, unshared
+
+
+def cells(csv_path, shares):
     with open(csv_path, newline="", encoding="utf-8") as f:
         for row in csv.DictReader(f):
             seconds = float(row["seconds"])  # all repetitions of the cell
@@ -46,14 +72,17 @@ def cells(csv_path):
                 seconds += float(row["seconds_per_estimate"]) * timed
             evals = int(row["evaluations"])
             name = f'{row["method"]} × {row["integrand"]}, N = {row["N"] or row["tolerance"]}'
-            yield name, seconds, max(1, math.ceil(evals / CHUNK))
+            if row["method"] not in shares:
+                sys.exit(f"scaling.py: method {row['method']} is not in the run's cells CSV")
+            yield name, seconds, max(1, math.ceil(evals / CHUNK)), shares[row["method"]]
 
 
 def model(costs, ranks):
-    total = sum(c for _, c, _ in costs)
+    total = sum(c for _, c, _, _ in costs)
     threshold = total / (4.0 * ranks)
-    split = [(n, c, k) for n, c, k in costs if c > threshold]
-    rest = sorted(((n, c) for n, c, _ in costs if c <= threshold), key=lambda x: -x[1])
+    split = [(n, c, k) for n, c, k, shares in costs if c > threshold and shares]
+    rest = sorted(((n, c) for n, c, _, shares in costs if c <= threshold or not shares),
+                  key=lambda x: -x[1])
     split_time = sum(c / min(ranks, k) for _, c, k in split)
     loads = [0.0] * ranks
     for _, c in rest:
@@ -72,6 +101,15 @@ def model(costs, ranks):
     else:
         bound = "—"
     return total / makespan, len(split), bound
+
+
+def add_model(row, costs):
+    for k in (8, 64, 1024):
+        speedup, split, bound = model(costs, k)
+        row[f"model_speedup_{k}"] = speedup
+        row[f"model_efficiency_{k}"] = speedup / k
+        row[f"split_cells_{k}"] = split
+        row[f"bound_{k}"] = bound
 
 
 def shown_args():
@@ -99,13 +137,25 @@ def timed(command, cwd):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--quadmc", required=True)
-    ap.add_argument("--scene", action="append", required=True)
+    ap.add_argument("--quadmc")
+    ap.add_argument("--scene", action="append", default=[])
     ap.add_argument("--out", required=True)
-    ap.add_argument("--keep", help="keep the 1- and 2-rank results folders here")
+    ap.add_argument("--keep", help="keep the 1- and 2-rank results folders here (with cells.csv)")
+    ap.add_argument("--model-only", nargs="+", metavar="FOLDER", default=[],
+                    help="model kept 1-rank folders (convergence.csv and cells.csv) without running")
     args = ap.parse_args()
-    quadmc = os.path.abspath(args.quadmc)
+    if bool(args.model_only) == bool(args.scene) or (args.scene and not args.quadmc):
+        ap.error("give --quadmc with --scene (measure and model), or --model-only FOLDER…")
+    quadmc = os.path.abspath(args.quadmc) if args.quadmc else ""
     rows = []
+    for folder in args.model_only:
+        shares = sharing(os.path.join(folder, "cells.csv"))
+        costs = list(cells(os.path.join(folder, "convergence.csv"), shares))
+        row = {"scene": os.path.basename(os.path.normpath(folder)), "cells": len(costs),
+               "one_rank_s": math.nan, "two_ranks_s": math.nan, "measured_speedup_2": math.nan,
+               "split_cells_2": "", "split_unshared_2": ""}
+        add_model(row, costs)
+        rows.append(row)
     with tempfile.TemporaryDirectory(prefix="quadmc_scaling_") as scratch:
         for scene in args.scene:
             name = os.path.splitext(os.path.basename(scene))[0]
@@ -119,26 +169,28 @@ def main():
                 f.write(text + "\n[output]\nplots = false\n")
             one = os.path.join(scratch, name + "_1")
             two = os.path.join(scratch, name + "_2")
-            t1 = timed([quadmc, "run", copy, "--threads", "1", "--out", one], scratch)
-            t2 = timed(MPIRUN + ["-np", "2", quadmc, "run", copy, "--threads", "1", "--out", two],
-                       scratch)
+            one_cells = os.path.join(scratch, name + "_1_cells.csv")
+            two_cells = os.path.join(scratch, name + "_2_cells.csv")
+            t1 = timed([quadmc, "run", copy, "--threads", "1", "--out", one,
+                        "--cells-csv", one_cells], scratch)
+            t2 = timed(MPIRUN + ["-np", "2", quadmc, "run", copy, "--threads", "1", "--out", two,
+                                 "--cells-csv", two_cells], scratch)
+            shutil.copyfile(one_cells, os.path.join(one, "cells.csv"))
+            shutil.copyfile(two_cells, os.path.join(two, "cells.csv"))
             same = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "same_results.py"),
                                    one, two], capture_output=True, text=True, check=False)
             if same.returncode != 0:
                 sys.exit(f"scaling.py: 2 ranks differ from 1 on {name}:\n{same.stdout}")
-            costs = list(cells(os.path.join(one, "convergence.csv")))
+            costs = list(cells(os.path.join(one, "convergence.csv"), sharing(one_cells)))
+            split_2, unshared_2 = placements(two_cells)
             if args.keep:
                 for folder in (one, two):
                     shutil.copytree(folder, os.path.join(args.keep, os.path.basename(folder)),
                                     dirs_exist_ok=True)
             row = {"scene": name, "cells": len(costs), "one_rank_s": t1, "two_ranks_s": t2,
-                   "measured_speedup_2": t1 / t2}
-            for k in (8, 64, 1024):
-                speedup, split, bound = model(costs, k)
-                row[f"model_speedup_{k}"] = speedup
-                row[f"model_efficiency_{k}"] = speedup / k
-                row[f"split_cells_{k}"] = split
-                row[f"bound_{k}"] = bound
+                   "measured_speedup_2": t1 / t2, "split_cells_2": split_2,
+                   "split_unshared_2": unshared_2}
+            add_model(row, costs)
             rows.append(row)
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "scaling.csv"), "w", newline="", encoding="utf-8") as f:
@@ -149,16 +201,21 @@ def main():
              "Made by `" + " ".join(["/usr/bin/python3", "bench/scaling.py"] + shown_args()) + "`"
              " (the method and the model are in the script's docstring). One thread per rank; "
              "every column but timing of the 2-rank run equals the 1-rank run "
-             "(`bench/same_results.py`).", "",
+             "(`bench/same_results.py`). Only cells whose method shares chunks are split "
+             "(`method::shares_chunks`, from the run's `--cells-csv`), in the run and in the "
+             "model.", "",
              "| scene | cells | 1 rank (s) | 2 ranks (s) | measured speedup | modelled speedup "
-             "(efficiency) at 8 / 64 / 1024 ranks | cells split at 8 / 64 / 1024 |",
+             "(efficiency) at 8 / 64 / 1024 ranks | cells split at 2 (run) / 8 / 64 / 1024 |",
              "|---|---|---|---|---|---|---|"]
     for r in rows:
         model_text = " / ".join(f'{r[f"model_speedup_{k}"]:.1f} ({100 * r[f"model_efficiency_{k}"]:.0f} %)'
                                 for k in (8, 64, 1024))
-        split_text = " / ".join(str(r[f"split_cells_{k}"]) for k in (8, 64, 1024))
-        lines.append(f'| {r["scene"]} | {r["cells"]} | {r["one_rank_s"]:.1f} | '
-                     f'{r["two_ranks_s"]:.1f} | {r["measured_speedup_2"]:.2f}× | {model_text} | '
+        split_text = " / ".join([str(r["split_cells_2"]) or "—"] +
+                                [str(r[f"split_cells_{k}"]) for k in (8, 64, 1024)])
+        measured = ("— | — | —" if math.isnan(r["one_rank_s"]) else
+                    f'{r["one_rank_s"]:.1f} | {r["two_ranks_s"]:.1f} | '
+                    f'{r["measured_speedup_2"]:.2f}×')
+        lines.append(f'| {r["scene"]} | {r["cells"]} | {measured} | {model_text} | '
                      f'{split_text} |')
     lines += ["", "What bounds the modelled speedup:", ""]
     for r in rows:

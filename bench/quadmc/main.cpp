@@ -157,6 +157,7 @@ struct run_request {
   std::optional<unsigned> threads;           // empty: the scene's
   std::optional<double> timing_min_seconds;  // empty: the scene's budget.timing_min_seconds
   std::string split_cells = "auto";          // under mpirun: which cells all ranks run together
+  std::string cells_csv;                     // where to write each cell's placement; empty: none
 };
 
 std::string cells_ran_text(std::size_t ran, std::size_t planned, double seconds) {
@@ -236,7 +237,20 @@ int run_command(const run_request& request, standard_output& out,
     const auto held = interruption::hold();
     bar.update(progress);
   };
-  const quadmc::run_output result = quadmc_cli::mpi::run_plan_distributed(p, options, world, split);
+  std::vector<quadmc_cli::mpi::cell_placement> placement;
+  const quadmc::run_output result =
+      quadmc_cli::mpi::run_plan_distributed(p, options, world, split, &placement);
+  if (!request.cells_csv.empty()) {
+    std::FILE* file = std::fopen(request.cells_csv.c_str(), "w");
+    const std::string text = quadmc_cli::mpi::cells_csv(p, placement);
+    const bool ok =
+        file != nullptr && std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    const int error = errno;
+    if (file == nullptr || std::fclose(file) != 0 || !ok) {
+      throw std::runtime_error(
+          fmt::format("cannot write --cells-csv {}: {}", request.cells_csv, std::strerror(error)));
+    }
+  }
   {
     const auto held = interruption::hold();
     bar.finish();
@@ -378,8 +392,13 @@ int main(int argc, char** argv) {
           ->check(CLI::Range(0.0, 60.0));
   run->add_option("--split-cells", request.split_cells,
                   "Under mpirun: which cells all ranks run together, each computing a share of "
-                  "its chunks (auto: the costly ones; all; none). Results do not depend on it")
+                  "its chunks (auto: the costly ones whose method shares chunks; all: every "
+                  "cell, those whose method does not share computed whole on every rank; "
+                  "none). Results do not depend on it")
       ->check(CLI::IsMember({"auto", "all", "none"}));
+  run->add_option("--cells-csv", request.cells_csv,
+                  "Write each cell's method's chunk sharing and the rank it ran on (\"split\": "
+                  "all ranks) to this CSV file (bench/scaling.py reads it)");
 
   std::string plan_file;
   auto* plan = app.add_subcommand("plan", "Print the cells a scene would run and what it skips");

@@ -52,6 +52,28 @@ split_policy parse_split_policy(std::string_view text) {
       fmt::format("invalid --split-cells = '{}': expected auto, all or none", text));
 }
 
+bool cell_shares_chunks(const quadmc::plan& p, std::size_t index) {
+  return p.source.methods[p.cells[index].method].configured->shares_chunks();
+}
+
+std::string cells_csv(const quadmc::plan& p, const std::vector<cell_placement>& placement) {
+  std::string out =
+      "integrand,instance,s,method,N,tolerance,evaluations,repetitions,shares_chunks,placement\n";
+  for (std::size_t i = 0; i < p.cells.size(); ++i) {
+    const quadmc::plan_cell& cell = p.cells[i];
+    const bool to_tolerance = !std::isnan(cell.tolerance);
+    const cell_placement where = i < placement.size() ? placement[i] : cell_placement{};
+    // Scene names are identifiers (scene/parse.hpp), so no field needs quoting.
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.source.integrands[cell.integrand].name,
+                       cell.instance, cell.dimension, p.source.methods[cell.method].label,
+                       to_tolerance ? std::string() : std::to_string(cell.nominal_N),
+                       to_tolerance ? fmt::format("{}", cell.tolerance) : std::string(),
+                       cell.evaluations, cell.repetitions, cell_shares_chunks(p, i) ? 1 : 0,
+                       where.split ? std::string("split") : fmt::format("rank {}", where.rank));
+  }
+  return out;
+}
+
 bool built_with_mpi() noexcept {
   return QUADMC_HAVE_MPI != 0;
 }
@@ -75,7 +97,9 @@ bool agree_to_proceed(const world&, bool rank0_ok) {
 }
 
 quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world&, split_policy) {
+                                        const world&, split_policy,
+                                        std::vector<cell_placement>* placement) {
+  if (placement != nullptr) placement->assign(p.cells.size(), cell_placement{});
   return quadmc::run_plan(p, options);
 }
 
@@ -290,8 +314,9 @@ std::vector<double> cost_per_evaluation(const quadmc::plan& p, const quadmc::run
 }
 
 struct assignment {
-  std::vector<std::size_t> split;  // cells all ranks run together, in plan order
-  std::vector<std::size_t> own;    // this rank's cells, in plan order
+  std::vector<std::size_t> split;         // cells all ranks run together, in plan order
+  std::vector<std::size_t> own;           // this rank's cells, in plan order
+  std::vector<cell_placement> placement;  // every cell's, on every rank
 };
 
 assignment assign_cells(const quadmc::plan& p, const std::vector<double>& cost_per_eval,
@@ -307,11 +332,14 @@ assignment assign_cells(const quadmc::plan& p, const std::vector<double>& cost_p
   // of total/K, the efficiency is at least 1/1.25 = 80 %.
   const double split_above = total / (4.0 * w.size);
   assignment a;
+  a.placement.resize(p.cells.size());
   std::vector<std::size_t> rest;
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
     const bool split =
-        policy == split_policy::all || (policy == split_policy::automatic && cost[i] > split_above);
+        policy == split_policy::all ||
+        (policy == split_policy::automatic && cost[i] > split_above && cell_shares_chunks(p, i));
     (split ? a.split : rest).push_back(i);
+    a.placement[i].split = split;
   }
   std::stable_sort(rest.begin(), rest.end(),
                    [&](std::size_t x, std::size_t y) { return cost[x] > cost[y]; });
@@ -320,6 +348,7 @@ assignment assign_cells(const quadmc::plan& p, const std::vector<double>& cost_p
     const auto least =
         static_cast<unsigned>(std::min_element(load.begin(), load.end()) - load.begin());
     load[least] += cost[i];
+    a.placement[i].rank = least;
     if (least == w.rank) a.own.push_back(i);
   }
   std::sort(a.own.begin(), a.own.end());
@@ -369,7 +398,9 @@ bool agree_to_proceed(const world& w, bool rank0_ok) {
 }
 
 quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world& w, split_policy policy) {
+                                        const world& w, split_policy policy,
+                                        std::vector<cell_placement>* placement) {
+  if (placement != nullptr) placement->assign(p.cells.size(), cell_placement{});
   if (w.size <= 1) return quadmc::run_plan(p, options);
   const auto run_start = clock::now();
   const unsigned threads_allowed =
@@ -381,6 +412,7 @@ quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run
   std::vector<std::size_t> series_of;
   const std::vector<double> cost = cost_per_evaluation(p, context, w, series_of);
   const assignment work = assign_cells(p, cost, series_of, w, policy);
+  if (placement != nullptr) *placement = work.placement;
 
   quadmc::run_progress progress;
   progress.cells_total = work.split.size() + (w.rank == 0 ? work.own.size() : 0);

@@ -3,15 +3,17 @@
 // Every rank parses the scene and makes the plan itself (both are deterministic). Cells then go
 // to ranks by planned cost, largest first, each to the least-loaded rank (the LPT rule: the
 // makespan is at most the total cost / K plus the largest cell); a cell costing more than a
-// quarter of a rank's fair share is *split*: all ranks run it together, each computing its share
-// of every parallel_reduce window and exchanging chunk results, so every rank folds all chunks in
-// chunk order (core/chunk_exchange.hpp). The cost of a cell is its evaluations × repetitions ×
-// the method's measured seconds per evaluation on that integrand (rank 0 times one repetition of
-// each series' smallest cell and sends the figures to every rank, so all ranks make the same
-// assignment). Repetition r of a cell is a pure function of (plan, cell, r, seed)
-// (docs/design.md#hot-path-contract), so where it ran changes nothing: rank 0 gathers every
-// cell's repetitions and files them in plan order (scene/run.hpp, run_assembly), and every CSV
-// column but the timing is what one process writes.
+// quarter of a rank's fair share is *split* when its method shares chunks: all ranks run it
+// together, each computing its share of every parallel_reduce window and exchanging chunk
+// results, so every rank folds all chunks in chunk order (core/chunk_exchange.hpp). A costly
+// cell whose method does not share chunks (a naive sum, genz_malik, vegas, smolyak, romberg)
+// would cost every rank its whole time if split, so it goes to one rank like the others. The cost
+// of a cell is its evaluations × repetitions × the method's measured seconds per evaluation on that
+// integrand (rank 0 times one repetition of each series' smallest cell and sends the figures to
+// every rank, so all ranks make the same assignment). Repetition r of a cell is a pure function of
+// (plan, cell, r, seed) (docs/design.md#hot-path-contract), so where it ran changes nothing: rank 0
+// gathers every cell's repetitions and files them in plan order (scene/run.hpp, run_assembly), and
+// every CSV column but the timing is what one process writes.
 //
 // Faults: a rank whose cell fails (bad input found late, a non-finite value) stops running
 // cells, and the failure reaches rank 0 with the gather; rank 0 then raises the error of the
@@ -25,7 +27,10 @@
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
 
+#include <cstddef>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace quadmc_cli::mpi {
 
@@ -35,10 +40,19 @@ struct world {
   unsigned rank = 0;
 };
 
-// Which cells all ranks run together: `automatic` splits the cells above the threshold above;
-// `all` and `none` are for tests and measurements (a split cell must equal the unsplit one).
+// Which cells all ranks run together: `automatic` splits the cells above the threshold above
+// whose method shares chunks (cell_shares_chunks); `all` splits every cell, those whose method
+// does not share chunks too — each rank then computes such a cell whole, which is exact and not
+// faster: it is for tests (a split cell must equal the unsplit one whatever its kernel) — and
+// `none` splits none. The results do not depend on the policy.
 enum class split_policy { automatic, all, none };
 split_policy parse_split_policy(std::string_view text);
+
+// Whether cell `index` of `p` is worth splitting: its configured method's kernels share chunk
+// results between processes (method::shares_chunks, methods/method.hpp), so each of K ranks does
+// about 1/K of its work. A cell that does not share is computed whole by every rank that runs
+// it, so `auto` gives it to one rank (LPT) whatever its cost.
+bool cell_shares_chunks(const quadmc::plan& p, std::size_t index);
 
 // MPI_Init when built with MPI and started by mpirun. Without the MPI build, a process started
 // by mpirun throws (one line: mpirun needs the MPI build). Call once, first thing in main.
@@ -56,7 +70,21 @@ bool agree_to_proceed(const world& w, bool rank0_ok);
 // order); other ranks return an empty run_output. A failed cell anywhere throws run_error on
 // every rank (its message on rank 0). options.on_progress is called on rank 0 for the cells it
 // runs itself and the split cells.
+//
+// `placement`, when given, receives where each plan cell ran (one entry per cell, on every rank).
+struct cell_placement {
+  bool split = false;  // run by all ranks together
+  unsigned rank = 0;   // else the rank that ran it whole
+};
 quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world& w, split_policy policy);
+                                        const world& w, split_policy policy,
+                                        std::vector<cell_placement>* placement = nullptr);
+
+// The plan's cells with their method's shares_chunks and their placement, as CSV (`run
+// --cells-csv FILE`): integrand, instance, s, method (the label), N (empty for a tolerance
+// cell), tolerance, evaluations, repetitions, shares_chunks (1 or 0), placement ("split" or
+// "rank R"). bench/scaling.py's model reads shares_chunks from it, so the model splits only the
+// cells the planner would.
+std::string cells_csv(const quadmc::plan& p, const std::vector<cell_placement>& placement);
 
 }  // namespace quadmc_cli::mpi

@@ -118,6 +118,57 @@ N = { from = 256, to = 262144, factor = 8 }
   }
 }
 
+// The naive sum cannot be split (one running double through every term), so `auto` gives its
+// costly cell to one rank, while the same cell with the pairwise accumulator is split; `all`
+// splits both (the naive one then runs whole on every rank, still exact: the test above) and
+// `none` neither. Each of the two 2^22-panel cells is about half the plan's cost, far above the
+// threshold total/(4K).
+TEST(MpiRunner, AutoSplitsOnlyCellsWhoseMethodSharesChunks) {
+  const quadmc::plan p = plan_of(R"([[integrand]]
+family = "exp"
+[[method]]
+name = "midpoint"
+accumulator = "naive"
+[[method]]
+name = "midpoint"
+accumulator = "pairwise"
+[budget]
+N = [1024, 4194304]
+)");
+  ASSERT_EQ(p.cells.size(), 4u);
+  for (const split_policy policy :
+       {split_policy::automatic, split_policy::all, split_policy::none}) {
+    std::vector<quadmc_cli::mpi::cell_placement> placement;
+    (void)quadmc_cli::mpi::run_plan_distributed(p, {}, the_world, policy, &placement);
+    ASSERT_EQ(placement.size(), p.cells.size());
+    for (std::size_t i = 0; i < p.cells.size(); ++i) {
+      const bool shares = quadmc_cli::mpi::cell_shares_chunks(p, i);
+      EXPECT_EQ(shares, p.source.methods[p.cells[i].method].label == "midpoint_pairwise");
+      const bool large = p.cells[i].evaluations == 4194304;
+      const bool expected =
+          policy == split_policy::all || (policy == split_policy::automatic && shares && large);
+      EXPECT_EQ(placement[i].split, expected)
+          << "cell " << i << " (" << p.source.methods[p.cells[i].method].label
+          << ", N = " << p.cells[i].nominal_N << "), policy " << static_cast<int>(policy);
+      if (!placement[i].split) {
+        EXPECT_LT(placement[i].rank, the_world.size);
+      }
+    }
+    const std::string csv = quadmc_cli::mpi::cells_csv(p, placement);
+    EXPECT_EQ(csv.rfind("integrand,instance,s,method,N,tolerance,evaluations,repetitions,"
+                        "shares_chunks,placement\n",
+                        0),
+              0u);
+    if (policy == split_policy::automatic) {
+      EXPECT_NE(csv.find("exp,0,1,midpoint_pairwise,4194304,,4194304,1,1,split\n"),
+                std::string::npos)
+          << csv;
+      EXPECT_NE(csv.find("exp,0,1,midpoint_naive,4194304,,4194304,1,0,rank "), std::string::npos)
+          << csv;
+    }
+  }
+}
+
 // Trapezoid with 2^17 panels evaluates x = 0.75 in chunk 6 of its 9 (2^14 nodes each): split
 // across ranks, the failing chunk is another rank's than rank 0's first; unsplit, the cell runs
 // on whichever rank the costs gave it.

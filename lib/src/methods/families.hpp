@@ -4,6 +4,7 @@
 #pragma once
 
 #include "quadmc/estimators/point_set_catalogue.hpp"
+#include "quadmc/estimators/sample_mean.hpp"
 #include "quadmc/methods/method.hpp"
 
 #include <span>
@@ -26,6 +27,11 @@ sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t
 inline error_bars error_bars_of(error_source source) noexcept {
   return source == error_source::replicates ? error_bars::replicates : error_bars::own;
 }
+
+// Whether the estimators of a point set (its monte_carlo, importance and irradiance, all a
+// sample mean, estimators/sample_mean.hpp) share their chunks between the processes of a split
+// cell (method::shares_chunks): their chunk result's declaration.
+inline constexpr bool sample_mean_shares_chunks = shareable_chunk_result<sample_statistics>;
 
 // A Monte Carlo estimate as one repetition: its standard error is also its own error estimate.
 repetition_result from_estimate(const estimate& e);

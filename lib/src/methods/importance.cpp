@@ -108,6 +108,8 @@ class importance_method final : public method {
                        "docs/theory.md#importance; [Ramamoorthi 2009, §4.1]");
   }
 
+  bool shares_chunks() const override { return sample_mean_shares_chunks; }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     return from_estimate(points_.set->importance(cell.function, {warp_->kind, parameter_},
                                                  {context.seed, cell.stream}, cell.size.evaluations,

@@ -41,6 +41,8 @@ class irradiance_method final : public method {
                        "docs/theory.md#irradiance-estimators; [Ramamoorthi 2009, §2.2.3, §4.1]");
   }
 
+  bool shares_chunks() const override { return sample_mean_shares_chunks; }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     const irradiance_setup setup = make_irradiance_setup(cell.params);
     return from_estimate(points_.set->irradiance(technique_, setup, {context.seed, cell.stream},

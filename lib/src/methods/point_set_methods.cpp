@@ -55,6 +55,8 @@ class point_set_method final : public method {
 
   theoretical_rate theory(const integrand_class& f) const override { return theory_(f); }
 
+  bool shares_chunks() const override { return sample_mean_shares_chunks; }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     return from_estimate(set_->monte_carlo(cell.function, {context.seed, cell.stream},
                                            cell.size.evaluations, context.threads));

@@ -136,6 +136,8 @@ class qmc_method final : public method {
     }
   }
 
+  bool shares_chunks() const override { return sample_mean_shares_chunks; }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     const estimate e = set_->monte_carlo(cell.function, {context.seed, cell.stream},
                                          cell.size.evaluations, context.threads, options_.set);

@@ -93,6 +93,11 @@ class smolyak_method final : public method {
     return out;
   }
 
+  // The Σ|w| tally is written on the side of the sum, so the sum's chunks stay on each process.
+  bool shares_chunks() const override {
+    return weighted_sum_shares_chunks<tallied_grid>(summation::pairwise);
+  }
+
  private:
   // The grid as the kernel sees it, adding Σ|w| on the way: each batch's |w| go to the Neumaier
   // sum of its chunk (the kernel's unit of parallel work, core/batching.hpp: one thread runs a

@@ -175,6 +175,13 @@ class tensor_rule_method final : public method {
 
   summation summation_scheme() const override { return options_.accumulator; }
 
+  // integrate() is weighted_sum over the rule's tensor grid: shared unless the accumulator is
+  // the naive left-to-right sum.
+  bool shares_chunks() const override {
+    using grid = tensor_product_grid<decltype(rule_.nodes(std::uint64_t{1}))>;
+    return weighted_sum_shares_chunks<grid>(options_.accumulator);
+  }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     const rule_result r =
         integrate(cell.function, rule_, cell.size.per_axis, context.threads, options_.accumulator);

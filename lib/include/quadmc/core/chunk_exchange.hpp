@@ -37,6 +37,11 @@ class chunk_exchange {
   // none failed), so that every process throws the error a one-process run would throw.
   virtual failure exchange(const void* mine, void* all, const std::size_t* bytes_per_rank,
                            const failure& local) = 0;
+  // Not collective: told by parallel_reduce, once per window, that `chunks` chunks of a
+  // reduction whose chunk result is not shareable ran whole on this process while the exchange
+  // was active. By default nothing; a test counts them to check a method's shares_chunks
+  // (methods/method.hpp) against what its kernels really do.
+  virtual void computed_whole(std::size_t /*chunks*/) noexcept {}
 };
 
 // Whether parallel_reduce may share a reduction's chunk results between processes. Only when

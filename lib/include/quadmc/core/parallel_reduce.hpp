@@ -147,7 +147,8 @@ void distributed_window(chunk_exchange& exchange, Slot* out, std::size_t begin, 
 // With a chunk_exchange active on this thread (core/chunk_exchange.hpp) and a T whose kernel
 // declared it shareable_chunk_result, this process computes only its share of each window and
 // receives the other processes' chunk results; the fold is the same, so is the result. A failure on
-// another process is thrown here as a std::runtime_error with that chunk's message.
+// another process is thrown here as a std::runtime_error with that chunk's message. Any other T
+// runs every chunk here and tells the active exchange so (chunk_exchange::computed_whole).
 template <class T, class ChunkFn, class Combine>
 T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_fn,
                   Combine&& combine) {
@@ -160,10 +161,10 @@ T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_
   };
   std::vector<slot> slots(std::min(chunks, window));
   chunk_exchange* exchange = nullptr;
+  chunk_exchange* const active = active_chunk_exchange();
+  if (active != nullptr && active->size() > 1) exchange = active;
   if constexpr (shareable_chunk_result<T>) {
     static_assert(std::is_trivially_copyable_v<T>, "shared chunk results travel as bytes");
-    chunk_exchange* const active = active_chunk_exchange();
-    if (active != nullptr && active->size() > 1) exchange = active;
   }
   for (std::size_t begin = 0; begin < chunks; begin += window) {
     const std::size_t count = std::min(window, chunks - begin);
@@ -175,6 +176,7 @@ T parallel_reduce(std::size_t chunks, unsigned threads, T init, ChunkFn&& chunk_
       }
     }
     if (!shared) {
+      if (exchange != nullptr) exchange->computed_whole(count);
       std::exception_ptr failure;
       if (detail::compute_chunks(slots.data(), begin, count, threads, chunk_fn, failure) < count) {
         std::rethrow_exception(failure);

@@ -164,6 +164,23 @@ concept writes_on_the_side = requires {
   requires P::writes_on_the_side;
 };
 
+// Whether the sum with `accumulate` runs as a parallel_reduce whose chunk results may be shared
+// between processes (core/chunk_exchange.hpp): the accumulators' own declarations above; the
+// naive sum is one running double carried through the chunks serially, outside parallel_reduce.
+constexpr bool accumulator_shares_chunks(summation accumulate) noexcept {
+  switch (accumulate) {
+    case summation::pairwise:
+      return shareable_chunk_result<pairwise_accumulator>;
+    case summation::neumaier:
+      return shareable_chunk_result<neumaier_accumulator>;
+    case summation::long_double:
+      return shareable_chunk_result<long_double_accumulator>;
+    case summation::naive:
+      return false;
+  }
+  return false;
+}
+
 // The kernel proper, on a checked integrand and a set of its dimension: generate(first, x, w)
 // writes a batch of box coordinates and weights. ShareChunks: whether a chunk's sum is all it
 // computes (see writes_on_the_side).
@@ -263,6 +280,15 @@ rule_result checked_weighted_sum(const F& f, const integrand_info& info, const P
 }
 
 }  // namespace detail
+
+// Whether weighted_sum over a set of type P with `accumulate` shares its chunk results between
+// the processes of an active chunk_exchange (core/chunk_exchange.hpp): the facts its kernel
+// branches on, the set's writes_on_the_side and the accumulator's declaration. The methods
+// layer's shares_chunks (methods/method.hpp) asks this.
+template <class P>
+constexpr bool weighted_sum_shares_chunks(summation accumulate) noexcept {
+  return !detail::writes_on_the_side<P> && detail::accumulator_shares_chunks(accumulate);
+}
 
 // ∫ f over f.info().domain by the rule `points`: vol(box)·Σ w_i f(x_i), x_i the set's nodes
 // mapped to the box. threads = 0 uses every core; the result is bitwise the same for every thread

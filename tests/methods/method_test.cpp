@@ -1,0 +1,275 @@
+// Tests of method.hpp's shares_chunks: for every registered method, under every control it
+// supports and every option value that changes its kernel (the rules' accumulators, the sparse
+// grids' rules, the quasi-Monte Carlo randomizations, importance's warps and point sets), one cell
+// is run by two "processes" (threads of this test, each with its own exchange of an in-process
+// group) and once alone. Both processes must return the lone run's bits, and the flag must say
+// what happened: a method that shares chunks had every reduction exchanged (none ran whole) and
+// its processes evaluated the integrand between them exactly as often as the lone run, each
+// less; one that does not had nothing exchanged and each process evaluated as often as the lone
+// run. So the MPI planner (bench/quadmc/mpi_run.hpp), which splits only cells whose method
+// shares, can trust the flag.
+#include "quadmc/methods/method.hpp"
+
+#include "quadmc/core/chunk_exchange.hpp"
+#include "quadmc/functions/catalogue.hpp"
+#include "quadmc/methods/registry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <barrier>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <set>
+#include <span>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace quadmc {
+namespace {
+
+// Integrand evaluations made on the calling thread (the runs below use one thread per process,
+// so every chunk runs on its process's own thread).
+thread_local std::uint64_t evaluations_here = 0;
+
+struct counting_integrand {
+  any_integrand f;
+  std::size_t dimension() const noexcept { return f.dimension(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    evaluations_here += y.size();
+    f.evaluate(x, y);
+  }
+  integrand_info info() const { return f.info(); }
+};
+
+// K processes as K threads: each posts its share, all wait, each copies every share in rank
+// order, all wait again (so no share is overwritten before every process has read it).
+class in_process_group {
+ public:
+  explicit in_process_group(unsigned size) : size_(size), barrier_(size), posts_(size) {}
+
+  class member final : public chunk_exchange {
+   public:
+    member(in_process_group& group, unsigned rank) : group_(&group), rank_(rank) {}
+    unsigned size() const noexcept override { return group_->size_; }
+    unsigned rank() const noexcept override { return rank_; }
+    failure exchange(const void* mine, void* all, const std::size_t* bytes_per_rank,
+                     const failure& local) override {
+      ++windows_shared;
+      return group_->exchange(rank_, mine, all, bytes_per_rank, local);
+    }
+    void computed_whole(std::size_t chunks) noexcept override { chunks_whole += chunks; }
+
+    std::uint64_t windows_shared = 0;
+    std::uint64_t chunks_whole = 0;
+
+   private:
+    in_process_group* group_;
+    unsigned rank_;
+  };
+
+ private:
+  struct post {
+    const void* mine = nullptr;
+    std::size_t bytes = 0;
+    chunk_exchange::failure local;
+  };
+
+  chunk_exchange::failure exchange(unsigned rank, const void* mine, void* all,
+                                   const std::size_t* bytes_per_rank,
+                                   const chunk_exchange::failure& local) {
+    posts_[rank] = post{mine, bytes_per_rank[rank], local};
+    barrier_.arrive_and_wait();
+    chunk_exchange::failure agreed;
+    for (const post& p : posts_) {
+      if (p.local.chunk < agreed.chunk) agreed = p.local;
+    }
+    if (agreed.chunk == chunk_exchange::no_chunk) {
+      auto* out = static_cast<char*>(all);
+      for (unsigned r = 0; r < size_; ++r) {
+        EXPECT_EQ(posts_[r].bytes, bytes_per_rank[r]);
+        if (posts_[r].bytes > 0) std::memcpy(out, posts_[r].mine, posts_[r].bytes);
+        out += bytes_per_rank[r];
+      }
+    }
+    barrier_.arrive_and_wait();
+    return agreed;
+  }
+
+  unsigned size_;
+  std::barrier<> barrier_;
+  std::vector<post> posts_;
+};
+
+struct candidate {
+  const char* family;
+  std::size_t s;
+};
+
+// The first integrand a method takes: a Genz family in 2D, eˣ for 1D methods, the irradiance
+// integrand for the rendering estimators.
+constexpr candidate candidates[] = {{"genz_gaussian", 2}, {"exp", 1}, {"irradiance_area", 2}};
+
+// Every option value that selects another kernel path, per method; {} is the defaults.
+std::vector<option_table> configurations(std::string_view name) {
+  const std::string n(name);
+  if (n.find("rectangle") != std::string::npos || n == "midpoint" || n == "trapezoid" ||
+      n == "simpson" || n == "gauss_legendre") {
+    std::vector<option_table> out{{}};
+    for (const char* a : {"pairwise", "neumaier", "naive", "long_double"}) {
+      out.push_back({{"accumulator", a}});
+    }
+    return out;
+  }
+  if (n == "smolyak") {
+    return {{}, {{"rule", "gauss_patterson"}}, {{"rule", "trapezoid"}}};
+  }
+  if (n == "adaptive_sparse_grid") return {{}, {{"rule", "gauss_patterson"}}};
+  if (n == "sobol") {
+    std::vector<option_table> out{{}};
+    for (const char* r : {"owen", "fast_owen", "lms_shift", "shift", "none"}) {
+      out.push_back({{"randomization", r}});
+    }
+    return out;
+  }
+  if (n == "halton") {
+    return {{}, {{"randomization", "permutation"}}, {{"randomization", "none"}}};
+  }
+  if (n == "lattice") {
+    return {{}, {{"randomization", "none"}}, {{"periodization", "baker"}}};
+  }
+  if (n == "importance") {
+    return {{{"warp", "exponential"}},
+            {{"warp", "power"}},
+            {{"warp", "exponential"}, {"point_set", "jittered"}},
+            {{"warp", "exponential"}, {"point_set", "sobol"}}};
+  }
+  if (n.rfind("irradiance_", 0) == 0) return {{}, {{"point_set", "sobol"}}};
+  return {{}};
+}
+
+struct process_outcome {
+  repetition_result result;
+  std::uint64_t evaluations = 0;
+  std::uint64_t windows_shared = 0;
+  std::uint64_t chunks_whole = 0;
+  std::string error;
+};
+
+bool same_bits(const repetition_result& a, const repetition_result& b) {
+  return std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value) &&
+         std::bit_cast<std::uint64_t>(a.std_error) == std::bit_cast<std::uint64_t>(b.std_error) &&
+         std::bit_cast<std::uint64_t>(a.error_estimate) ==
+             std::bit_cast<std::uint64_t>(b.error_estimate) &&
+         a.evaluations == b.evaluations;
+}
+
+// N = 2^16: at least 4 chunks of every kernel (2^14 points for rules, 12288 samples for Monte
+// Carlo), so that a shared cell leaves each of two processes less than the whole.
+constexpr std::uint64_t N = std::uint64_t{1} << 16;
+
+TEST(MethodSharesChunks, SaysWhatTheKernelsDoUnderAChunkExchange) {
+  std::set<std::string> covered;
+  for (const method_descriptor* d : method_registry()) {
+    for (const option_table& options : configurations(d->name)) {
+      const std::unique_ptr<const method> m = make_method(d->name, options);
+      const candidate* chosen = nullptr;
+      for (const candidate& c : candidates) {
+        const catalogue_entry& entry = find_catalogue_entry(c.family);
+        if (!m->incompatibility({entry.name, c.s, entry.rendering}) && m->size_for(N, c.s).size) {
+          chosen = &c;
+          break;
+        }
+      }
+      ASSERT_NE(chosen, nullptr) << d->name << " takes none of the test's integrands";
+      integrand_params params;
+      params.dimension = chosen->s;
+      params.seed = 3;
+      if (find_catalogue_entry(chosen->family).rendering) params.scalars["occluder"] = 1.0;
+      const any_integrand f(counting_integrand{make_integrand(chosen->family, params)});
+      const cell_size size = *m->size_for(N, chosen->s).size;
+      for (const cell_control control : d->controls) {
+        std::string where = std::string(d->name) + std::string(m->label_suffix()) + " (" +
+                            std::string(to_string(control)) + ") on " + chosen->family;
+        const double tolerance =
+            control == cell_control::tolerance ? 1e-7 : std::numeric_limits<double>::quiet_NaN();
+        const method_cell cell{f, params, size, control, tolerance, 17};
+        const run_context context{5, 1};
+
+        evaluations_here = 0;
+        const repetition_result alone = m->run(cell, context);
+        const std::uint64_t alone_evaluations = evaluations_here;
+
+        constexpr unsigned processes = 2;
+        in_process_group group(processes);
+        std::vector<process_outcome> outcome(processes);
+        std::vector<std::thread> threads;
+        for (unsigned r = 0; r < processes; ++r) {
+          threads.emplace_back([&, r] {
+            in_process_group::member exchange(group, r);
+            const chunk_exchange_scope shared(&exchange);
+            evaluations_here = 0;
+            try {
+              outcome[r].result = m->run(cell, context);
+            } catch (const std::exception& e) {
+              outcome[r].error = e.what();
+            }
+            outcome[r].evaluations = evaluations_here;
+            outcome[r].windows_shared = exchange.windows_shared;
+            outcome[r].chunks_whole = exchange.chunks_whole;
+          });
+        }
+        for (std::thread& t : threads) t.join();
+
+        std::uint64_t evaluations_between = 0;
+        for (unsigned r = 0; r < processes; ++r) {
+          const process_outcome& o = outcome[r];
+          ASSERT_TRUE(o.error.empty()) << where << ", process " << r << ": " << o.error;
+          EXPECT_TRUE(same_bits(o.result, alone)) << where << ", process " << r;
+          evaluations_between += o.evaluations;
+          if (m->shares_chunks()) {
+            EXPECT_GT(o.windows_shared, 0u) << where << " declares it shares, but did not";
+            EXPECT_EQ(o.chunks_whole, 0u) << where << " declares it shares, but ran "
+                                          << o.chunks_whole << " chunks whole on process " << r;
+            if (alone_evaluations > 0) {
+              EXPECT_LT(o.evaluations, alone_evaluations) << where << ", process " << r;
+            }
+          } else {
+            EXPECT_EQ(o.windows_shared, 0u) << where << " declares it does not share, but did";
+            EXPECT_EQ(o.evaluations, alone_evaluations) << where << ", process " << r;
+          }
+        }
+        if (m->shares_chunks()) {
+          EXPECT_EQ(evaluations_between, alone_evaluations) << where;
+        }
+        covered.insert(where);
+      }
+    }
+  }
+  // Every method of the registry was run (a new method joins this test by being registered).
+  for (const method_descriptor* d : method_registry()) {
+    bool found = false;
+    for (const std::string& w : covered) found = found || w.rfind(std::string(d->name), 0) == 0;
+    EXPECT_TRUE(found) << d->name;
+  }
+}
+
+// The declarations the planner relies on, as the kernels make them (the test above checks them
+// against the kernels): the naive sum and the Smolyak tally stay on each process; the other
+// accumulators and every sample mean share.
+TEST(MethodSharesChunks, NaiveSumsSmolyakAndTheAdaptiveMethodsDoNotShare) {
+  EXPECT_TRUE(make_method("midpoint")->shares_chunks());
+  EXPECT_TRUE(make_method("midpoint", {{"accumulator", "long_double"}})->shares_chunks());
+  EXPECT_FALSE(make_method("midpoint", {{"accumulator", "naive"}})->shares_chunks());
+  EXPECT_FALSE(make_method("smolyak")->shares_chunks());
+  EXPECT_FALSE(make_method("genz_malik")->shares_chunks());
+  EXPECT_FALSE(make_method("vegas")->shares_chunks());
+  EXPECT_FALSE(make_method("romberg")->shares_chunks());
+  EXPECT_TRUE(make_method("plain_mc")->shares_chunks());
+  EXPECT_TRUE(make_method("sobol", {{"randomization", "none"}})->shares_chunks());
+}
+
+}  // namespace
+}  // namespace quadmc
