@@ -199,7 +199,7 @@ void for_each_method(Visitor&& visit) {
 
 // The QMC point sets through the same Monte Carlo kernel (throughput rows only, no peak-RSS row:
 // the lattice stops at N = 2^20): Sobol' with each scramble and the shifted rank-1 lattice, so
-// their evals_per_second divided by plain_mc's is the per-evaluation ratio of issue 18's targets
+// their evals_per_second divided by plain_mc's is the per-evaluation ratio of the QMC targets
 // (lms_shift, fast_owen ≥ 1×, owen ≥ 0.5×, lattice ≥ 1.5× plain MC).
 template <class Visitor>
 void for_each_qmc_method(Visitor&& visit) {
