@@ -3,6 +3,7 @@
 // only the speed (tests/sampling/sobol_points_test.cpp compares them bitwise).
 #include "quadmc/sampling/sobol_blocks.hpp"
 
+#include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
 #include "sobol_kernels.hpp"
 
@@ -35,6 +36,26 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
       t.offset[lane] = v;
       t.key[lane] = scramble == sobol_scramble::xor_constant ? 0 : keys[j];
     }
+  }
+  if (scramble == sobol_scramble::owen) {
+    // Built from owen_scramble's definition directly: 2^k·k hashes per dimension, no more than the
+    // points themselves cost when k = depth ≤ log2 N.
+    unsigned k = depth < 12 ? depth : 12;
+    while (k > 0 && (s << k) > (std::size_t{1} << 17)) --k;
+    t.table_digits = k;
+    t.flips.resize(s << k);
+    for (std::size_t j = 0; j < s; ++j) {
+      for (std::uint64_t p = 0; p < (std::uint64_t{1} << k); ++p) {
+        std::uint64_t mask = 0;
+        for (unsigned b = 0; b < k; ++b) {
+          const std::uint64_t prefix = b == 0 ? 1 : ((p >> (k - b)) | (std::uint64_t{1} << b));
+          mask ^= (mix64(keys[j] ^ prefix) >> 63) << (63 - b);
+        }
+        t.flips[(j << k) + p] = mask;
+      }
+    }
+    t.flip_base.resize(t.words);
+    for (std::size_t w = 0; w < t.words; ++w) t.flip_base[w] = (w % s) << k;
   }
   if (t.log2_block > 0) {
     const unsigned b = t.log2_block;

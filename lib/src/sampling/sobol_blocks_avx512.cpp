@@ -54,11 +54,19 @@ __m512i fast_owen(__m512i v, __m512i seed) noexcept {
   return _mm512_or_si512(_mm512_slli_epi64(high, 32), low);
 }
 
-// owen_scramble::operator() on 8 lanes (depth ≤ 64).
-__m512i owen(__m512i v, __m512i seed, unsigned depth) noexcept {
+// owen_scramble::operator() on 8 lanes (depth ≤ 64): the first table_digits flips by one gather
+// from the prefix table (sobol_blocks.hpp), the others hashed as the scalar code does.
+__m512i owen(__m512i v, __m512i seed, __m512i base, const sobol_block_tables& t) noexcept {
+  const unsigned depth = t.depth;
+  const unsigned k = t.table_digits;
   __m512i out = v;
+  if (k > 0) {
+    const __m512i index =
+        _mm512_add_epi64(base, _mm512_srl_epi64(v, _mm_cvtsi32_si128(static_cast<int>(64 - k))));
+    out = _mm512_xor_si512(out, _mm512_i64gather_epi64(index, t.flips.data(), 8));
+  }
   const __m512i top = _mm512_set1_epi64(static_cast<long long>(std::uint64_t{1} << 63));
-  for (unsigned b = 0; b < depth; ++b) {
+  for (unsigned b = k; b < depth; ++b) {
     const __m512i length = _mm512_set1_epi64(static_cast<long long>(std::uint64_t{1} << b));
     const __m512i prefix =
         b == 0 ? length : _mm512_or_si512(_mm512_srl_epi64(v, _mm_cvtsi32_si128(64 - b)), length);
@@ -88,11 +96,14 @@ void run(const sobol_block_tables& t, std::size_t w0, __mmask8 tail, std::uint64
          std::uint64_t blocks, double* out) noexcept {
   const std::size_t words = t.words;
   const std::uint64_t* rows = t.rows.data() + w0;
-  __m512i y[V], offset[V], key[V];
+  __m512i y[V], offset[V], key[V], base[V];
   for (int v = 0; v < V; ++v) {
     const __mmask8 m = v + 1 == V ? tail : __mmask8{0xff};
     offset[v] = _mm512_maskz_loadu_epi64(m, t.offset.data() + w0 + 8 * v);
     key[v] = _mm512_maskz_loadu_epi64(m, t.key.data() + w0 + 8 * v);
+    base[v] = S == sobol_scramble::owen
+                  ? _mm512_maskz_loadu_epi64(m, t.flip_base.data() + w0 + 8 * v)
+                  : _mm512_setzero_si512();
     y[v] = _mm512_setzero_si512();
   }
   // C·g(B·q): the columns of the set bits of B·q's Gray code.
@@ -111,7 +122,7 @@ void run(const sobol_block_tables& t, std::size_t w0, __mmask8 tail, std::uint64
     for (int v = 0; v < V; ++v) {
       __m512i w = _mm512_xor_si512(y[v], offset[v]);
       if constexpr (S == sobol_scramble::fast_owen) w = fast_owen(w, key[v]);
-      if constexpr (S == sobol_scramble::owen) w = owen(w, key[v], t.depth);
+      if constexpr (S == sobol_scramble::owen) w = owen(w, key[v], base[v], t);
       const __m512d x = _mm512_mul_pd(_mm512_cvtepu64_pd(_mm512_srli_epi64(w, 11)), scale);
       if (v + 1 == V) {
         _mm512_mask_storeu_pd(out + 8 * v, tail, x);

@@ -32,11 +32,18 @@ struct sobol_block_tables {
   unsigned log2_block = 0;  // B = 2^log2_block points per block
   std::size_t words = 0;    // B·s coordinates per block
   sobol_scramble scramble = sobol_scramble::xor_constant;
-  unsigned depth = 0;                 // owen: digits drawn one by one (owen_scramble)
-  std::vector<std::uint64_t> rows;    // 32 rows of `words`: column k of each lane's dimension
-  std::vector<std::uint64_t> steps;   // b ≥ 1: 32 − b rows, column k + b ⊕ column b − 1
-  std::vector<std::uint64_t> offset;  // `words`: C_j·g(r) for lane r·s + j (⊕ the shift)
-  std::vector<std::uint64_t> key;     // `words`: the dimension's scramble key (fast_owen, owen)
+  unsigned depth = 0;  // owen: digits drawn one by one (owen_scramble)
+  // owen: the flips of the first `table_digits` digits for every prefix of that length, one table
+  // of 2^table_digits words per dimension (bit 63 − b = the flip of digit b, exactly the
+  // mix64(seed ⊕ prefix) bits of owen_scramble): one gather replaces table_digits hashes per
+  // coordinate. table_digits ≤ 12 and the tables ≤ 1 MiB together (s·2^table_digits ≤ 2^17).
+  unsigned table_digits = 0;
+  std::vector<std::uint64_t> flips;
+  std::vector<std::uint64_t> flip_base;  // `words`: j·2^table_digits for the lane's dimension j
+  std::vector<std::uint64_t> rows;       // 32 rows of `words`: column k of each lane's dimension
+  std::vector<std::uint64_t> steps;      // b ≥ 1: 32 − b rows, column k + b ⊕ column b − 1
+  std::vector<std::uint64_t> offset;     // `words`: C_j·g(r) for lane r·s + j (⊕ the shift)
+  std::vector<std::uint64_t> key;        // `words`: the dimension's scramble key (fast_owen, owen)
 };
 
 // columns: 32 per dimension, dimension-major (as sobol_points holds them); keys: one per
