@@ -74,8 +74,13 @@ bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t bl
 #if defined(__x86_64__)
   // vpmullq and vcvtuqq2pd are AVX-512DQ, which the avx512 level (AVX512F) does not imply.
   static const bool has_avx512dq = __builtin_cpu_supports("avx512dq");
+  static const bool has_gfni = __builtin_cpu_supports("gfni") && __builtin_cpu_supports("avx512bw");
   if (active_simd_level() == simd_level::avx512 && has_avx512dq) {
-    sobol_blocks_avx512(t, q, blocks, out);
+    if (has_gfni) {
+      sobol_blocks_avx512_gfni(t, q, blocks, out);
+    } else {
+      sobol_blocks_avx512(t, q, blocks, out);
+    }
     return true;
   }
 #else
