@@ -77,6 +77,8 @@
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
+#include "quadmc/sampling/rank1_lattice_points.hpp"
+#include "quadmc/sampling/sobol_points.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -197,6 +199,19 @@ void for_each_method(Visitor&& visit) {
   visit("gauss_legendre", tensor_method<gauss_legendre_rule>{gauss_legendre_rule(3)});
 }
 
+// The QMC point sets through the same Monte Carlo kernel (throughput rows only, no peak-RSS row:
+// the lattice stops at N = 2^20): Sobol' with each scramble and the shifted rank-1 lattice, so
+// their evals_per_second divided by plain_mc's is the per-evaluation ratio of the QMC targets
+// (lms_shift, fast_owen ≥ 1×, owen ≥ 0.5×, lattice ≥ 1.5× plain MC).
+template <class Visitor>
+void for_each_qmc_method(Visitor&& visit) {
+  visit("sobol_none", monte_carlo_method<sobol_points<unrandomized_digits>>{});
+  visit("sobol_lms_shift", monte_carlo_method<sobol_points<linear_matrix_scramble>>{});
+  visit("sobol_fast_owen", monte_carlo_method<sobol_points<fast_owen_scramble>>{});
+  visit("sobol_owen", monte_carlo_method<sobol_points<owen_scramble>>{});
+  visit("lattice_shift", monte_carlo_method<rank1_lattice_points<no_periodization>>{});
+}
+
 // Scalar-loop rates (evaluations per wall second) by (integrand, s): written by the scalar_loop
 // benchmark, or measured on demand (scalar_loop_rate). Google Benchmark runs benchmarks one
 // after another on this thread, so no lock is needed.
@@ -295,6 +310,12 @@ void register_integrand(genz_family family) {
     scalar_loop_bench<F>(state, family);
   })->Apply(dimensions_one_thread);
   for_each_method([&](const char* name, auto method) {
+    benchmark::RegisterBenchmark(
+        (std::string(name) + "/" + integrand).c_str(),
+        [family, method](benchmark::State& state) { method_bench<F>(state, family, method); })
+        ->Apply(dimensions_and_threads);
+  });
+  for_each_qmc_method([&](const char* name, auto method) {
     benchmark::RegisterBenchmark(
         (std::string(name) + "/" + integrand).c_str(),
         [family, method](benchmark::State& state) { method_bench<F>(state, family, method); })

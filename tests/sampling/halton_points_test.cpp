@@ -139,6 +139,30 @@ TYPED_TEST(HaltonScrambled, ReplicateMeanIsWithinItsStandardError) {
   EXPECT_GT(se, 0.0);
 }
 
+// The permutation randomizer walks only the digits of i and starts from a precomputed sum of the
+// permuted zero digits above them: bitwise the full walk over every digit position (kept as
+// reference()), for the first 2^14 points, indices with every digit count up to the largest N
+// allows, and bases 2 … 547 (s = 100).
+TEST(HaltonPoints, PermutationTailTableEqualsTheFullDigitWalkBitwise) {
+  const std::size_t s = 100;
+  const std::uint64_t n = (std::uint64_t{1} << 62) / s;
+  const halton_points<random_digit_permutation> points(s, n, 2026, 18);
+  std::vector<std::uint64_t> indices;
+  for (std::uint64_t i = 0; i < (1u << 14); ++i) indices.push_back(i);
+  for (std::uint64_t i = 1; i < n / 3; i = i * 3 + 1) indices.push_back(i);
+  indices.push_back(n - 1);
+  std::vector<double> x(s);
+  for (const std::uint64_t i : indices) {
+    points.generate(i, x);
+    for (std::size_t j = 0; j < s; ++j) {
+      const double expected =
+          points.randomizer().reference(i, j, points.base(j), points.inverse_base(j));
+      ASSERT_EQ(std::memcmp(&x[j], &expected, sizeof(double)), 0)
+          << "point " << i << ", dimension " << j << ": " << x[j] << " vs " << expected;
+    }
+  }
+}
+
 TEST(HaltonPoints, CoverAThousandDimensionsAndNoMore) {
   const halton_points<nested_digit_scramble> p(1000, 16, 1, 1);
   std::vector<double> x(16 * 1000);

@@ -3,12 +3,14 @@
 // uniformity, the baker's transform, and the sizes it refuses.
 #include "quadmc/sampling/rank1_lattice_points.hpp"
 
+#include "quadmc/core/simd_level.hpp"
 #include "quadmc/core/summation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <numeric>
 #include <vector>
@@ -117,6 +119,49 @@ TEST(RankOneLatticePoints, ShiftedPointsAreUniformWithAndWithoutTheBaker) {
     EXPECT_NEAR(plain[b], 256.0, 4.9 * sd) << b;
     EXPECT_NEAR(baker[b], 256.0, 4.9 * sd) << b;
   }
+}
+
+// The vector kernel (sampling/rank1_lattice_blocks.hpp) against the scalar loop kept as
+// generate_reference: bitwise equal with and without shift and baker's transform, dimensions on
+// both sides of the block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices
+// with a masked tail), N = 2^4 … 2^20, batches cut at sizes and starts that split blocks
+// anywhere; at every simd level this CPU offers.
+template <class P>
+void expect_lattice_kernel_equals_reference(std::size_t s, std::uint64_t n, bool shifted) {
+  const rank1_lattice_points<P> points(s, n, 2026, 18, shifted);
+  std::vector<double> reference(n * s);
+  points.generate_reference(0, reference);
+  for (const simd_level level : available_simd_levels()) {
+    set_simd_level(level);
+    std::vector<double> whole(n * s);
+    points.generate(0, whole);
+    ASSERT_EQ(std::memcmp(whole.data(), reference.data(), whole.size() * sizeof(double)), 0)
+        << "one batch, s = " << s << ", N = " << n << ", level " << to_string(level);
+    std::vector<double> split(n * s, -1.0);
+    const std::uint64_t sizes[] = {1, 7, 256, 1000, 3};
+    for (std::uint64_t p = 0, k = 0; p < n; ++k) {
+      const std::uint64_t c = std::min(sizes[k % 5], n - p);
+      points.generate(p, std::span<double>(split.data() + p * s, c * s));
+      p += c;
+    }
+    ASSERT_EQ(std::memcmp(split.data(), reference.data(), split.size() * sizeof(double)), 0)
+        << "split batches, s = " << s << ", N = " << n << ", level " << to_string(level);
+  }
+}
+
+TEST(RankOneLatticePoints, VectorKernelEqualsTheScalarLoopBitwise) {
+  const simd_level saved = active_simd_level();
+  for (const std::size_t s : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 13u, 64u, 65u, 130u}) {
+    for (const std::uint64_t n : {std::uint64_t{1} << 4, std::uint64_t{1} << 12,
+                                  s <= 2 ? std::uint64_t{1} << 20 : std::uint64_t{1} << 14}) {
+      for (const bool shifted : {false, true}) {
+        expect_lattice_kernel_equals_reference<no_periodization>(s, n, shifted);
+        expect_lattice_kernel_equals_reference<baker_transform>(s, n, shifted);
+      }
+    }
+  }
+  expect_lattice_kernel_equals_reference<baker_transform>(3600, 64, true);
+  set_simd_level(saved);
 }
 
 TEST(RankOneLatticePoints, RefusesSizesTheVectorWasNotBuiltFor) {

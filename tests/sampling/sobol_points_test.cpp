@@ -4,6 +4,8 @@
 // bitwise reproducibility for any batch order.
 #include "quadmc/sampling/sobol_points.hpp"
 
+#include "quadmc/core/simd_level.hpp"
+
 #include <gtest/gtest.h>
 #include <boost/math/distributions/students_t.hpp>
 #include <boost/random/sobol.hpp>
@@ -274,6 +276,62 @@ TYPED_TEST(SobolNet, BatchOrderDoesNotChangeAnyBit) {
   std::vector<double> twice(n * s);
   again.generate(0, twice);
   EXPECT_EQ(std::memcmp(whole.data(), twice.data(), whole.size() * sizeof(double)), 0);
+}
+
+// The vector kernel (sampling/sobol_blocks.hpp) against the scalar Gray-code walk kept as
+// generate_reference: bitwise equal for every randomization, dimensions on both sides of the
+// block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices with a masked tail),
+// N up to 2^20, the first point dropped or not, the last indices below 2^32, and batches cut at
+// sizes and starts that split blocks anywhere; at every simd level this CPU offers.
+template <class R>
+void expect_kernel_equals_reference(std::size_t s, std::uint64_t n, bool drop_first,
+                                    std::uint64_t first = 0) {
+  const sobol_points<R> points(s, n, 2026, 18, drop_first);
+  const std::uint64_t count = std::min<std::uint64_t>(n - first, std::uint64_t{1} << 20);
+  std::vector<double> reference(count * s);
+  points.generate_reference(first, reference);
+  for (const simd_level level : available_simd_levels()) {
+    set_simd_level(level);
+    std::vector<double> whole(count * s);
+    points.generate(first, whole);
+    ASSERT_EQ(std::memcmp(whole.data(), reference.data(), whole.size() * sizeof(double)), 0)
+        << "one batch, s = " << s << ", N = " << n << ", level " << to_string(level);
+    // Batches of 1, 7, 256, 1000 and 3 points in turn: starts at every residue mod 8.
+    std::vector<double> split(count * s, -1.0);
+    const std::uint64_t sizes[] = {1, 7, 256, 1000, 3};
+    for (std::uint64_t p = 0, k = 0; p < count; ++k) {
+      const std::uint64_t c = std::min(sizes[k % 5], count - p);
+      points.generate(first + p, std::span<double>(split.data() + p * s, c * s));
+      p += c;
+    }
+    ASSERT_EQ(std::memcmp(split.data(), reference.data(), split.size() * sizeof(double)), 0)
+        << "split batches, s = " << s << ", N = " << n << ", level " << to_string(level);
+  }
+}
+
+template <class R>
+void expect_kernel_equals_reference_for_all_sizes() {
+  const simd_level saved = active_simd_level();
+  for (const std::size_t s : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 13u, 64u, 65u, 130u}) {
+    const std::uint64_t n = s == 1 ? std::uint64_t{1} << 20 : s <= 8 ? 1u << 16 : 1u << 12;
+    expect_kernel_equals_reference<R>(s, n, false);
+    expect_kernel_equals_reference<R>(s, n - 1, true);
+  }
+  // The top of the index range: columns 20 … 31 and a block index near 2^29.
+  expect_kernel_equals_reference<R>(3, std::uint64_t{1} << 32, false,
+                                    (std::uint64_t{1} << 32) - 5000);
+  expect_kernel_equals_reference<R>(2, (std::uint64_t{1} << 32) - 1, true,
+                                    (std::uint64_t{1} << 32) - 1 - 5000);
+  expect_kernel_equals_reference<R>(3667, 64, false);
+  set_simd_level(saved);
+}
+
+TEST(SobolPoints, VectorKernelEqualsTheScalarWalkBitwise) {
+  expect_kernel_equals_reference_for_all_sizes<unrandomized_digits>();
+  expect_kernel_equals_reference_for_all_sizes<digital_shift>();
+  expect_kernel_equals_reference_for_all_sizes<linear_matrix_scramble>();
+  expect_kernel_equals_reference_for_all_sizes<fast_owen_scramble>();
+  expect_kernel_equals_reference_for_all_sizes<owen_scramble>();
 }
 
 TEST(SobolPoints, RejectsWhatTheTableCannotGive) {

@@ -109,8 +109,37 @@ class random_digit_permutation {
       }
     }
     first_[s] = maps_.size();
+    // Digits past the last nonzero digit of i are 0, permuted to the constant map_k(0): the
+    // Horner sum over positions count − 1 … L of those constants, tail_[first_[j] + j + L], is the
+    // same double for every i with L digits, so operator() starts from it and walks only i's own
+    // digits (the same operations in the same order as the full walk, hence the same bits).
+    tail_.resize(maps_.size() + s);
+    for (std::size_t j = 0; j < s; ++j) {
+      const std::uint64_t b = bases[j];
+      const double inv_b = 1.0 / static_cast<double>(b);  // as halton_points' inverse_
+      const std::size_t count = first_[j + 1] - first_[j];
+      double* tail = tail_.data() + first_[j] + j;
+      tail[count] = 0.0;
+      for (std::size_t k = count; k-- > 0;) {
+        tail[k] = (static_cast<double>(maps_[first_[j] + k](0, b)) + tail[k + 1]) * inv_b;
+      }
+    }
   }
   double operator()(std::uint64_t i, std::size_t j, std::uint64_t b, double inv_b) const noexcept {
+    const detail::affine_digit_map* map = maps_.data() + first_[j];
+    const std::size_t count = first_[j + 1] - first_[j];
+    std::uint64_t digits[64];
+    std::size_t length = 0;
+    for (; i != 0 && length < count; ++length) {
+      digits[length] = map[length](i % b, b);
+      i /= b;
+    }
+    double x = tail_[first_[j] + j + length];
+    for (std::size_t k = length; k-- > 0;) x = (static_cast<double>(digits[k]) + x) * inv_b;
+    return std::min(x, largest_below_one);
+  }
+  // Every digit position walked, as before the tail table: the reference of the tests.
+  double reference(std::uint64_t i, std::size_t j, std::uint64_t b, double inv_b) const noexcept {
     const detail::affine_digit_map* map = maps_.data() + first_[j];
     const std::size_t count = first_[j + 1] - first_[j];
     std::uint64_t digits[64];
@@ -126,6 +155,7 @@ class random_digit_permutation {
  private:
   std::vector<detail::affine_digit_map> maps_;
   std::vector<std::size_t> first_;  // dimension j's maps: [first_[j], first_[j + 1])
+  std::vector<double> tail_;        // count_j + 1 per dimension (see the constructor)
 };
 
 // Owen's nested scrambling in each base.
@@ -187,6 +217,9 @@ class halton_points {
   std::uint64_t size() const noexcept { return n_; }
   std::size_t dimension() const noexcept { return s_; }
   variance_structure variance() const noexcept { return {variance_kind::not_estimable, 1}; }
+  const Randomizer& randomizer() const noexcept { return randomizer_; }
+  std::uint64_t base(std::size_t j) const noexcept { return bases_[j]; }
+  double inverse_base(std::size_t j) const noexcept { return inverse_[j]; }
 
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);

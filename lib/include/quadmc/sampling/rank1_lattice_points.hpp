@@ -28,6 +28,7 @@
 
 #include "quadmc/core/rng.hpp"
 #include "quadmc/sampling/point_set.hpp"
+#include "quadmc/sampling/rank1_lattice_blocks.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -47,12 +48,14 @@ std::span<const std::uint32_t> lattice_generating_vector();
 
 // The lattice coordinate itself.
 struct no_periodization {
+  static constexpr detail::lattice_periodization kind = detail::lattice_periodization::none;
   double operator()(double x) const noexcept { return x; }
 };
 // The baker's transform φ(x) = 1 − |2x − 1|: ∫f(φ(x))dx = ∫f, and f∘φ is periodic (it has equal
 // values at 0 and 1), which lets the lattice rule gain an order on non-periodic f
 // ([Hickernell 2002]).
 struct baker_transform {
+  static constexpr detail::lattice_periodization kind = detail::lattice_periodization::baker;
   double operator()(double x) const noexcept {
     return std::min(1.0 - std::abs(2.0 * x - 1.0), largest_below_one);
   }
@@ -67,15 +70,36 @@ class rank1_lattice_points {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j] & (n_ - 1);
     if (shifted) philox_stream(seed, stream).fill_uniform(0, shift_);
+    blocks_ = detail::make_rank1_lattice_block_tables(z_, shift_, n_, Periodization::kind);
   }
 
   std::uint64_t size() const noexcept { return n_; }
   std::size_t dimension() const noexcept { return s_; }
   variance_structure variance() const noexcept { return {variance_kind::not_estimable, 1}; }
 
+  // Whole blocks of the vector kernel where the CPU has one (sampling/rank1_lattice_blocks.hpp),
+  // the remaining points by the scalar loop; both give the same bits.
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);
     const std::uint64_t count = out.size() / s_;
+    const std::uint64_t blocks = count / blocks_.block;
+    if (blocks > 0 && detail::rank1_lattice_blocks(blocks_, first, blocks, out.data())) {
+      const std::uint64_t done = blocks * blocks_.block;
+      generate_scalar(first + done, count - done, out.data() + done * s_);
+      return;
+    }
+    generate_scalar(first, count, out.data());
+  }
+
+  // The scalar loop, one coordinate at a time: the reference the vector kernel must equal
+  // bitwise (tests), and the path of CPUs without one.
+  void generate_reference(std::uint64_t first, std::span<double> out) const {
+    require_batch(s_, n_, first, out);
+    generate_scalar(first, out.size() / s_, out.data());
+  }
+
+ private:
+  void generate_scalar(std::uint64_t first, std::uint64_t count, double* out) const {
     const std::uint64_t mask = n_ - 1;
     const double inv_n = 1.0 / static_cast<double>(n_);  // exact: N = 2^m
     const Periodization periodize;
@@ -93,7 +117,6 @@ class rank1_lattice_points {
     }
   }
 
- private:
   static std::size_t checked_dimension(std::size_t s, std::uint64_t n) {
     require_point_set_size(s, n);
     require(s <= max_lattice_dimension, "dimension s", s,
@@ -107,6 +130,7 @@ class rank1_lattice_points {
   std::uint64_t n_;
   std::vector<double> shift_;
   std::vector<std::uint64_t> z_;
+  detail::rank1_lattice_block_tables blocks_;  // the vector kernel's tables
 };
 
 }  // namespace quadmc

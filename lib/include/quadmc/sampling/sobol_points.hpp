@@ -28,8 +28,11 @@
 
 #include "quadmc/core/rng.hpp"
 #include "quadmc/sampling/point_set.hpp"
+#include "quadmc/sampling/sobol_blocks.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -80,11 +83,15 @@ inline std::uint64_t randomization_key(const philox_stream& rng, std::uint64_t i
 // digits that tell the set's points apart (bit width of the largest index: below it the
 // prefixes are unique); prepare(j, columns) may rewrite dimension j's generator columns (the
 // linear scramble), and r(v, j) maps a 64-digit fraction v (the net's 32 digits on top).
+// `scramble` and key(j) (and depth() for owen) tell the vector kernel (sampling/sobol_blocks.hpp)
+// what r does, so that it can do the same on 8 lanes.
 
 // The net itself: no randomness; coordinates are exact multiples of 2^-32.
 struct unrandomized_digits {
   static constexpr bool random = false;
+  static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::xor_constant;
   unrandomized_digits(std::size_t, unsigned, const philox_stream&) noexcept {}
+  std::uint64_t key(std::size_t) const noexcept { return 0; }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t) const noexcept { return v; }
 };
@@ -100,6 +107,8 @@ class digital_shift {
   }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t j) const noexcept { return v ^ shift_[j]; }
+  static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::xor_constant;
+  std::uint64_t key(std::size_t j) const noexcept { return shift_[j]; }
 
  private:
   std::vector<std::uint64_t> shift_;
@@ -140,6 +149,8 @@ class linear_matrix_scramble {
     }
   }
   std::uint64_t operator()(std::uint64_t v, std::size_t j) const noexcept { return v ^ shift_[j]; }
+  static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::xor_constant;
+  std::uint64_t key(std::size_t j) const noexcept { return shift_[j]; }
 
  private:
   std::vector<std::uint64_t> lower_;  // 64 rows per dimension
@@ -161,6 +172,9 @@ class owen_scramble {
       : seed_(s), depth_(depth < 64 ? depth : 64) {
     for (std::size_t j = 0; j < s; ++j) seed_[j] = randomization_key(rng, j);
   }
+  static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::owen;
+  std::uint64_t key(std::size_t j) const noexcept { return seed_[j]; }
+  unsigned depth() const noexcept { return depth_; }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t j) const noexcept {
     const std::uint64_t seed = seed_[j];
@@ -202,6 +216,8 @@ class fast_owen_scramble {
   fast_owen_scramble(std::size_t s, unsigned, const philox_stream& rng) : seed_(s) {
     for (std::size_t j = 0; j < s; ++j) seed_[j] = randomization_key(rng, j);
   }
+  static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::fast_owen;
+  std::uint64_t key(std::size_t j) const noexcept { return seed_[j]; }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t j) const noexcept {
     const std::uint64_t seed = seed_[j];
@@ -259,30 +275,47 @@ class sobol_points {
       }
       randomizer_.prepare(j, out);
     }
+    if constexpr (vectorized) {
+      std::vector<std::uint64_t> keys(s_);
+      for (std::size_t j = 0; j < s_; ++j) keys[j] = randomizer_.key(j);
+      unsigned depth = 0;
+      if constexpr (requires { randomizer_.depth(); }) depth = randomizer_.depth();
+      blocks_ = detail::make_sobol_block_tables(columns_, s_, Randomizer::scramble, keys, depth);
+    }
   }
 
   std::uint64_t size() const noexcept { return n_; }
   std::size_t dimension() const noexcept { return s_; }
   variance_structure variance() const noexcept { return {variance_kind::not_estimable, 1}; }
 
+  // Whole blocks of the vector kernel where the CPU has one (sampling/sobol_blocks.hpp), the
+  // points before the first block start and after the last block end by the scalar walk; both
+  // give the same bits, so the split never shows in the points.
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);
     const std::uint64_t count = out.size() / s_;
-    if (count == 0) return;
-    const std::uint64_t index = first + offset_;
-    for (std::size_t j = 0; j < s_; ++j) {
-      const std::uint64_t* c = columns_.data() + j * sobol_matrices::digits;
-      std::uint64_t v = 0;
-      for (std::uint64_t g = index ^ (index >> 1); g != 0; g &= g - 1) {
-        v ^= c[std::countr_zero(g)];
-      }
-      double* x = out.data() + j;
-      for (std::uint64_t p = 0;; ++p) {
-        x[p * s_] = fraction_to_unit(randomizer_(v, j));
-        if (p + 1 == count) break;
-        v ^= c[std::countr_zero(index + p + 1)];
+    if constexpr (vectorized) {
+      const unsigned b = blocks_.log2_block;
+      const std::uint64_t block = std::uint64_t{1} << b;
+      const std::uint64_t index = first + offset_;
+      const std::uint64_t head = std::min(count, (block - (index & (block - 1))) & (block - 1));
+      const std::uint64_t blocks = (count - head) >> b;
+      if (blocks > 0 &&
+          detail::sobol_blocks(blocks_, (index + head) >> b, blocks, out.data() + head * s_)) {
+        generate_scalar(first, head, out.data());
+        const std::uint64_t done = head + (blocks << b);
+        generate_scalar(first + done, count - done, out.data() + done * s_);
+        return;
       }
     }
+    generate_scalar(first, count, out.data());
+  }
+
+  // The point-by-point Gray-code walk, one coordinate at a time: the reference the vector
+  // kernel must equal bitwise (tests), and the path of CPUs without one.
+  void generate_reference(std::uint64_t first, std::span<double> out) const {
+    require_batch(s_, n_, first, out);
+    generate_scalar(first, out.size() / s_, out.data());
   }
 
   // The 64-digit fractions themselves (tests: the net property, Boost's bits), row-major.
@@ -302,6 +335,29 @@ class sobol_points {
   }
 
  private:
+  static constexpr bool vectorized = requires(const Randomizer& r) {
+    { Randomizer::scramble } -> std::convertible_to<detail::sobol_scramble>;
+    { r.key(std::size_t{0}) } -> std::convertible_to<std::uint64_t>;
+  };
+
+  void generate_scalar(std::uint64_t first, std::uint64_t count, double* out) const {
+    if (count == 0) return;
+    const std::uint64_t index = first + offset_;
+    for (std::size_t j = 0; j < s_; ++j) {
+      const std::uint64_t* c = columns_.data() + j * sobol_matrices::digits;
+      std::uint64_t v = 0;
+      for (std::uint64_t g = index ^ (index >> 1); g != 0; g &= g - 1) {
+        v ^= c[std::countr_zero(g)];
+      }
+      double* x = out + j;
+      for (std::uint64_t p = 0;; ++p) {
+        x[p * s_] = fraction_to_unit(randomizer_(v, j));
+        if (p + 1 == count) break;
+        v ^= c[std::countr_zero(index + p + 1)];
+      }
+    }
+  }
+
   static std::size_t checked_dimension(std::size_t s, std::uint64_t n, bool drop_first_point) {
     require_point_set_size(s, n);
     require(s <= sobol_matrices::max_dimension, "dimension s", s,
@@ -318,6 +374,7 @@ class sobol_points {
   std::uint64_t offset_;
   Randomizer randomizer_;
   std::vector<std::uint64_t> columns_;  // 32 per dimension, randomized by prepare()
+  detail::sobol_block_tables blocks_;   // the vector kernel's tables (sobol_blocks.hpp)
 };
 
 }  // namespace quadmc
