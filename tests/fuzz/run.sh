@@ -32,9 +32,12 @@ for source in $(ls lib/src/{core,functions,rules,sampling,estimators,analysis,me
   isa=()
   case "$source" in
     *_avx2.cpp) isa=(-mavx2) ;;
-    # As lib/CMakeLists.txt compiles them: the Latin hypercube permutation needs AVX-512DQ's
-    # 64-bit multiply (its dispatch checks DQ too).
-    *sampling/permutation_blocks_avx512.cpp) isa=(-mavx512f -mavx512dq) ;;
+    # As lib/CMakeLists.txt compiles them: the Latin hypercube permutation, Sobol' and lattice
+    # kernels need AVX-512DQ's 64-bit multiply, the Sobol' GFNI build also AVX512BW and GFNI
+    # (their dispatch checks the CPU for each).
+    *sampling/permutation_blocks_avx512.cpp | *sampling/sobol_blocks_avx512.cpp | \
+      *sampling/rank1_lattice_blocks_avx512.cpp) isa=(-mavx512f -mavx512dq) ;;
+    *sampling/sobol_blocks_avx512_gfni.cpp) isa=(-mavx512f -mavx512dq -mavx512bw -mgfni) ;;
     *_avx512.cpp) isa=(-mavx512f) ;;
   esac
   if [ ! -f "$object" ] || [ "$source" -nt "$object" ] || [ -n "$(find lib/include -newer "$object" -name '*.hpp' -print -quit)" ]; then
