@@ -273,13 +273,25 @@ rank_outcome deserialise(const char* data, std::size_t size) {
   return o;
 }
 
-// Seconds per evaluation of each (integrand, method) series, timed by rank 0 on one repetition
-// of the series' smallest cell and sent to every rank, so that all ranks cost cells alike.
+// The cost model of each (integrand, method) series: seconds per repetition ≈ fixed +
+// per_evaluation × evaluations. Rank 0 times one repetition of the series' smallest cell (the
+// fixed part: set-up, thread hand-off) and of its largest cell of at most probe_evaluations (the
+// slope), and sends the figures to every rank, so that all ranks cost cells alike. One timing of
+// the smallest cell alone would not do: a series starting at N = 1 spends microseconds of set-up
+// on one evaluation, and that figure times 10⁹ evaluations made a stress-scene cell look 10⁴
+// times its cost (LPT then gave it a rank of its own and every other cell to the other rank).
 // A cell that fails here gets a nominal cost: the run proper reports its error.
-std::vector<double> cost_per_evaluation(const quadmc::plan& p, const quadmc::run_context& context,
-                                        const world& w, std::vector<std::size_t>& series_of) {
+struct series_cost {
+  double fixed = 0.0;
+  double per_evaluation = 1e-8;  // seconds, when a timing is not to be had
+};
+
+std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_context& context,
+                                      const world& w, std::vector<std::size_t>& series_of) {
+  constexpr std::uint64_t probe_evaluations = std::uint64_t{1} << 16;
   std::vector<std::pair<std::size_t, std::size_t> > keys;
   std::vector<std::size_t> smallest;
+  std::vector<std::size_t> probe;
   series_of.assign(p.cells.size(), 0);
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
     const std::pair key{p.cells[i].integrand, p.cells[i].method};
@@ -287,29 +299,50 @@ std::vector<double> cost_per_evaluation(const quadmc::plan& p, const quadmc::run
     if (it == keys.end()) {
       keys.push_back(key);
       smallest.push_back(i);
+      probe.push_back(i);
       it = std::prev(keys.end());
     }
     const std::size_t s = static_cast<std::size_t>(it - keys.begin());
     series_of[i] = s;
-    if (p.cells[i].evaluations < p.cells[smallest[s]].evaluations) smallest[s] = i;
-  }
-  constexpr double nominal = 1e-8;  // seconds per evaluation when a timing is not to be had
-  std::vector<double> cost(keys.size(), nominal);
-  if (w.rank == 0) {
-    for (std::size_t s = 0; s < keys.size(); ++s) {
-      const std::size_t i = smallest[s];
-      try {
-        const auto t0 = clock::now();
-        (void)quadmc::run_cell_repetitions(p, i, 0, 1, context, 0.0);
-        const double seconds = seconds_since(t0);
-        cost[s] = std::max(seconds, 1e-9) /
-                  static_cast<double>(std::max<std::uint64_t>(p.cells[i].evaluations, 1));
-      } catch (const std::exception&) {
-        cost[s] = nominal;
-      }
+    const std::uint64_t n = p.cells[i].evaluations;
+    if (n < p.cells[smallest[s]].evaluations) smallest[s] = i;
+    // The probe: the largest cell of at most probe_evaluations, else the smallest cell.
+    const std::uint64_t probe_n = p.cells[probe[s]].evaluations;
+    const bool probe_fits = probe_n <= probe_evaluations;
+    if (n <= probe_evaluations ? (!probe_fits || n > probe_n) : (!probe_fits && n < probe_n)) {
+      probe[s] = i;
     }
   }
-  MPI_Bcast(cost.data(), as_count(cost.size(), "the cost table"), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  std::vector<double> figures(2 * keys.size());
+  if (w.rank == 0) {
+    const auto seconds_of = [&](std::size_t i) {
+      const auto t0 = clock::now();
+      (void)quadmc::run_cell_repetitions(p, i, 0, 1, context, 0.0);
+      return seconds_since(t0);
+    };
+    for (std::size_t s = 0; s < keys.size(); ++s) {
+      series_cost c;
+      try {
+        const double n0 =
+            static_cast<double>(std::max<std::uint64_t>(p.cells[smallest[s]].evaluations, 1));
+        const double n1 =
+            static_cast<double>(std::max<std::uint64_t>(p.cells[probe[s]].evaluations, 1));
+        const double t0 = seconds_of(smallest[s]);
+        const double t1 = probe[s] == smallest[s] ? t0 : seconds_of(probe[s]);
+        c.fixed = n1 > n0 ? t0 : 0.0;
+        // A slope lost in the noise (t1 ≤ t0) falls back to the probe's mean per evaluation.
+        c.per_evaluation = std::max(n1 > n0 && t1 > t0 ? (t1 - t0) / (n1 - n0) : t1 / n1, 1e-12);
+      } catch (const std::exception&) {
+        c = series_cost{};
+      }
+      figures[2 * s] = c.fixed;
+      figures[2 * s + 1] = c.per_evaluation;
+    }
+  }
+  MPI_Bcast(figures.data(), as_count(figures.size(), "the cost table"), MPI_DOUBLE, 0,
+            MPI_COMM_WORLD);
+  std::vector<series_cost> cost(keys.size());
+  for (std::size_t s = 0; s < keys.size(); ++s) cost[s] = {figures[2 * s], figures[2 * s + 1]};
   return cost;
 }
 
@@ -319,13 +352,14 @@ struct assignment {
   std::vector<cell_placement> placement;  // every cell's, on every rank
 };
 
-assignment assign_cells(const quadmc::plan& p, const std::vector<double>& cost_per_eval,
+assignment assign_cells(const quadmc::plan& p, const std::vector<series_cost>& series,
                         const std::vector<std::size_t>& series_of, const world& w,
                         split_policy policy) {
   std::vector<double> cost(p.cells.size());
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
-    cost[i] = static_cast<double>(p.cells[i].evaluations) *
-              static_cast<double>(p.cells[i].repetitions) * cost_per_eval[series_of[i]];
+    const series_cost& c = series[series_of[i]];
+    cost[i] = static_cast<double>(p.cells[i].repetitions) *
+              (c.fixed + static_cast<double>(p.cells[i].evaluations) * c.per_evaluation);
   }
   const double total = std::accumulate(cost.begin(), cost.end(), 0.0);
   // LPT's makespan is at most total/K + the largest cell: with no unsplit cell above a quarter
@@ -410,7 +444,7 @@ quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run
   quadmc::parallel_reduce_peak_threads() = 0;
 
   std::vector<std::size_t> series_of;
-  const std::vector<double> cost = cost_per_evaluation(p, context, w, series_of);
+  const std::vector<series_cost> cost = series_costs(p, context, w, series_of);
   const assignment work = assign_cells(p, cost, series_of, w, policy);
   if (placement != nullptr) *placement = work.placement;
 

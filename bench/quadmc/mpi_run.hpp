@@ -8,9 +8,10 @@
 // results, so every rank folds all chunks in chunk order (core/chunk_exchange.hpp). A costly
 // cell whose method does not share chunks (a naive sum, genz_malik, vegas, smolyak, romberg)
 // would cost every rank its whole time if split, so it goes to one rank like the others. The cost
-// of a cell is its evaluations × repetitions × the method's measured seconds per evaluation on that
-// integrand (rank 0 times one repetition of each series' smallest cell and sends the figures to
-// every rank, so all ranks make the same assignment). Repetition r of a cell is a pure function of
+// of a cell is repetitions × (fixed + evaluations × seconds per evaluation) of its (integrand,
+// method) series: rank 0 times one repetition of the series' smallest cell and of its largest
+// cell of at most 2^16 evaluations and sends the figures to every rank, so all ranks make the
+// same assignment. Repetition r of a cell is a pure function of
 // (plan, cell, r, seed) (docs/design.md#hot-path-contract), so where it ran changes nothing: rank 0
 // gathers every cell's repetitions and files them in plan order (scene/run.hpp, run_assembly), and
 // every CSV column but the timing is what one process writes.
