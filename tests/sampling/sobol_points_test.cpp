@@ -5,6 +5,7 @@
 #include "quadmc/sampling/sobol_points.hpp"
 
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/sampling/sobol_blocks.hpp"
 
 #include <gtest/gtest.h>
 #include <boost/math/distributions/students_t.hpp>
@@ -15,6 +16,7 @@
 #include <cstdint>
 #include <cstring>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace quadmc {
@@ -291,22 +293,32 @@ void expect_kernel_equals_reference(std::size_t s, std::uint64_t n, bool drop_fi
   std::vector<double> reference(count * s);
   points.generate_reference(first, reference);
   for (const simd_level level : available_simd_levels()) {
-    set_simd_level(level);
-    std::vector<double> whole(count * s);
-    points.generate(first, whole);
-    ASSERT_EQ(std::memcmp(whole.data(), reference.data(), whole.size() * sizeof(double)), 0)
-        << "one batch, s = " << s << ", N = " << n << ", level " << to_string(level);
-    // Batches of 1, 7, 256, 1000 and 3 points in turn: starts at every residue mod 8.
-    std::vector<double> split(count * s, -1.0);
-    const std::uint64_t sizes[] = {1, 7, 256, 1000, 3};
-    for (std::uint64_t p = 0, k = 0; p < count; ++k) {
-      const std::uint64_t c = std::min(sizes[k % 5], count - p);
-      points.generate(first + p, std::span<double>(split.data() + p * s, c * s));
-      p += c;
+    // At the avx512 level, both builds of the kernel: with GFNI where the CPU has it, and the
+    // plain one a CPU without GFNI runs.
+    for (const bool gfni : {true, false}) {
+      if (!gfni && level != simd_level::avx512) continue;
+      set_simd_level(level);
+      quadmc::detail::allow_sobol_gfni(gfni);
+      const std::string where = "s = " + std::to_string(s) + ", N = " + std::to_string(n) +
+                                ", level " + std::string(to_string(level)) +
+                                (gfni ? "" : " without GFNI");
+      std::vector<double> whole(count * s);
+      points.generate(first, whole);
+      ASSERT_EQ(std::memcmp(whole.data(), reference.data(), whole.size() * sizeof(double)), 0)
+          << "one batch, " << where;
+      // Batches of 1, 7, 256, 1000 and 3 points in turn: starts at every residue mod 8.
+      std::vector<double> split(count * s, -1.0);
+      const std::uint64_t sizes[] = {1, 7, 256, 1000, 3};
+      for (std::uint64_t p = 0, k = 0; p < count; ++k) {
+        const std::uint64_t c = std::min(sizes[k % 5], count - p);
+        points.generate(first + p, std::span<double>(split.data() + p * s, c * s));
+        p += c;
+      }
+      ASSERT_EQ(std::memcmp(split.data(), reference.data(), split.size() * sizeof(double)), 0)
+          << "split batches, " << where;
     }
-    ASSERT_EQ(std::memcmp(split.data(), reference.data(), split.size() * sizeof(double)), 0)
-        << "split batches, s = " << s << ", N = " << n << ", level " << to_string(level);
   }
+  quadmc::detail::allow_sobol_gfni(true);
 }
 
 template <class R>

@@ -7,6 +7,7 @@
 #include "quadmc/core/simd_level.hpp"
 #include "sobol_kernels.hpp"
 
+#include <atomic>
 #include <bit>
 #include <numeric>
 
@@ -69,6 +70,14 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
   return t;
 }
 
+namespace {
+std::atomic<bool> gfni_allowed{true};
+}  // namespace
+
+void allow_sobol_gfni(bool allowed) noexcept {
+  gfni_allowed.store(allowed, std::memory_order_relaxed);
+}
+
 bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
                   double* out) noexcept {
 #if defined(__x86_64__)
@@ -76,7 +85,7 @@ bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t bl
   static const bool has_avx512dq = __builtin_cpu_supports("avx512dq");
   static const bool has_gfni = __builtin_cpu_supports("gfni") && __builtin_cpu_supports("avx512bw");
   if (active_simd_level() == simd_level::avx512 && has_avx512dq) {
-    if (has_gfni) {
+    if (has_gfni && gfni_allowed.load(std::memory_order_relaxed)) {
       sobol_blocks_avx512_gfni(t, q, blocks, out);
     } else {
       sobol_blocks_avx512(t, q, blocks, out);

@@ -58,4 +58,9 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
 bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
                   double* out) noexcept;
 
+// Whether the AVX-512 kernel may take its GFNI build where the CPU has GFNI and AVX512BW (the
+// default, true). For tests: with false, a CPU with GFNI runs the plain AVX-512 build too, the
+// one a CPU without GFNI gets, so both are checked against the scalar walk on one machine.
+void allow_sobol_gfni(bool allowed) noexcept;
+
 }  // namespace quadmc::detail
