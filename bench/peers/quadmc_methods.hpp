@@ -75,6 +75,17 @@ inline std::vector<std::uint64_t> distinct_sorted(std::vector<std::uint64_t> v) 
   return v;
 }
 
+// One run of plain Monte Carlo over point set P with N points: P built from (s, N, seed,
+// stream_id({N})), the call both the point-set and the quasi-Monte Carlo methods time.
+template <class P, class F>
+auto monte_carlo_run(const F& f, unsigned threads) {
+  return [&f, threads](std::uint64_t n, std::uint64_t seed) {
+    const P points(f.dimension(), n, seed, stream_id({n}));
+    const estimate e = monte_carlo(f, points, threads);
+    return run_result{e.value, e.evaluations};
+  };
+}
+
 // Plain Monte Carlo with point set P (any of the three: same constructor shape). The point set
 // is built inside the run (for Latin hypercube points that includes its s permutations), with
 // stream id stream_id({N}) under the run's seed.
@@ -100,11 +111,7 @@ peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
   if constexpr (std::is_same_v<P, jittered_points>) {
     m.throughput_control = jittered_size_at_least(throughput_n, s);
   }
-  m.run = [&f, threads, s](std::uint64_t n, std::uint64_t seed) {
-    const P points(s, n, seed, stream_id({n}));
-    const estimate e = monte_carlo(f, points, threads);
-    return run_result{e.value, e.evaluations};
-  };
+  m.run = monte_carlo_run<P>(f, threads);
   return m;
 }
 
@@ -117,7 +124,6 @@ peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
 template <class P, class F>
 peer_method quadmc_quasi_monte_carlo(std::string name, const F& f, unsigned threads,
                                      std::uint64_t throughput_n) {
-  const std::size_t s = f.dimension();
   peer_method m;
   m.name = std::move(name);
   m.family = "quadmc";
@@ -125,11 +131,7 @@ peer_method quadmc_quasi_monte_carlo(std::string name, const F& f, unsigned thre
   m.random = true;
   m.kind = control_kind::evaluations;
   m.throughput_control = throughput_n;
-  m.run = [&f, threads, s](std::uint64_t n, std::uint64_t seed) {
-    const P points(s, n, seed, stream_id({n}));
-    const estimate e = monte_carlo(f, points, threads);
-    return run_result{e.value, e.evaluations};
-  };
+  m.run = monte_carlo_run<P>(f, threads);
   return m;
 }
 
