@@ -5,8 +5,9 @@
 // makespan is at most the total cost / K plus the largest cell); a cell costing more than a
 // quarter of a rank's fair share is *split* when its method shares chunks: all ranks run it
 // together, each computing its share of every parallel_reduce window and exchanging chunk
-// results, so every rank folds all chunks in chunk order (core/chunk_exchange.hpp). A costly
-// cell whose method does not share chunks (a naive sum, genz_malik, vegas, smolyak, romberg)
+// results, so every rank folds all chunks in chunk order (core/chunk_exchange.hpp), or, for a
+// naive sum, adding its block's terms and placing the result exactly (core/split_naive_sum.hpp).
+// A costly cell whose method does not share chunks (genz_malik, vegas, smolyak, romberg)
 // would cost every rank its whole time if split, so it goes to one rank like the others. The cost
 // of a cell is repetitions × (fixed + evaluations × seconds per evaluation) of its (integrand,
 // method) series: rank 0 times one repetition of the series' smallest cell and of its largest

@@ -13,6 +13,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <span>
@@ -59,6 +60,9 @@ dimension = 2
 ensemble = 2
 [[method]]
 name = "simpson"
+[[method]]
+name = "trapezoid"
+accumulator = "naive"
 [[method]]
 name = "plain_mc"
 repetitions = 3
@@ -118,11 +122,11 @@ N = { from = 256, to = 262144, factor = 8 }
   }
 }
 
-// The naive sum cannot be split (one running double through every term), so `auto` gives its
-// costly cell to one rank, while the same cell with the pairwise accumulator is split; `all`
-// splits both (the naive one then runs whole on every rank, still exact: the test above) and
-// `none` neither. Each of the two 2^22-panel cells is about half the plan's cost, far above the
-// threshold total/(4K).
+// `auto` splits the costly cells whose method shares chunks — the naive sum too, split exactly
+// (core/split_naive_sum.hpp) — and gives a costly cell whose method does not (Romberg's
+// extrapolation table) to one rank; `all` splits every cell (Romberg's then runs whole on every
+// rank, still exact: the test above) and `none` none. The three cells of about 2^21 evaluations
+// or more are each about a third of the plan's cost, far above the threshold total/(4K).
 TEST(MpiRunner, AutoSplitsOnlyCellsWhoseMethodSharesChunks) {
   const quadmc::plan p = plan_of(R"([[integrand]]
 family = "exp"
@@ -132,10 +136,12 @@ accumulator = "naive"
 [[method]]
 name = "midpoint"
 accumulator = "pairwise"
+[[method]]
+name = "romberg"
 [budget]
 N = [1024, 4194304]
 )");
-  ASSERT_EQ(p.cells.size(), 4u);
+  ASSERT_EQ(p.cells.size(), 6u);
   for (const split_policy policy :
        {split_policy::automatic, split_policy::all, split_policy::none}) {
     std::vector<quadmc_cli::mpi::cell_placement> placement;
@@ -143,8 +149,8 @@ N = [1024, 4194304]
     ASSERT_EQ(placement.size(), p.cells.size());
     for (std::size_t i = 0; i < p.cells.size(); ++i) {
       const bool shares = quadmc_cli::mpi::cell_shares_chunks(p, i);
-      EXPECT_EQ(shares, p.source.methods[p.cells[i].method].label == "midpoint_pairwise");
-      const bool large = p.cells[i].evaluations == 4194304;
+      EXPECT_EQ(shares, p.source.methods[p.cells[i].method].label != "romberg");
+      const bool large = p.cells[i].evaluations > (std::uint64_t{1} << 20);
       const bool expected =
           policy == split_policy::all || (policy == split_policy::automatic && shares && large);
       EXPECT_EQ(placement[i].split, expected)
@@ -163,8 +169,9 @@ N = [1024, 4194304]
       EXPECT_NE(csv.find("exp,0,1,midpoint_pairwise,4194304,,4194304,1,1,split\n"),
                 std::string::npos)
           << csv;
-      EXPECT_NE(csv.find("exp,0,1,midpoint_naive,4194304,,4194304,1,0,rank "), std::string::npos)
+      EXPECT_NE(csv.find("exp,0,1,midpoint_naive,4194304,,4194304,1,1,split\n"), std::string::npos)
           << csv;
+      EXPECT_NE(csv.find("exp,0,1,romberg,4194304,,2097153,1,0,rank "), std::string::npos) << csv;
     }
   }
 }

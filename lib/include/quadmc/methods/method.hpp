@@ -144,13 +144,13 @@ class method {
   // Whether a cell of this method, run by the K processes of an MPI run together (a split cell,
   // bench/quadmc/mpi_run.hpp), costs each of them about 1/K of its work: every reduction of its
   // run is a parallel_reduce whose chunk result is all that a chunk computes
-  // (shareable_chunk_result, core/chunk_exchange.hpp). False (the default): the work is done
-  // whole on every process that runs the cell — a left-to-right sum, chunks that write on the
-  // side, a serial method — so the planner gives such a cell to one process instead of splitting
-  // it. An override returns what its kernels declare (rules/weighted_sum.hpp,
-  // estimators/sample_mean.hpp), not a list of names; tests/methods/method_test.cpp runs every
-  // registered method under a two-process exchange and counts each process's evaluations, so
-  // a declaration that disagrees with its kernel fails there.
+  // (shareable_chunk_result, core/chunk_exchange.hpp) or a left-to-right sum split exactly
+  // (core/split_naive_sum.hpp). False (the default): the work is done whole on every process
+  // that runs the cell — chunks that write on the side, a serial method — so the planner gives such
+  // a cell to one process instead of splitting it. An override returns what its kernels declare
+  // (rules/weighted_sum.hpp, estimators/sample_mean.hpp), not a list of names;
+  // tests/methods/method_test.cpp runs every registered method under a two-process exchange and
+  // counts each process's evaluations, so a declaration that disagrees with its kernel fails there.
   virtual bool shares_chunks() const { return false; }
 
   // One repetition of one cell. Throws what the kernels throw (invalid_argument,

@@ -35,7 +35,7 @@ namespace quadmc {
 // threads = 0 uses every core; the result is bitwise the same for every thread count.
 // `accumulate` chooses how the N terms w·f are summed (core/summation.hpp, enum summation); the
 // default is pairwise per batch, Neumaier across batches (weighted_sum.hpp). summation::naive
-// runs on one thread whatever `threads` says (a left-to-right sum cannot be split).
+// runs on one thread whatever `threads` says (a left-to-right sum is one chain of adds).
 // Throws invalid_argument for bad n, domain or grid size, non_finite_value if f returns NaN/±inf
 // (the message names the point). error_estimate is NaN: a fixed rule has no a-posteriori
 // estimate (see error_bounds.hpp for a-priori bounds, romberg.hpp for an estimate).

@@ -28,6 +28,7 @@
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/split_naive_sum.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/rules/rule_result.hpp"
@@ -85,7 +86,16 @@ struct pairwise_accumulator {
   double value() const noexcept { return sum.value(); }
 };
 
-// w_i ← w_i·y_i, then add_batch: the accumulators that add the terms one at a time.
+// w_i ← w_i·y_i, then add_batch: the accumulators that add the terms one at a time. Their
+// add_batch calls an out-of-line loop on a value: inlined into the kernel, where the accumulator
+// is a captured object that `terms` could alias as far as the compiler knows, GCC 12 stored and
+// reloaded the running sum every second term, putting store-to-load forwarding into the chain of
+// adds (the naive sum took twice its time). Same operations, so the same bits.
+template <class Sum, class Add>
+[[gnu::noinline]] Sum add_in_order(Sum running, std::span<const double> terms, Add add) noexcept {
+  for (const double t : terms) add(running, t);
+  return running;
+}
 template <class Accumulator>
 void multiply_then_add(Accumulator& acc, std::span<double> w, std::span<const double> y) noexcept {
   for (std::size_t i = 0; i < w.size(); ++i) w[i] *= y[i];
@@ -95,7 +105,7 @@ void multiply_then_add(Accumulator& acc, std::span<double> w, std::span<const do
 struct neumaier_accumulator {
   neumaier_sum sum;
   void add_batch(std::span<const double> terms) noexcept {
-    for (double t : terms) sum.add(t);
+    sum = add_in_order(sum, terms, [](neumaier_sum& s, double t) { s.add(t); });
   }
   void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
     multiply_then_add(*this, w, y);
@@ -107,7 +117,7 @@ struct neumaier_accumulator {
 struct long_double_accumulator {
   long double sum = 0.0L;
   void add_batch(std::span<const double> terms) noexcept {
-    for (double t : terms) sum += static_cast<long double>(t);
+    sum = add_in_order(sum, terms, [](long double& s, double t) { s += t; });
   }
   void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
     multiply_then_add(*this, w, y);
@@ -134,7 +144,7 @@ namespace detail {
 struct naive_accumulator {
   double sum = 0.0;
   void add_batch(std::span<const double> terms) noexcept {
-    for (double t : terms) sum += t;
+    sum = add_in_order(sum, terms, [](double& s, double t) { s += t; });
   }
   void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
     multiply_then_add(*this, w, y);
@@ -164,9 +174,9 @@ concept writes_on_the_side = requires {
   requires P::writes_on_the_side;
 };
 
-// Whether the sum with `accumulate` runs as a parallel_reduce whose chunk results may be shared
-// between processes (core/chunk_exchange.hpp): the accumulators' own declarations above; the
-// naive sum is one running double carried through the chunks serially, outside parallel_reduce.
+// Whether the sum with `accumulate` may be split between processes (core/chunk_exchange.hpp):
+// the accumulators' own declarations above for the parallel_reduce ones; the naive sum, one
+// running double carried through the chunks in order, by split_naive_sum, which keeps its bits.
 constexpr bool accumulator_shares_chunks(summation accumulate) noexcept {
   switch (accumulate) {
     case summation::pairwise:
@@ -176,7 +186,7 @@ constexpr bool accumulator_shares_chunks(summation accumulate) noexcept {
     case summation::long_double:
       return shareable_chunk_result<long_double_accumulator>;
     case summation::naive:
-      return false;
+      return true;  // split exactly by split_naive_sum (core/split_naive_sum.hpp)
   }
   return false;
 }
@@ -191,21 +201,40 @@ rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std:
   const std::size_t s = info.dimension();
   const chunking layout{total, rule_chunk_points};
 
-  // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
-  auto chunk_sum = [&](std::size_t c, auto sum) {
-    // Buffers once per chunk (2^14 points), never per point.
+  // Makes chunk c batch by batch — the set's nodes and weights, the integrand's values, checked
+  // finite — and hands each batch to use(first, w, y). Buffers once per chunk (2^14 points),
+  // never per point; small enough to stay in L1.
+  auto evaluate_chunk = [&](std::size_t c, auto&& use) {
     std::vector<double> x(batch_points * s);
     std::vector<double> y(batch_points);
-    std::vector<double> terms(batch_points);  // the weights (then w·f, if the sum stores them)
+    std::vector<double> w(batch_points);
     for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
       const std::span<double> xs(x.data(), count * s);
       const std::span<double> ys(y.data(), count);
-      generate(first, xs, std::span<double>(terms.data(), count));
+      const std::span<double> ws(w.data(), count);
+      generate(first, xs, ws);
       f.evaluate(std::span<const double>(xs), ys);
       check_finite_batch(info.name, xs, ys, s);
-      sum.add_weighted(std::span<double>(terms.data(), count), std::span<const double>(ys));
+      use(first, ws, std::span<const double>(ys));
+    });
+  };
+
+  // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
+  auto chunk_sum = [&](std::size_t c, auto sum) {
+    evaluate_chunk(c, [&](std::uint64_t, std::span<double> w, std::span<const double> y) {
+      sum.add_weighted(w, y);
     });
     return sum;
+  };
+
+  // Chunk c's terms w·f in order (rounded as multiply_then_add rounds them) into `out`, for the
+  // naive sum split across processes. Only the products go to `out`: generating into it
+  // directly, outside L1, slowed the walk by half.
+  auto chunk_terms = [&](std::size_t c, std::span<double> out) {
+    evaluate_chunk(c, [&](std::uint64_t first, std::span<double> w, std::span<const double> y) {
+      double* const products = out.data() + (first - layout.begin(c));
+      for (std::size_t i = 0; i < w.size(); ++i) products[i] = w[i] * y[i];
+    });
   };
 
   auto reduce = [&]<class Accumulator>(Accumulator init) {
@@ -236,6 +265,11 @@ rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std:
       sum = reduce(long_double_accumulator{}).value();
       break;
     case summation::naive: {
+      chunk_exchange* const group = active_chunk_exchange();
+      if (ShareChunks && group != nullptr && group->size() > 1) {
+        sum = split_naive_sum(*group, layout, threads, chunk_terms);
+        break;
+      }
       naive_accumulator running;
       for (std::size_t c = 0; c < layout.chunks(); ++c) running = chunk_sum(c, running);
       sum = running.value();
@@ -294,7 +328,8 @@ constexpr bool weighted_sum_shares_chunks(summation accumulate) noexcept {
 // mapped to the box. threads = 0 uses every core; the result is bitwise the same for every thread
 // count. `accumulate` chooses how the N terms w·f are summed (core/summation.hpp, enum
 // summation); the default is pairwise per batch, Neumaier across batches. summation::naive runs
-// on one thread whatever `threads` says (a left-to-right sum cannot be split).
+// on one thread whatever `threads` says (a left-to-right sum is one chain of adds); under a
+// chunk_exchange its processes share it, with the same bits (core/split_naive_sum.hpp).
 // Throws invalid_argument for a bad integrand dimension or domain, a set of another dimension or
 // with no points; non_finite_value if f returns NaN/±inf (the message names the point).
 // error_estimate is NaN: a fixed rule has no a-posteriori estimate.
