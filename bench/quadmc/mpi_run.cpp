@@ -315,10 +315,20 @@ std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_c
   }
   std::vector<double> figures(2 * keys.size());
   if (w.rank == 0) {
+    // The fastest of three timings of a cell of at most probe_evaluations: timed once, a cell of
+    // microseconds is at the mercy of one preemption (the other ranks spin in MPI_Bcast
+    // meanwhile, and an oversubscribed machine hands rank 0's core to them), which can price a
+    // series hundreds of times too high. A larger cell (a series that starts above the probe
+    // size) is timed once.
     const auto seconds_of = [&](std::size_t i) {
-      const auto t0 = clock::now();
-      (void)quadmc::run_cell_repetitions(p, i, 0, 1, context, 0.0);
-      return seconds_since(t0);
+      const int timings = p.cells[i].evaluations <= probe_evaluations ? 3 : 1;
+      double best = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < timings; ++k) {
+        const auto t0 = clock::now();
+        (void)quadmc::run_cell_repetitions(p, i, 0, 1, context, 0.0);
+        best = std::min(best, seconds_since(t0));
+      }
+      return best;
     };
     for (std::size_t s = 0; s < keys.size(); ++s) {
       series_cost c;
