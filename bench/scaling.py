@@ -16,9 +16,13 @@ Modelled: the cost of a cell is what the one-process run spent on it (its conver
 comes from the same run's `--cells-csv` (column shares_chunks: method::shares_chunks, the flag
 the planner splits by; `--model-only FOLDER…` re-models runs kept with --keep, whose folders hold
 that file as cells.csv). A cell costing more than total/(4K) whose method shares chunks is split
-across the K ranks by chunks (bench/quadmc/mpi_run.hpp): it takes cost / min(K, C), C its chunks per
-repetition (N / 12288 rounded up: sampling's chunk, the smaller of the library's two, so the
-model is on the generous side for rules); the other cells — a costly cell whose method does not
+across the K ranks by chunks (bench/quadmc/mpi_run.hpp): it takes cost / (min(K, C)·η), C its chunks
+per repetition (N / 12288 rounded up: sampling's chunk, the smaller of the library's two, so the
+model is on the generous side for rules). The ideal model takes η = 1; the second takes η the
+split cells' efficiency measured in the 2-rank run (their cost at 1 rank over 2 × their wall
+time at 2 ranks, at most 1: what splitting costs beside the work — the exchanges and waits, the
+naive sum's second chain (core/split_naive_sum.hpp) — and what two busy cores cost each other;
+with --model-only only the ideal one); the other cells — a costly cell whose method does not
 share chunks among them — go to ranks by LPT (largest first to the least-loaded rank). Speedup = total / (Σ split times + LPT makespan); the model ignores
 communication (one allgather per window of 4096 chunks and one gather per run) and the ranks'
 start-up, so it is an upper bound, and it says which cell bounds it.
@@ -66,10 +70,7 @@ def placements(cells_csv):
 def cells(csv_path, shares):
     with open(csv_path, newline="", encoding="utf-8") as f:
         for row in csv.DictReader(f):
-            seconds = float(row["seconds"])  # all repetitions of the cell
-            timed = int(row.get("timed_estimates") or 0)
-            if timed > 1:
-                seconds += float(row["seconds_per_estimate"]) * timed
+            seconds = cell_seconds(row)
             evals = int(row["evaluations"])
             name = f'{row["method"]} × {row["integrand"]}, N = {row["N"] or row["tolerance"]}'
             if row["method"] not in shares:
@@ -77,13 +78,43 @@ def cells(csv_path, shares):
             yield name, seconds, max(1, math.ceil(evals / CHUNK)), shares[row["method"]]
 
 
-def model(costs, ranks):
+def cell_seconds(row):
+    seconds = float(row["seconds"])  # all repetitions of the cell
+    timed = int(row.get("timed_estimates") or 0)
+    if timed > 1:
+        seconds += float(row["seconds_per_estimate"]) * timed
+    return seconds
+
+
+def split_efficiency(one_csv, two_csv, two_cells):
+    """η: the split cells' cost at 1 rank over 2 × their wall time at 2 ranks (capped at 1)."""
+    split = set()
+    with open(two_cells, newline="", encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            if row["placement"] == "split":
+                split.add((row["integrand"], row["method"], row["N"], row["tolerance"]))
+
+    def split_seconds(path):
+        total = 0.0
+        with open(path, newline="", encoding="utf-8") as f:
+            for row in csv.DictReader(f):
+                key = (row["integrand"], row["method"], row["N"] if not row["tolerance"] else "",
+                       row["tolerance"])
+                if key in split:
+                    total += cell_seconds(row)
+        return total
+
+    one, two = split_seconds(one_csv), split_seconds(two_csv)
+    return min(1.0, one / (2.0 * two)) if two > 0 else 1.0
+
+
+def model(costs, ranks, efficiency=1.0):
     total = sum(c for _, c, _, _ in costs)
     threshold = total / (4.0 * ranks)
     split = [(n, c, k) for n, c, k, shares in costs if c > threshold and shares]
     rest = sorted(((n, c) for n, c, _, shares in costs if c <= threshold or not shares),
                   key=lambda x: -x[1])
-    split_time = sum(c / min(ranks, k) for _, c, k in split)
+    split_time = sum(c / (min(ranks, k) * efficiency) for _, c, k in split)
     loads = [0.0] * ranks
     for _, c in rest:
         i = loads.index(min(loads))
@@ -95,7 +126,8 @@ def model(costs, ranks):
     if worst_split and (not largest_rest or
                         worst_split[1] / min(ranks, worst_split[2]) >= largest_rest[1]):
         bound = (f"split cell {worst_split[0]}: {worst_split[2]} chunks, "
-                 f"{worst_split[1] / min(ranks, worst_split[2]):.3g} s on its ranks")
+                 f"{worst_split[1] / (min(ranks, worst_split[2]) * efficiency):.3g} s on its "
+                 "ranks")
     elif largest_rest:
         bound = f"largest unsplit cell {largest_rest[0]}: {largest_rest[1]:.3g} s"
     else:
@@ -103,13 +135,17 @@ def model(costs, ranks):
     return total / makespan, len(split), bound
 
 
-def add_model(row, costs):
+def add_model(row, costs, efficiency=math.nan):
+    row["split_efficiency_2"] = efficiency
     for k in (8, 64, 1024):
         speedup, split, bound = model(costs, k)
         row[f"model_speedup_{k}"] = speedup
         row[f"model_efficiency_{k}"] = speedup / k
         row[f"split_cells_{k}"] = split
         row[f"bound_{k}"] = bound
+        eta_speedup = model(costs, k, efficiency)[0] if not math.isnan(efficiency) else math.nan
+        row[f"model_eta_speedup_{k}"] = eta_speedup
+        row[f"model_eta_efficiency_{k}"] = eta_speedup / k
 
 
 def shown_args():
@@ -190,7 +226,9 @@ def main():
             row = {"scene": name, "cells": len(costs), "one_rank_s": t1, "two_ranks_s": t2,
                    "measured_speedup_2": t1 / t2, "split_cells_2": split_2,
                    "split_unshared_2": unshared_2}
-            add_model(row, costs)
+            add_model(row, costs, split_efficiency(os.path.join(one, "convergence.csv"),
+                                                   os.path.join(two, "convergence.csv"),
+                                                   two_cells))
             rows.append(row)
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "scaling.csv"), "w", newline="", encoding="utf-8") as f:
@@ -204,20 +242,27 @@ def main():
              "(`bench/same_results.py`). Only cells whose method shares chunks are split "
              "(`method::shares_chunks`, from the run's `--cells-csv`), in the run and in the "
              "model.", "",
-             "| scene | cells | 1 rank (s) | 2 ranks (s) | measured speedup | modelled speedup "
-             "(efficiency) at 8 / 64 / 1024 ranks | cells split at 2 (run) / 8 / 64 / 1024 |",
-             "|---|---|---|---|---|---|---|"]
+             "| scene | cells | 1 rank (s) | 2 ranks (s) | measured speedup | split cells' "
+             "efficiency η at 2 | modelled speedup (efficiency) at 8 / 64 / 1024 ranks, ideal | "
+             "the same with η | cells split at 2 (run) / 8 / 64 / 1024 |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         model_text = " / ".join(f'{r[f"model_speedup_{k}"]:.1f} ({100 * r[f"model_efficiency_{k}"]:.0f} %)'
                                 for k in (8, 64, 1024))
+        eta_text = ("—" if math.isnan(r["split_efficiency_2"]) else
+                    " / ".join(f'{r[f"model_eta_speedup_{k}"]:.1f} '
+                               f'({100 * r[f"model_eta_efficiency_{k}"]:.0f} %)'
+                               for k in (8, 64, 1024)))
+        eta = ("—" if math.isnan(r["split_efficiency_2"]) else
+               f'{100 * r["split_efficiency_2"]:.0f} %')
         split_text = " / ".join([str(r["split_cells_2"]) or "—"] +
                                 [str(r[f"split_cells_{k}"]) for k in (8, 64, 1024)])
         measured = ("— | — | —" if math.isnan(r["one_rank_s"]) else
                     f'{r["one_rank_s"]:.1f} | {r["two_ranks_s"]:.1f} | '
                     f'{r["measured_speedup_2"]:.2f}×')
-        lines.append(f'| {r["scene"]} | {r["cells"]} | {measured} | {model_text} | '
-                     f'{split_text} |')
-    lines += ["", "What bounds the modelled speedup:", ""]
+        lines.append(f'| {r["scene"]} | {r["cells"]} | {measured} | {eta} | {model_text} | '
+                     f'{eta_text} | {split_text} |')
+    lines += ["", "What bounds the modelled speedup (ideal model):", ""]
     for r in rows:
         for k in (8, 64, 1024):
             lines.append(f'- {r["scene"]}, {k} ranks: {r[f"bound_{k}"]}')
