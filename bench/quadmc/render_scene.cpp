@@ -15,7 +15,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <ranges>
+#include <string>
+#include <vector>
 
 namespace quadmc_cli {
 
@@ -183,10 +184,12 @@ render_scene parse_root(const reader& r, const toml::table& root) {
       sc.occluder_height = r.number(key, path, value, what);
       if (!(sc.occluder_height > 0.0)) r.expected(key, path, value, what);
     } else if (k == "estimators") {
-      const std::string what = fmt::format(
-          "estimator names, each one of: {}",
-          fmt::join(all_estimators | std::views::transform([](auto e) { return to_string(e); }),
-                    ", "));
+      // A vector, not std::views::transform: clang 14 (the sanitize build) cannot compile
+      // libstdc++ 12's views.
+      std::vector<std::string> names;
+      for (const auto e : all_estimators) names.emplace_back(to_string(e));
+      const std::string what =
+          fmt::format("estimator names, each one of: {}", fmt::join(names, ", "));
       const toml::array& a = r.array(key, path, value, all_estimators.size(), what);
       for (std::size_t i = 0; i < a.size(); ++i) {
         const std::string element_path = fmt::format("estimators[{}]", i + 1);

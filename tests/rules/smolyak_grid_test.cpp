@@ -153,7 +153,11 @@ TEST(SmolyakGrid, NodesAreDistinctAndInTheCube) {
 TEST(SmolyakGrid, ClenshawCurtisIsExactForTotalDegreeTwoLPlusOne) {
   const std::vector<std::pair<std::size_t, unsigned>> cases = {{2, 6}, {3, 5}, {4, 5}, {5, 4},
                                                                {6, 4}, {7, 3}, {8, 3}};
-  for (const auto& [s, L] : cases) {
+  for (const auto& c : cases) {
+    // Named copies, not a structured binding: the lambdas below use s, and clang 14 (the sanitize
+    // build's compiler) cannot capture structured bindings yet.
+    const std::size_t s = c.first;
+    const unsigned L = c.second;
     const smolyak_grid g(cc(), s, L);
     const grid_points p = all_points(g);
     const unsigned degree = 2 * L + 1;

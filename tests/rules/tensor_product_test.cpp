@@ -344,7 +344,7 @@ TEST(TensorProductSummation, NaiveIsGenuinelyLeftToRight) {
   using quadmc::summation;
   const std::uint64_t n = std::uint64_t{1} << 16;
   const double tiny = 0x1p-53;
-  const auto g = [n, tiny](double x) { return x < 1.0 / static_cast<double>(n) ? 1.0 : tiny; };
+  const auto g = [tiny](double x) { return x < 1.0 / static_cast<double>(n) ? 1.0 : tiny; };
   for (unsigned threads : {1U, 2U}) {
     EXPECT_EQ(
         quadmc::integrate(g, 0.0, 1.0, quadmc::midpoint_rule{}, n, threads, summation::naive).value,

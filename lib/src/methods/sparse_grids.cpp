@@ -106,7 +106,8 @@ class smolyak_method final : public method {
   // the grid.
   struct tallied_grid {
     // The tally is written on the side of the sum (rules/weighted_sum.hpp, writes_on_the_side).
-    static constexpr bool writes_on_the_side = true;
+    // [[maybe_unused]]: read only by that concept, which clang 14 does not count as a use.
+    [[maybe_unused]] static constexpr bool writes_on_the_side = true;
     const smolyak_grid* grid;
     std::vector<neumaier_sum>* tally;
 
@@ -121,7 +122,7 @@ class smolyak_method final : public method {
       add(first, weights);
     }
     struct on_box {
-      static constexpr bool writes_on_the_side = true;
+      [[maybe_unused]] static constexpr bool writes_on_the_side = true;
       smolyak_grid::on_box points;
       const tallied_grid* owner;
       void generate(std::uint64_t first, std::span<double> x, std::span<double> weights) const {
