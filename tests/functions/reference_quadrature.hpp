@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <numbers>
@@ -21,9 +22,12 @@ namespace quadmc::test {
 // fall strictly inside (a, b). Tolerance 1e-13 relative to ∫|f| with at most 2^7 subintervals
 // per piece: an outer integral of inner integrals sees their ~1e-14 noise, and a tighter
 // tolerance would only recurse to max depth (2^depth intervals) without gaining a digit.
-template <class F>
-double gauss_kronrod(F&& f, double a, double b, std::vector<double> breaks = {},
-                     unsigned max_depth = 7) {
+// f is taken as a std::function so that Boost's adaptive integrator is instantiated once per test
+// file, not once per lambda: nested integrals of many integrands made these files the slowest of
+// the build (compiling genz_test with the sanitizers took 111 s before); an indirect call per
+// evaluation is nothing beside the integrand.
+inline double gauss_kronrod(const std::function<double(double)>& f, double a, double b,
+                            std::vector<double> breaks = {}, unsigned max_depth = 7) {
   breaks.push_back(a);
   breaks.push_back(b);
   std::sort(breaks.begin(), breaks.end());
