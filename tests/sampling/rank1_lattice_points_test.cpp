@@ -123,8 +123,8 @@ TEST(RankOneLatticePoints, ShiftedPointsAreUniformWithAndWithoutTheBaker) {
 
 // The vector kernel (sampling/rank1_lattice_blocks.hpp) against the scalar loop kept as
 // generate_reference: bitwise equal with and without shift and baker's transform, dimensions on
-// both sides of the block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices
-// with a masked tail), N = 2^4 … 2^20, batches cut at sizes and starts that split blocks
+// both sides of the block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices, 16
+// with AVX2, with a masked tail), N = 2^4 … 2^20, batches cut at sizes and starts that split blocks
 // anywhere; at every simd level this CPU offers.
 template <class P>
 void expect_lattice_kernel_equals_reference(std::size_t s, std::uint64_t n, bool shifted) {

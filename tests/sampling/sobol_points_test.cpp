@@ -282,9 +282,9 @@ TYPED_TEST(SobolNet, BatchOrderDoesNotChangeAnyBit) {
 
 // The vector kernel (sampling/sobol_blocks.hpp) against the scalar Gray-code walk kept as
 // generate_reference: bitwise equal for every randomization, dimensions on both sides of the
-// block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices with a masked tail),
-// N up to 2^20, the first point dropped or not, the last indices below 2^32, and batches cut at
-// sizes and starts that split blocks anywhere; at every simd level this CPU offers.
+// block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices, 16 with AVX2, with a
+// masked tail), N up to 2^20, the first point dropped or not, the last indices below 2^32, and
+// batches cut at sizes and starts that split blocks anywhere; at every simd level this CPU offers.
 template <class R>
 void expect_kernel_equals_reference(std::size_t s, std::uint64_t n, bool drop_first,
                                     std::uint64_t first = 0) {

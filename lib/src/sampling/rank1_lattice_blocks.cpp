@@ -42,6 +42,11 @@ bool rank1_lattice_blocks(const rank1_lattice_block_tables& t, std::uint64_t fir
     rank1_lattice_blocks_avx512(t, first, blocks, out);
     return true;
   }
+  // AVX2 (or an avx512 level on a CPU without AVX512DQ): 4 lanes, the conversion by exponent bits.
+  if (active_simd_level() >= simd_level::avx2) {
+    rank1_lattice_blocks_avx2(t, first, blocks, out);
+    return true;
+  }
 #else
   (void)t, (void)first, (void)blocks, (void)out;
 #endif

@@ -10,6 +10,8 @@
 namespace quadmc::detail {
 
 #if defined(__x86_64__)
+void rank1_lattice_blocks_avx2(const rank1_lattice_block_tables& t, std::uint64_t first,
+                               std::uint64_t blocks, double* out) noexcept;
 void rank1_lattice_blocks_avx512(const rank1_lattice_block_tables& t, std::uint64_t first,
                                  std::uint64_t blocks, double* out) noexcept;
 #endif

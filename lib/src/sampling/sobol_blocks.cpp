@@ -92,6 +92,11 @@ bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t bl
     }
     return true;
   }
+  // AVX2 (or an avx512 level on a CPU without AVX512DQ): 4 lanes, the 64-bit multiply emulated.
+  if (active_simd_level() >= simd_level::avx2) {
+    sobol_blocks_avx2(t, q, blocks, out);
+    return true;
+  }
 #else
   (void)t, (void)q, (void)blocks, (void)out;
 #endif

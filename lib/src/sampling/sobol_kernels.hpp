@@ -10,6 +10,8 @@
 namespace quadmc::detail {
 
 #if defined(__x86_64__)
+void sobol_blocks_avx2(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
+                       double* out) noexcept;
 void sobol_blocks_avx512(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
                          double* out) noexcept;
 void sobol_blocks_avx512_gfni(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,

@@ -7,8 +7,8 @@
 // rounding of the scalar code, and x ≥ 1 ? x − 1 : x is exact (Sterbenz). The same operations in
 // the same order as the scalar path, lane by lane: the points are bitwise equal, wherever a batch
 // starts (no alignment is needed: k is computed from the index). B = 8/gcd(s, 8) for s ≤ 8 (a
-// block fills whole 8-lane registers), B = 1 above (the coordinates of one point in 64-lane
-// slices).
+// block fills whole 8-lane AVX-512 registers, or pairs of 4-lane AVX2 ones), B = 1 above (the
+// coordinates of one point in slices of 64 lanes, 16 with AVX2).
 #pragma once
 
 #include <cstddef>

@@ -9,9 +9,9 @@
 // step. The second is a constant table. So a block of B·s coordinates costs one XOR per
 // coordinate plus the constant, and every value is the same integer as the point-by-point
 // Gray-code walk: the points are bitwise those of the scalar path whatever B and wherever a batch
-// starts. B = 8/gcd(s, 8) for s ≤ 8 (a block fills whole 8-lane registers), B = 1 above (the
-// coordinates of one point fill the registers). The
-// digital shifts (shift, lms_shift) are folded into the constant; the nonlinear scrambles
+// starts. B = 8/gcd(s, 8) for s ≤ 8 (a block fills whole 8-lane AVX-512 registers, or pairs of
+// 4-lane AVX2 ones), B = 1 above (the coordinates of one point fill the registers). The digital
+// shifts (shift, lms_shift) are folded into the constant; the nonlinear scrambles
 // (fast_owen, owen) run per lane on the 64-bit words exactly as their scalar code does.
 #pragma once
 
