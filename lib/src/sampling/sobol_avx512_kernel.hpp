@@ -16,8 +16,11 @@
 namespace quadmc::detail {
 namespace {
 
+// The helpers below are forced inline, as in the AVX2 kernel (sobol_blocks_avx2.cpp): at -O2 GCC
+// may keep them out of line, and each call then spills the run's live registers.
+
 // core/rng.hpp's mix64 on 8 lanes.
-__m512i mix64(__m512i z) noexcept {
+[[gnu::always_inline]] inline __m512i mix64(__m512i z) noexcept {
   z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)),
                          _mm512_set1_epi64(static_cast<long long>(0xbf58476d1ce4e5b9ULL)));
   z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)),
@@ -29,7 +32,7 @@ __m512i mix64(__m512i z) noexcept {
 #if defined(__GFNI__) && defined(__AVX512BW__)
 // GFNI: one affine transform over GF(2) with the anti-diagonal matrix reverses the bits of every
 // byte, one byte shuffle reverses the bytes of every 32-bit lane.
-__m512i reverse32(__m512i x) noexcept {
+[[gnu::always_inline]] inline __m512i reverse32(__m512i x) noexcept {
   const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(
       x, _mm512_set1_epi64(static_cast<long long>(0x8040201008040201ULL)), 0);
   const __m512i order =
@@ -38,7 +41,7 @@ __m512i reverse32(__m512i x) noexcept {
 }
 #else
 // ((x >> k) & m) | ((x << k) & ~m), one ternary-logic select (0xe4: c ? a : b).
-__m512i reverse32(__m512i x) noexcept {
+[[gnu::always_inline]] inline __m512i reverse32(__m512i x) noexcept {
   const auto step = [](__m512i v, unsigned k, unsigned m) {
     return _mm512_ternarylogic_epi32(_mm512_srli_epi32(v, k), _mm512_slli_epi32(v, k),
                                      _mm512_set1_epi32(static_cast<int>(m)), 0xe4);
@@ -53,7 +56,7 @@ __m512i reverse32(__m512i x) noexcept {
 
 // fast_owen_scramble::operator() on 8 lanes. The 32-bit arithmetic runs in the low half of each
 // 64-bit lane with the high half zero (32-bit adds and multiplies keep it zero).
-__m512i fast_owen(__m512i v, __m512i seed) noexcept {
+[[gnu::always_inline]] inline __m512i fast_owen(__m512i v, __m512i seed) noexcept {
   const __m512i low32 = _mm512_set1_epi64(0xffffffffLL);
   __m512i x = reverse32(_mm512_srli_epi64(v, 32));
   x = _mm512_add_epi32(x, _mm512_and_si512(seed, low32));
@@ -69,7 +72,8 @@ __m512i fast_owen(__m512i v, __m512i seed) noexcept {
 
 // owen_scramble::operator() on 8 lanes (depth ≤ 64): the first table_digits flips by one gather
 // from the prefix table (sobol_blocks.hpp), the others hashed as the scalar code does.
-__m512i owen(__m512i v, __m512i seed, __m512i base, const sobol_block_tables& t) noexcept {
+[[gnu::always_inline]] inline __m512i owen(__m512i v, __m512i seed, __m512i base,
+                                           const sobol_block_tables& t) noexcept {
   const unsigned depth = t.depth;
   const unsigned k = t.table_digits;
   __m512i out = v;

@@ -20,9 +20,13 @@
 namespace quadmc::detail {
 namespace {
 
+// The helpers below are forced inline: at -O2 GCC kept mix64 and the scrambles out of line, and
+// each call spilled the run's live registers (perf on fast_owen at s = 2: mix64 36 % of the time
+// as a symbol of its own).
+
 // a·c mod 2^64 per lane: lo(a)·lo(c) + ((hi(a)·lo(c) + lo(a)·hi(c)) << 32), the product of the
 // high halves falling out of the 64 bits.
-__m256i mullo64(__m256i a, std::uint64_t c) noexcept {
+[[gnu::always_inline]] inline __m256i mullo64(__m256i a, std::uint64_t c) noexcept {
   const __m256i c_low = _mm256_set1_epi64x(static_cast<long long>(c & 0xffffffffu));
   const __m256i c_high = _mm256_set1_epi64x(static_cast<long long>(c >> 32));
   const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(_mm256_srli_epi64(a, 32), c_low),
@@ -31,7 +35,7 @@ __m256i mullo64(__m256i a, std::uint64_t c) noexcept {
 }
 
 // core/rng.hpp's mix64 on 4 lanes.
-__m256i mix64(__m256i z) noexcept {
+[[gnu::always_inline]] inline __m256i mix64(__m256i z) noexcept {
   z = mullo64(_mm256_xor_si256(z, _mm256_srli_epi64(z, 30)), 0xbf58476d1ce4e5b9ULL);
   z = mullo64(_mm256_xor_si256(z, _mm256_srli_epi64(z, 27)), 0x94d049bb133111ebULL);
   return _mm256_xor_si256(z, _mm256_srli_epi64(z, 31));
@@ -39,7 +43,7 @@ __m256i mix64(__m256i z) noexcept {
 
 // The bit reversal of every 32-bit lane (fast_owen_scramble::reverse): each byte's two nibbles
 // reversed by table lookup (vpshufb) and swapped, then the bytes of each lane in reverse order.
-__m256i reverse32(__m256i x) noexcept {
+[[gnu::always_inline]] inline __m256i reverse32(__m256i x) noexcept {
   const __m256i nibble = _mm256_set1_epi8(0x0f);
   // Byte n of each table: the 4 bits of n backwards, in the high nibble (for a byte's low
   // nibble) or the low one (for its high nibble); then the byte order 3 2 1 0 within each lane.
@@ -57,7 +61,7 @@ __m256i reverse32(__m256i x) noexcept {
 
 // fast_owen_scramble::operator() on 4 lanes, the 32-bit arithmetic in the low half of each 64-bit
 // lane with the high half zero, as in the AVX-512 kernel.
-__m256i fast_owen(__m256i v, __m256i seed) noexcept {
+[[gnu::always_inline]] inline __m256i fast_owen(__m256i v, __m256i seed) noexcept {
   const __m256i low32 = _mm256_set1_epi64x(0xffffffffLL);
   __m256i x = reverse32(_mm256_srli_epi64(v, 32));
   x = _mm256_add_epi32(x, _mm256_and_si256(seed, low32));
@@ -71,13 +75,14 @@ __m256i fast_owen(__m256i v, __m256i seed) noexcept {
   return _mm256_or_si256(_mm256_slli_epi64(high, 32), low);
 }
 
-__m256i shift_right(__m256i v, unsigned count) noexcept {
+[[gnu::always_inline]] inline __m256i shift_right(__m256i v, unsigned count) noexcept {
   return _mm256_srl_epi64(v, _mm_cvtsi32_si128(static_cast<int>(count)));
 }
 
 // owen_scramble::operator() on 4 lanes (depth ≤ 64): the first table_digits flips by one gather
 // from the prefix table (sobol_blocks.hpp), the others hashed as the scalar code does.
-__m256i owen(__m256i v, __m256i seed, __m256i base, const sobol_block_tables& t) noexcept {
+[[gnu::always_inline]] inline __m256i owen(__m256i v, __m256i seed, __m256i base,
+                                           const sobol_block_tables& t) noexcept {
   const unsigned depth = t.depth;
   const unsigned k = t.table_digits;
   __m256i out = v;
@@ -111,7 +116,7 @@ __m256i owen(__m256i v, __m256i seed, __m256i base, const sobol_block_tables& t)
 // mantissa lo is 0.5 + lo·2^-53 (both ulps fit: hi < 2^21, lo < 2^32). Subtracting 2^31 + 0.5
 // from the first leaves hi·2^-21 − 0.5, a multiple of 2^-21 below 1 in magnitude: exact; adding
 // the second gives x·2^-53, a double, so that sum is exact too.
-__m256d to_unit(__m256i v) noexcept {
+[[gnu::always_inline]] inline __m256d to_unit(__m256i v) noexcept {
   const __m256i high = _mm256_or_si256(_mm256_srli_epi64(v, 43),
                                        _mm256_set1_epi64x(0x41e0000000000000LL));  // 2^31
   const __m256i low =
