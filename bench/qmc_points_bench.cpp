@@ -5,7 +5,7 @@
 //
 // Use it for the cost of the kernels behind generate() (sampling/sobol_blocks.hpp,
 // sampling/rank1_lattice_blocks.hpp) against their scalar paths: run it once as it is and once
-// with QUADMC_SIMD=avx2 (no Sobol'/lattice kernel below avx512, so that run is the scalar walk).
+// with QUADMC_SIMD=sse2 (no Sobol'/lattice kernel below avx2, so that run is the scalar walk).
 // Not the peers table (bench/peers/qmc_point_peers.cpp times Boost, GSL and scipy) and not the
 // per-evaluation cost (integrators_bench's sobol_* and lattice_shift rows). Timer: CPU time of
 // this thread (the default), which on a shared machine is steadier than wall time.
