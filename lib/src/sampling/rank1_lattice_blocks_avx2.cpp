@@ -9,6 +9,7 @@
 // less 2^52. The doubles are then the scalar loop's, operation by operation
 // (tests/sampling/rank1_lattice_points_test.cpp runs every simd level the CPU offers).
 #if defined(__x86_64__)
+#include "avx2_lane_slices.hpp"
 #include "quadmc/sampling/point_set.hpp"
 #include "rank1_lattice_kernels.hpp"
 
@@ -22,23 +23,21 @@ namespace {
 template <int V, lattice_periodization P>
 void run(const rank1_lattice_block_tables& t, std::size_t w0, __m256i tail, std::uint64_t first,
          std::uint64_t blocks, double* out) noexcept {
-  const auto load = [tail](const std::uint64_t* p) {
-    return _mm256_maskload_epi64(reinterpret_cast<const long long*>(p), tail);
-  };
   __m256i k[V], step[V];
   __m256d shift[V];
   for (int v = 0; v < V; ++v) {
+    // Once per call: every register loaded under a mask, the last one's keeping its own lanes.
+    const __m256i m = v + 1 == V ? tail : _mm256_set1_epi64x(-1);
     const std::size_t w = w0 + 4 * static_cast<std::size_t>(v);
     // The low 64 bits of the product suffice (N divides 2^64). Lanes past the tail stay 0.
     alignas(32) std::uint64_t start[4] = {};
-    const std::size_t lanes = v + 1 == V ? std::min<std::size_t>(4, t.words - w) : 4;
-    for (std::size_t l = 0; l < lanes; ++l)
+    const std::size_t lanes = std::min<std::size_t>(4, t.words - w);
+    for (std::size_t l = 0; l < lanes; ++l) {
       start[l] = ((first + t.point[w + l]) * t.z[w + l]) & t.mask;
+    }
     k[v] = _mm256_load_si256(reinterpret_cast<const __m256i*>(start));
-    step[v] = v + 1 == V ? load(t.step.data() + w)
-                         : _mm256_loadu_si256(reinterpret_cast<const __m256i*>(t.step.data() + w));
-    shift[v] = v + 1 == V ? _mm256_maskload_pd(t.shift.data() + w, tail)
-                          : _mm256_loadu_pd(t.shift.data() + w);
+    step[v] = _mm256_maskload_epi64(reinterpret_cast<const long long*>(t.step.data() + w), m);
+    shift[v] = _mm256_maskload_pd(t.shift.data() + w, m);
   }
   const __m256i mask = _mm256_set1_epi64x(static_cast<long long>(t.mask));
   const __m256i exponent = _mm256_set1_epi64x(0x4330000000000000LL);
@@ -70,31 +69,12 @@ void run(const rank1_lattice_block_tables& t, std::size_t w0, __m256i tail, std:
   }
 }
 
-// Slices of at most 16 lanes (4 registers of state, step and shift: 12 of the 16 ymm registers).
 template <lattice_periodization P>
 void run_all(const rank1_lattice_block_tables& t, std::uint64_t first, std::uint64_t blocks,
              double* out) noexcept {
-  for (std::size_t w0 = 0; w0 < t.words; w0 += 16) {
-    const std::size_t lanes = std::min<std::size_t>(16, t.words - w0);
-    const int registers = static_cast<int>((lanes + 3) / 4);
-    const auto kept = static_cast<long long>(lanes - 4 * static_cast<std::size_t>(registers - 1));
-    const __m256i tail =
-        _mm256_cmpgt_epi64(_mm256_set1_epi64x(kept), _mm256_setr_epi64x(0, 1, 2, 3));
-    switch (registers) {
-      case 1:
-        run<1, P>(t, w0, tail, first, blocks, out + w0);
-        break;
-      case 2:
-        run<2, P>(t, w0, tail, first, blocks, out + w0);
-        break;
-      case 3:
-        run<3, P>(t, w0, tail, first, blocks, out + w0);
-        break;
-      default:
-        run<4, P>(t, w0, tail, first, blocks, out + w0);
-        break;
-    }
-  }
+  for_each_avx2_slice(t.words, [&](auto registers, std::size_t w0, __m256i tail) {
+    run<decltype(registers)::value, P>(t, w0, tail, first, blocks, out + w0);
+  });
 }
 
 }  // namespace

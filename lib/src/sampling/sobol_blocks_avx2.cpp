@@ -10,11 +10,11 @@
 // the doubles are bitwise those of the scalar path (tests/sampling/sobol_points_test.cpp runs
 // every simd level the CPU offers).
 #if defined(__x86_64__)
+#include "avx2_lane_slices.hpp"
 #include "sobol_kernels.hpp"
 
 #include <immintrin.h>
 
-#include <algorithm>
 #include <bit>
 
 namespace quadmc::detail {
@@ -170,32 +170,12 @@ void run(const sobol_block_tables& t, std::size_t w0, __m256i tail, std::uint64_
   }
 }
 
-// Slices of at most 16 lanes (4 registers): the state of a slice, its offsets and keys stay in
-// the 16 ymm registers with room for the scrambles' temporaries.
 template <sobol_scramble S>
 void run_all(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
              double* out) noexcept {
-  for (std::size_t w0 = 0; w0 < t.words; w0 += 16) {
-    const std::size_t lanes = std::min<std::size_t>(16, t.words - w0);
-    const int registers = static_cast<int>((lanes + 3) / 4);
-    const auto kept = static_cast<long long>(lanes - 4 * (registers - 1));
-    const __m256i tail =
-        _mm256_cmpgt_epi64(_mm256_set1_epi64x(kept), _mm256_setr_epi64x(0, 1, 2, 3));
-    switch (registers) {
-      case 1:
-        run<1, S>(t, w0, tail, q, blocks, out + w0);
-        break;
-      case 2:
-        run<2, S>(t, w0, tail, q, blocks, out + w0);
-        break;
-      case 3:
-        run<3, S>(t, w0, tail, q, blocks, out + w0);
-        break;
-      default:
-        run<4, S>(t, w0, tail, q, blocks, out + w0);
-        break;
-    }
-  }
+  for_each_avx2_slice(t.words, [&](auto registers, std::size_t w0, __m256i tail) {
+    run<decltype(registers)::value, S>(t, w0, tail, q, blocks, out + w0);
+  });
 }
 
 }  // namespace
