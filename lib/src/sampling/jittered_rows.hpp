@@ -57,6 +57,11 @@ void jittered_rows_kernel(double k, double inv_k, const double* first_cell, doub
   }
   reg step[registers];
   for (std::size_t q = 0; q < registers; ++q) step[q] = L::load(pattern + q * lanes);
+  constexpr std::size_t chains = registers >= 4 ? 1 : 4 / registers;
+  reg chain_step[registers];  // chains·B on the last-axis lanes, exact
+  for (std::size_t q = 0; q < registers; ++q) {
+    chain_step[q] = L::mul(step[q], L::broadcast(static_cast<double>(chains)));
+  }
   // From one whole row to the next without a carry past axis S − 2: +1 on that axis's lanes.
   for (std::size_t t = 0; t < block_points; ++t) {
     for (std::size_t j = 0; j < S; ++j) pattern[t * S + j] = j + 2 == S ? 1.0 : 0.0;
@@ -83,18 +88,42 @@ void jittered_rows_kernel(double k, double inv_k, const double* first_cell, doub
         for (std::size_t j = 0; j + 1 < S; ++j) pattern[t * S + j] = cell[j];
         pattern[t * S + S - 1] = c + static_cast<double>(t);
       }
+#pragma GCC unroll 8
       for (std::size_t q = 0; q < registers; ++q) start[q] = L::load(pattern + q * lanes);
     }
-    reg offset[registers];
-    for (std::size_t q = 0; q < registers; ++q) offset[q] = start[q];
+    // `chains` blocks per step, each with its own offsets advanced by chains·B: with one or two
+    // registers per block, a single chain of offset additions was bound by the addition's
+    // latency (≈ 1 cycle per point at s = 1, 5 % of a run; perf). The offsets are the same exact
+    // integers however they are reached, so the bits do not change. The loops over the chains
+    // and registers are unrolled by force: at -O2 GCC kept offset[][] on the stack, a
+    // store-to-load round trip per block (perf annotate, s = 8).
+    reg offset[chains][registers];
+#pragma GCC unroll 8
+    for (std::size_t q = 0; q < registers; ++q) {
+      offset[0][q] = start[q];
+      for (std::size_t h = 1; h < chains; ++h) offset[h][q] = L::add(offset[h - 1][q], step[q]);
+    }
     double* row = x + p * S;
     std::size_t r = 0;
-    for (; r + block_points <= run; r += block_points) {
+    for (; r + chains * block_points <= run; r += chains * block_points) {
+#pragma GCC unroll 8
+      for (std::size_t h = 0; h < chains; ++h) {
+        double* block = row + (r + h * block_points) * S;
+#pragma GCC unroll 8
+        for (std::size_t q = 0; q < registers; ++q) {
+          const reg u = L::load(block + q * lanes);
+          L::store(block + q * lanes, L::min(L::mul(L::add(offset[h][q], u), scale), below_one));
+          offset[h][q] = L::add(offset[h][q], chain_step[q]);
+        }
+      }
+    }
+    for (; r + block_points <= run; r += block_points) {  // offset[0] is at block r
       double* block = row + r * S;
+#pragma GCC unroll 8
       for (std::size_t q = 0; q < registers; ++q) {
         const reg u = L::load(block + q * lanes);
-        L::store(block + q * lanes, L::min(L::mul(L::add(offset[q], u), scale), below_one));
-        offset[q] = L::add(offset[q], step[q]);
+        L::store(block + q * lanes, L::min(L::mul(L::add(offset[0][q], u), scale), below_one));
+        offset[0][q] = L::add(offset[0][q], step[q]);
       }
     }
     for (; r < run; ++r) {  // the row's last points, fewer than B
@@ -117,6 +146,7 @@ void jittered_rows_kernel(double k, double inv_k, const double* first_cell, doub
       // A whole row (it began at c = 0) and axis S − 2 did not wrap (s = 1 has no such axis: its
       // rows all begin alike, and next_row is 0).
       if (c == 0.0 && (S == 1 || cell[S < 2 ? 0 : S - 2] != 0.0)) {
+#pragma GCC unroll 8
         for (std::size_t q = 0; q < registers; ++q) start[q] = L::add(start[q], next_row[q]);
         start_ready = true;
       }

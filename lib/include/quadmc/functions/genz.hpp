@@ -2,14 +2,15 @@
 // in Tools, Methods and Languages for Scientific and Engineering Computation, 1984, 81–94; and
 // "A package for testing multiple integration subroutines", 1987), with closed-form integrals:
 //
-//   oscillatory    cos(2πu₁ + Σ aᵢxᵢ)                ∫ = cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)
-//   product_peak   Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)            ∫ = Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]
-//   corner_peak    (1 + Σ aᵢxᵢ)^−(s+1)                ∫ = Σ_{v∈{0,1}^s} (−1)^{|v|}/(1 + a·v) /
-//   (s!·Π aᵢ) gaussian       exp(−Σ aᵢ²(xᵢ − uᵢ)²)              ∫ = Π √π/(2aᵢ)[erf(aᵢ(1 − uᵢ)) +
-//   erf(aᵢuᵢ)] continuous     exp(−Σ aᵢ|xᵢ − uᵢ|)                ∫ = Π [2 − e^{−aᵢuᵢ} −
-//   e^{−aᵢ(1−uᵢ)}]/aᵢ discontinuous  0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ)
-//                                                     ∫ = Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ ·
-//                                                     Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ
+// clang-format off
+//   oscillatory    cos(2πu₁ + Σ aᵢxᵢ)       ∫ = cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)
+//   product_peak   Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²)   ∫ = Π aᵢ[atan(aᵢ(1 − uᵢ)) + atan(aᵢuᵢ)]
+//   corner_peak    (1 + Σ aᵢxᵢ)^−(s+1)       ∫ = Σ_{v∈{0,1}^s} (−1)^{|v|}/(1 + a·v) / (s!·Π aᵢ)
+//   gaussian       exp(−Σ aᵢ²(xᵢ − uᵢ)²)     ∫ = Π √π/(2aᵢ)[erf(aᵢ(1 − uᵢ)) + erf(aᵢuᵢ)]
+//   continuous     exp(−Σ aᵢ|xᵢ − uᵢ|)       ∫ = Π [2 − e^{−aᵢuᵢ} − e^{−aᵢ(1−uᵢ)}]/aᵢ
+//   discontinuous  0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ)
+//                                            ∫ = Π_{i∈cut}(e^{aᵢuᵢ} − 1)/aᵢ · Π_{i∉cut}(e^{aᵢ} − 1)/aᵢ
+// clang-format on
 // The oscillatory form is Re[e^{i2πu₁} Π (e^{iaⱼ} − 1)/(iaⱼ)] with (e^{ia} − 1)/(ia) =
 // e^{ia/2}·sin(a/2)/(a/2), which has no cancellation for small a. The product-peak convention is
 // aᵢ⁻² (Genz's own code). The discontinuous family cuts x₁ and x₂ by default (Genz's code; only

@@ -158,18 +158,24 @@ concept integrand = requires(const F& f, std::span<const double> x, std::span<do
 // Reports the first non-finite value of a batch with the point that produced it. One pass over
 // the batch after evaluation: the branch is never taken in a healthy run, so it costs a multiply
 // and an add per value, not a check inside the integrand. v·0 is 0 for finite v and NaN for ±inf
-// or NaN, so four interleaved sums of v·0 (independent lanes the compiler keeps in vector
-// registers; std::isfinite per value does not vectorize) are NaN exactly when a value is not
-// finite.
+// or NaN, so interleaved sums of v·0 are NaN exactly when a value is not finite (std::isfinite
+// per value does not vectorize). Sixteen independent lanes, not four: with four, each lane's
+// chain of additions waited on the previous one (perf: 5.8 % of a rank-1 lattice run at s = 1,
+// 3.2 % with sixteen). Any order gives the same answer, so the lane count is free.
 inline void check_finite_batch(std::string_view name, std::span<const double> x,
                                std::span<const double> y, std::size_t s) {
-  double lane[4] = {0.0, 0.0, 0.0, 0.0};
+  constexpr std::size_t lanes = 16;
+  double lane[lanes] = {};
   std::size_t k = 0;
-  for (; k + 4 <= y.size(); k += 4) {
-    for (std::size_t l = 0; l < 4; ++l) lane[l] += y[k + l] * 0.0;
+  for (; k + lanes <= y.size(); k += lanes) {
+#pragma GCC unroll 16
+    for (std::size_t l = 0; l < lanes; ++l) lane[l] += y[k + l] * 0.0;
   }
-  for (std::size_t l = 0; k < y.size(); ++k, ++l) lane[l] += y[k] * 0.0;
-  if (!std::isnan((lane[0] + lane[1]) + (lane[2] + lane[3]))) [[likely]]
+  double any_nan = 0.0;
+  for (; k < y.size(); ++k) any_nan += y[k] * 0.0;
+#pragma GCC unroll 16
+  for (std::size_t l = 0; l < lanes; ++l) any_nan += lane[l];
+  if (!std::isnan(any_nan)) [[likely]]
     return;
   for (std::size_t i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i])) throw non_finite_value(name, x.subspan(i * s, s), y[i]);
