@@ -127,22 +127,23 @@ class sample_statistics {
   // Positions advance by counters: one division per batch, not per point.
   void add_stratum_differences(std::uint64_t first, std::span<const double> y) noexcept {
     const std::uint64_t row = structure_.group;
-    // The batch's Σd² is a plain sum of at most 86 terms (error ≤ 86ε relative, far below the
-    // variance estimate's own sampling error), added to the Neumaier total once per batch.
-    // Locals, not members, inside the loop: stores to a member double could alias y, which would
-    // force a reload per point.
+    // The batch's Σd² goes into four_lanes (the k-th counted triple of the batch into lane
+    // k mod 4), added to the Neumaier total once per batch: four independent additions per step
+    // where one serial sum was latency-bound (bench/peers/profile_notes.md). A lane holds at most
+    // 22 of a batch's ≤ 86 terms, so the error is ≤ 24ε relative, far below the variance
+    // estimate's own sampling error. Locals, not members, inside the loop: stores to a member
+    // double could alias y, which would force a reload per point.
     std::uint64_t position = first % 3;
     std::uint64_t in_row = first % row;
     double triple[3] = {triple_[0], triple_[1], triple_[2]};
-    double batch_sum = 0.0;
+    four_lanes sum;
     std::uint64_t triples = 0;
     std::size_t i = 0;
     // A triple begun in the previous batch: its last one or two points, one at a time.
     for (; position != 0 && i < y.size(); ++i) {
       triple[position] = y[i];
       if (position == 2 && in_row >= 2) {
-        const double d = triple[0] - 2.0 * triple[1] + triple[2];
-        batch_sum += d * d;
+        sum.add_run(triple, 1);
         ++triples;
       }
       position = position == 2 ? 0 : position + 1;
@@ -150,20 +151,18 @@ class sample_statistics {
     }
     // Whole triples. With row ≥ 3, the triple whose first point has row position q counts iff
     // q ≤ row − 3 (the same test as the last point's position ≥ 2): the counted triples come in
-    // runs of ⌊(row − 3 − q)/3⌋ + 1, each run a plain loop, and between two runs lies at most one
-    // triple across a row boundary (q ∈ {row − 2, row − 1}). The sum is taken in the same order
-    // as one point at a time, so the bits are those of the loop above. Rows shorter than 3 hold
-    // no triple.
+    // runs of ⌊(row − 3 − q)/3⌋ + 1, each run one call of add_run, and between two runs lies at
+    // most one triple across a row boundary (q ∈ {row − 2, row − 1}). The triples are counted in
+    // the order of the point-by-point loop above, so each lands in the same lane as there. Rows
+    // shorter than 3 hold no triple.
     if (row >= 3) {
       const std::uint64_t last_start = row - 3;
       while (i + 3 <= y.size()) {
         if (in_row <= last_start) {
           const std::size_t run = static_cast<std::size_t>(
               std::min<std::uint64_t>((last_start - in_row) / 3 + 1, (y.size() - i) / 3));
-          for (std::size_t t = 0; t < run; ++t, i += 3) {
-            const double d = y[i] - 2.0 * y[i + 1] + y[i + 2];
-            batch_sum += d * d;
-          }
+          sum.add_run(y.data() + i, run);
+          i += 3 * run;
           triples += run;
           in_row += 3 * run;
         } else {
@@ -179,8 +178,78 @@ class sample_statistics {
     for (std::size_t p = 0; i < y.size(); ++i, ++p) triple[p] = y[i];
     for (int k = 0; k < 3; ++k) triple_[k] = triple[k];
     groups_ += triples;
-    group_sum_.add(batch_sum / 6.0);
+    group_sum_.add(sum.total() / 6.0);
   }
+
+  // Σd² of second differences d = y₀ − 2y₁ + y₂ over consecutive triples, the k-th term added
+  // into lane k mod 4 and the lanes combined as (l₀ + l₁) + (l₂ + l₃): the same order on every
+  // machine and instruction set. The lanes are kept rotated (lane_[j] is lane (k + j) mod 4), so
+  // a run adds four terms per step with constant indices (registers, no stores) and rotates once
+  // at its end.
+  class four_lanes {
+   public:
+    // The terms of `run` consecutive triples starting at y (y[3t], y[3t + 1], y[3t + 2]).
+    void add_run(const double* y, std::size_t run) noexcept {
+      std::size_t t = 0;
+      for (; t + 4 <= run; t += 4, y += 12) {
+        lane_[0] += square_difference(y);
+        lane_[1] += square_difference(y + 3);
+        lane_[2] += square_difference(y + 6);
+        lane_[3] += square_difference(y + 9);
+      }
+      switch (run - t) {
+        case 3:
+          lane_[0] += square_difference(y);
+          lane_[1] += square_difference(y + 3);
+          lane_[2] += square_difference(y + 6);
+          rotate(3);
+          break;
+        case 2:
+          lane_[0] += square_difference(y);
+          lane_[1] += square_difference(y + 3);
+          rotate(2);
+          break;
+        case 1:
+          lane_[0] += square_difference(y);
+          rotate(1);
+          break;
+        default:
+          break;
+      }
+      terms_ += run;
+    }
+
+    double total() const noexcept {
+      // Lane m is lane_[(m − k) mod 4] with k = terms_ mod 4; constant indices in every case
+      // keep lane_ in registers.
+      const double* l = lane_;
+      switch (terms_ % 4) {
+        case 1:
+          return (l[3] + l[0]) + (l[1] + l[2]);
+        case 2:
+          return (l[2] + l[3]) + (l[0] + l[1]);
+        case 3:
+          return (l[1] + l[2]) + (l[3] + l[0]);
+        default:
+          return (l[0] + l[1]) + (l[2] + l[3]);
+      }
+    }
+
+   private:
+    static double square_difference(const double* y) noexcept {
+      const double d = y[0] - 2.0 * y[1] + y[2];
+      return d * d;
+    }
+
+    // lane_[j] ← lane_[(j + r) mod 4]: the lane that receives the next term moves to the front.
+    void rotate(std::size_t r) noexcept {
+      const double l[4] = {lane_[0], lane_[1], lane_[2], lane_[3]};
+      for (std::size_t j = 0; j < 4; ++j) lane_[j] = l[(j + r) % 4];
+    }
+
+    double lane_[4] = {0.0, 0.0, 0.0, 0.0};
+    std::size_t terms_ = 0;
+  };
 
   // Σ g(y) with four interleaved partial sums combined as (s₀ + s₁) + (s₂ + s₃): the same order
   // on every machine and instruction set, and four independent additions per step.
