@@ -168,7 +168,9 @@ class report {
          "(F::evaluate on a batch of 256 points) — on one batch of independent points "
          "computed before the timing and evaluated again and again, 2^22 evaluations per run: "
          "no point generation, no statistics, no finite check. Every throughput figure is "
-         "given as a fraction of it (column `ratio_to_integrand_only` of peers.csv). "
+         "given as a fraction of its one-thread rate (column `ratio_to_integrand_only` of "
+         "peers.csv); its two-thread run (chunks of 48 calls taken from one counter, nothing "
+         "else shared) gives the two-thread targets their ceiling (see \"Targets\"). "
          "**Ladder** rows (work-precision): N = 10², 10^2.5, …, 10⁶ with one thread, for the "
          "peers and quadmc's plain, jittered, Latin hypercube and tensor methods (the Sobol', "
          "Halton and lattice methods are measured for throughput only; their work-precision "
@@ -245,7 +247,15 @@ class report {
              "of its two runs got less than 0.75 of a core per thread in the best of its "
              "rounds: the machine's other work held a core, so the ratio measures that work, "
              "not the method (scipy runs in a subprocess: its share is not known and never the "
-             "reason for ⚠).\n\n",
+             "reason for ⚠). A vCPU can also be given in full and still run slower, when the "
+             "host puts other work on the physical core behind it; \"cores\" cannot see that. "
+             "So each two-thread cell also gives \"integrand alone\": for the integrand "
+             "alone, two threads on their own outputs with nothing shared and nothing to wait "
+             "for, measured in the same rounds, 2 × its evaluations per CPU-second on two "
+             "threads / those on one — how fast each core ran while both were busy, which a "
+             "late thread start does not change. Where that is below 1.9×, the goal cannot "
+             "be met in this run: the cell is ⚠ if the method keeps 95 % (1.9 / 2) of it, and "
+             "❌ if it loses more, since that loss is the method's own.\n\n",
              t.met, t.met + t.missed, t.missed, t.not_measurable, memory_summary());
   }
 
