@@ -115,9 +115,10 @@ double median(std::vector<double> v) {
 //
 // With two threads, both take chunks of 48 calls from one counter and evaluate them on the
 // shared read-only batch into their own outputs: no shared writes but the chunk's slot, no
-// waiting but the join. A thread started late (the threads start inside the timed run) only
-// misses chunks, as a pool thread woken late does; targets.hpp reads the machine's ceiling off
-// these runs' CPU time, which that start does not touch.
+// waiting but the join; a thread started late (they start inside the timed run) only misses
+// chunks, as a pool thread woken late does. Its two-thread / one-thread ratio is printed beside
+// every two-thread target (targets.hpp): what the machine gave code with nothing to wait for,
+// in the same rounds.
 template <class F>
 peer_method integrand_only(const F& f, std::uint64_t throughput_n, unsigned threads) {
   const std::size_t s = f.dimension();
@@ -425,10 +426,10 @@ void measure_qmc_points(const configuration& c, study& out) {
         out.skipped.push_back(fmt::format("{} at s = {}: at most {} dimensions", generators[k].name,
                                           s, generators[k].max_dimension));
       } else if (!generators[k].in_process) {
-        attempt(k, c.throughput_runs);
+        attempt(k, c.qmc_point_runs);
       }
     }
-    for (int round = 0; round < c.throughput_runs; ++round) {
+    for (int round = 0; round < c.qmc_point_runs; ++round) {
       for (std::size_t k = 0; k < generators.size(); ++k) {
         if (generators[k].in_process && !failed[k]) attempt(k, 1);
       }
@@ -450,7 +451,7 @@ void measure_qmc_points(const configuration& c, study& out) {
       r.cpu_seconds = best[k]->cpu_seconds;
       r.rate = static_cast<double>(n) / r.seconds;
       r.abs_error = NAN;
-      r.repetitions = c.throughput_runs;
+      r.repetitions = c.qmc_point_runs;
       out.rows.push_back(r);
     }
   }

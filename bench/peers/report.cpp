@@ -158,9 +158,11 @@ class report {
          "methods alike) "
       << fmt::format(
              "at least {} times and until {} s of its runs have passed, at most {} times "
-             "(the 15–40 ms runs get {}, runs of ≥ 0.1 s {}), ",
+             "(a 20 ms run gets {}, runs of ≥ {:.1f} s {}), ",
              c_.min_throughput_runs, c_.min_throughput_seconds, c_.throughput_runs,
-             c_.throughput_runs, c_.min_throughput_runs)
+             std::min(c_.throughput_runs,
+                      static_cast<int>(std::ceil(c_.min_throughput_seconds / 0.02))),
+             c_.min_throughput_seconds / c_.min_throughput_runs, c_.min_throughput_runs)
       << "with one seed, the **best** run kept (highest evaluations/s: on a shared machine "
          "noise only slows runs down). **The limit**: `"
       << integrand_only_method
@@ -170,7 +172,7 @@ class report {
          "no point generation, no statistics, no finite check. Every throughput figure is "
          "given as a fraction of its one-thread rate (column `ratio_to_integrand_only` of "
          "peers.csv); its two-thread run (chunks of 48 calls taken from one counter, nothing "
-         "else shared) gives the two-thread targets their ceiling (see \"Targets\"). "
+         "else shared) is printed beside the two-thread targets (see \"Targets\"). "
          "**Ladder** rows (work-precision): N = 10², 10^2.5, …, 10⁶ with one thread, for the "
          "peers and quadmc's plain, jittered, Latin hypercube and tensor methods (the Sobol', "
          "Halton and lattice methods are measured for throughput only; their work-precision "
@@ -249,13 +251,10 @@ class report {
              "not the method (scipy runs in a subprocess: its share is not known and never the "
              "reason for ⚠). A vCPU can also be given in full and still run slower, when the "
              "host puts other work on the physical core behind it; \"cores\" cannot see that. "
-             "So each two-thread cell also gives \"integrand alone\": for the integrand "
-             "alone, two threads on their own outputs with nothing shared and nothing to wait "
-             "for, measured in the same rounds, 2 × its evaluations per CPU-second on two "
-             "threads / those on one — how fast each core ran while both were busy, which a "
-             "late thread start does not change. Where that is below 1.9×, the goal cannot "
-             "be met in this run: the cell is ⚠ if the method keeps 95 % (1.9 / 2) of it, and "
-             "❌ if it loses more, since that loss is the method's own.\n\n",
+             "So each two-thread cell also gives \"integrand alone\": the same ratio for the "
+             "integrand alone, two threads sharing nothing but a chunk counter, in the same "
+             "rounds — what two threads of this machine gave code with nothing to wait for. "
+             "It is there to read a cell by, and never changes its mark.\n\n",
              t.met, t.met + t.missed, t.missed, t.not_measurable, memory_summary());
   }
 
@@ -318,7 +317,7 @@ class report {
              "scipy {} `scipy.stats.qmc.Sobol/Halton(d, scramble, seed).random(N)` timed inside "
              "a `/usr/bin/python3` subprocess (interpreter start and import not timed; runs in "
              "one process, not in rounds). No integrand: only point generation.\n\n",
-             c_.qmc_points, c_.throughput_runs, "1.10 (Debian python3-scipy)");
+             c_.qmc_points, c_.qmc_point_runs, "1.10 (Debian python3-scipy)");
     if (!generators_.empty()) {
       o << "| generator | family |";
       for (std::size_t s : c_.qmc_dimensions) o << " s = " << s << " |";

@@ -43,18 +43,21 @@ struct configuration {
   std::uint64_t small_throughput_n = std::uint64_t{1} << 20;
   int repetitions = 3;  // seeds per ladder point of a random method
   // Throughput: each method at least min_throughput_runs times and until min_throughput_seconds
-  // of its runs have passed, at most throughput_runs times, in rounds; the best run kept. Runs of
-  // ≥ 0.1 s (Sobol' owen, Halton, the peers at s = 8) are long enough that 2 of them give the
-  // best; the 15–40 ms ones still get 5.
-  int throughput_runs = 5;
-  int min_throughput_runs = 2;
-  double min_throughput_seconds = 0.2;
+  // of its runs have passed, at most throughput_runs times, in rounds; the best run kept. On a
+  // shared 2-core virtual machine the same 20 ms run took 19.9–43.9 ms over half a minute, 18 of
+  // 60 within 10 % of the fastest (bench/peers/profile_notes.md, "Two threads"). So runs under
+  // 40 ms get 15 rounds (none of them near the fastest: 0.7^15 ≈ 0.005 at that rate), and runs
+  // of ≥ 0.2 s (Sobol' owen, Halton, the peers at s = 8) 3.
+  int throughput_runs = 15;
+  int min_throughput_runs = 3;
+  double min_throughput_seconds = 0.6;
   std::vector<std::uint64_t> rss_sizes{1000000, 100000000};
   // Quasi-Monte Carlo point generation (qmc_point_peers.hpp): N points in each s, best of
-  // throughput_runs. 2^18: the slowest generators (digit-scrambled Halton, scipy) then take
+  // qmc_point_runs. 2^18: the slowest generators (digit-scrambled Halton, scipy) then take
   // 1–4 s per run at s = 8 under load, and the fastest still run for ≥ 10 ms.
   std::vector<std::size_t> qmc_dimensions{2, 8};
   std::uint64_t qmc_points = std::uint64_t{1} << 18;
+  int qmc_point_runs = 5;
 };
 
 // `--quick`: a smoke run (small N, seconds); its numbers are not for the record.
@@ -68,6 +71,7 @@ inline configuration quick_configuration() {
   c.repetitions = 2;
   c.small_throughput_n = 1 << 14;
   c.throughput_runs = 2;
+  c.qmc_point_runs = 2;
   c.rss_sizes = {10000, 1000000};
   c.qmc_points = std::uint64_t{1} << 12;
   return c;

@@ -31,16 +31,9 @@ bool starved(run_share r) noexcept {
   return r.cores < 0.75 * static_cast<double>(r.threads);
 }
 
-mark judge(double ratio, double goal, run_share numerator, run_share denominator,
-           std::optional<double> ceiling) noexcept {
+mark judge(double ratio, double goal, run_share numerator, run_share denominator) noexcept {
   if (starved(numerator) || starved(denominator)) return mark::not_measurable;
-  if (ratio >= goal) return mark::met;
-  if (ceiling && *ceiling < goal) {
-    const double ideal =
-        static_cast<double>(numerator.threads) / static_cast<double>(denominator.threads);
-    if (ratio >= goal / ideal * *ceiling) return mark::not_measurable;
-  }
-  return mark::missed;
+  return ratio >= goal ? mark::met : mark::missed;
 }
 
 namespace {
@@ -199,14 +192,11 @@ std::vector<target_line> evaluate_targets(const std::vector<target_spec>& specs,
           cell.ratio = a->rate / b->rate;
           cell.numerator = {a->cpu_seconds / a->seconds, a->threads};
           cell.denominator = {b->cpu_seconds / b->seconds, b->threads};
-          if (!spec.ceiling.empty()) {
-            const row* ca = find(spec.run, spec.ceiling, spec.numerator_threads, integrand, s);
-            const row* cb = find(spec.run, spec.ceiling, spec.denominator_threads, integrand, s);
-            if (ca != nullptr && cb != nullptr && ca->cpu_seconds > 0.0 && cb->cpu_seconds > 0.0) {
-              const double per_cpu_second =
-                  (ca->evaluations / ca->cpu_seconds) / (cb->evaluations / cb->cpu_seconds);
-              cell.ceiling = per_cpu_second * static_cast<double>(ca->threads) /
-                             static_cast<double>(cb->threads);
+          if (!spec.reference.empty()) {
+            const row* ra = find(spec.run, spec.reference, spec.numerator_threads, integrand, s);
+            const row* rb = find(spec.run, spec.reference, spec.denominator_threads, integrand, s);
+            if (ra != nullptr && rb != nullptr && ra->seconds > 0.0 && rb->seconds > 0.0) {
+              cell.reference = ra->rate / rb->rate;
             }
           }
           const bool s_counted =
@@ -218,7 +208,7 @@ std::vector<target_line> evaluate_targets(const std::vector<target_spec>& specs,
           } else if (smallest < static_cast<double>(spec.min_evaluations)) {
             cell.note = fmt::format("N = {:.0f} < {}", smallest, spec.min_evaluations);
           } else {
-            cell.m = judge(*cell.ratio, spec.goal, cell.numerator, cell.denominator, cell.ceiling);
+            cell.m = judge(*cell.ratio, spec.goal, cell.numerator, cell.denominator);
           }
         }
         line.cells.push_back(cell);
@@ -271,7 +261,7 @@ std::string targets_table(const std::vector<target_line>& lines,
       if (l.spec.show_cores || c.m == mark::not_measurable) {
         o << fmt::format(" ({} / {} cores", cores_text(c.numerator.cores),
                          cores_text(c.denominator.cores));
-        if (c.ceiling) o << fmt::format("; integrand alone {:.2f}×", *c.ceiling);
+        if (c.reference) o << fmt::format("; integrand alone {:.2f}×", *c.reference);
         o << ")";
       }
       o << " |";

@@ -23,8 +23,7 @@ namespace quadmc::peers {
 enum class mark {
   met,             // ✅ ratio ≥ goal
   missed,          // ❌ ratio < goal
-  not_measurable,  // ⚠ a run got less than 0.75 of a core per thread, or the machine gave the
-                   //   integrand alone less than the goal: the machine's other work
+  not_measurable,  // ⚠ a run got less than 0.75 of a core per thread: the machine's other work
   not_counted,     // shown for information: outside the target's scope (s, N)
 };
 
@@ -42,14 +41,8 @@ struct run_share {
 // work too. 0.75 leaves room for the process's own waits (a pool's wake-up, a page fault).
 bool starved(run_share r) noexcept;
 
-// The mark of one measured ratio: ⚠ when either run is starved, else ✅ / ❌ against the goal —
-// except where `ceiling`, what the machine gave the integrand alone at the same thread counts, is
-// itself below the goal. Then the goal cannot be met in this run, and the ratio is ⚠ if it keeps
-// the goal's share of the ceiling (ratio ≥ goal / ideal · ceiling, ideal = numerator threads /
-// denominator threads: 1.9 / 2 = 95 % of what the integrand alone got) and ❌ if not — a method
-// that loses more than the goal allows is missed on any machine.
-mark judge(double ratio, double goal, run_share numerator, run_share denominator,
-           std::optional<double> ceiling = std::nullopt) noexcept;
+// The mark of one measured ratio: ⚠ when either run is starved, else ✅ / ❌ against the goal.
+mark judge(double ratio, double goal, run_share numerator, run_share denominator) noexcept;
 
 struct target_spec {
   std::string label;  // e.g. "quadmc jittered / plain MC (1 thread each)"
@@ -63,15 +56,12 @@ struct target_spec {
   std::vector<std::size_t> counted_s;   // the s the goal names; empty: every s
   std::uint64_t min_evaluations = 0;    // smaller kept runs: shown, not counted
   bool show_cores = false;              // print the two runs' cores in every cell
-  // A method whose runs at the same thread counts give the machine's ceiling for this ratio
-  // (judge); empty: none. The ceiling is its evaluations per CPU-second at the numerator's
-  // threads over those at the denominator's, times the ratio of threads: how fast each core ran
-  // while all were busy, against one alone. A vCPU whose physical core the host also gives to
-  // other work runs slower while "cores" still reads full; CPU time counts that slowdown but
-  // not a thread that started late, so the ceiling is the machine's, not the thread start's.
-  // The integrand alone shares nothing and waits for nothing: its per-core rate can only drop
-  // for the machine's reasons.
-  std::string ceiling;
+  // A method whose ratio at the same thread counts is printed beside this one, for the reader;
+  // it never changes the mark. The two-thread targets name the integrand alone, which shares
+  // nothing but a chunk counter: its ratio shows what two threads of this machine gave code with
+  // nothing to wait for in the same rounds (a vCPU whose physical core the host gives to other
+  // work runs slower while "cores" still reads full). Empty: none.
+  std::string reference;
 };
 
 // The current targets, then the first ones that still stand (plain MC against the scalar loop, GSL
@@ -83,7 +73,7 @@ struct target_cell {
   std::optional<double> ratio;  // empty: a row missing (method not run at this s)
   mark m = mark::not_counted;
   run_share numerator, denominator;
-  std::optional<double> ceiling;  // the ceiling method's ratio, where the spec names one
+  std::optional<double> reference;  // the reference method's ratio, where the spec names one
   std::string note;  // why not counted ("s = 1 not in the goal", "N = 1048576 < 4194304")
 };
 
@@ -104,7 +94,7 @@ struct target_tally {
 target_tally tally(const std::vector<target_line>& lines);
 
 // The Markdown table (header, one line per target line); cells "1.23× ✅", "0.80× ⚠ (0.52 /
-// 1.00 cores)", "1.61× ⚠ (1.99 / 1.00 cores; integrand alone 1.62×)", "0.70× (s = 1 not in the
+// 1.00 cores)", "1.61× ❌ (1.99 / 1.00 cores; integrand alone 1.62×)", "0.70× (s = 1 not in the
 // goal)", "—".
 std::string targets_table(const std::vector<target_line>& lines,
                           const std::vector<std::size_t>& dimensions);
