@@ -2,8 +2,8 @@
 // (no timing: speed is never asserted in tests): met at and above the goal, missed below it, ⚠
 // when either run got less than 0.75 of a core per thread whatever the ratio, the integrand
 // alone's ratio shown beside a two-thread cell without changing its mark, shown but not counted
-// outside the goal's s or below its N, "—" when a row is missing; the
-// tally counts only ✅ and ❌ as measured; memory is constant in N below the bound only.
+// outside the goal's s or below its N, "—" when a row is missing; the tally counts only ✅ and ❌
+// as measured; memory is constant in N below the bound only.
 #include "targets.hpp"
 
 #include <gtest/gtest.h>
