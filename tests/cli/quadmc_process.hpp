@@ -10,6 +10,10 @@
 // nothing as root. With unprivileged = true a root test process runs the child as user and group
 // 65534 (nobody), after give_to_unprivileged_user has handed it the scratch folder; as any other
 // user the child runs as that user. permission_tests_possible() says whether either works.
+// As nobody, the child cannot be the build tree's binary itself: a clone may sit below a folder
+// only root can enter (/root is 0700 on Debian, and so is every mkdtemp folder), and then the
+// exec fails. start_quadmc runs instead a copy laid out as an installed quadmc inside the logs
+// folder (unprivileged_command), the same binary, which nobody can always reach.
 //
 // Stand-in matplotlib: write_matplotlib_stand_in puts a package named `matplotlib` in a folder
 // that the child's PYTHONPATH puts first. Imported by bench/plot.py (sys.argv[0] ends in
@@ -148,14 +152,41 @@ class child_process {
   pid_t pid_ = -1;
 };
 
+// A copy of the command for a child run as nobody by a root test (see the header comment):
+// `folder`/command/bin/quadmc with the plot scripts where an installed command finds them
+// (QUADMC_INSTALLED_PLOT_SCRIPT, relative to the executable: bench/quadmc/plot_script.cpp), made
+// once per folder. `folder` is a scratch folder handed to nobody, so nobody can reach the copy
+// wherever the clone is; the copy stays root's, readable and executable by all.
+inline fs::path unprivileged_command(const fs::path& folder) {
+  const fs::path bin = folder / "command" / "bin";
+  const fs::path command = bin / fs::path(QUADMC_CLI).filename();
+  if (fs::exists(command)) return command;
+  const fs::path scripts = (bin / QUADMC_INSTALLED_PLOT_SCRIPT).lexically_normal().parent_path();
+  fs::create_directories(bin);
+  fs::create_directories(scripts);
+  fs::copy_file(QUADMC_CLI, command);
+  for (const char* script : {"plot.py", "gallery.py", "render.py"}) {
+    fs::copy_file(fs::path(QUADMC_SOURCE_DIR) / "bench" / script, scripts / script);
+  }
+  const auto everyone = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                        fs::perms::others_read | fs::perms::others_exec;
+  for (fs::path p = scripts; p != folder; p = p.parent_path()) fs::permissions(p, everyone);
+  for (fs::path p = bin; p != folder; p = p.parent_path()) fs::permissions(p, everyone);
+  fs::permissions(command, everyone);
+  return command;
+}
+
 // `quadmc args…` in the background, output captured in `logs` (a folder of its own, so that the
-// listing of the folder under test shows only what the command made there).
+// listing of the folder under test shows only what the command made there). As nobody (root
+// test, unprivileged = true) the command is unprivileged_command(logs).
 inline std::unique_ptr<child_process> start_quadmc(const fs::path& working_directory,
                                                    const fs::path& logs, const std::string& tag,
                                                    const std::vector<std::string>& args,
                                                    std::vector<std::string> environment = {},
                                                    bool unprivileged = false) {
-  std::vector<std::string> argv{QUADMC_CLI};
+  const bool as_nobody = unprivileged && ::geteuid() == 0;
+  std::vector<std::string> argv{as_nobody ? unprivileged_command(logs).string()
+                                          : std::string(QUADMC_CLI)};
   argv.insert(argv.end(), args.begin(), args.end());
   process_options options;
   options.working_directory = working_directory;
