@@ -44,11 +44,12 @@ class invalid_argument : public std::invalid_argument {
 };
 
 // An integrand (or pdf) produced NaN or ±inf: the message carries the point that produced it.
+// Its constructor is compiled once, in lib/src/core/errors.cpp: formatting the point's doubles
+// with fmt::join instantiates fmt's whole floating-point writer, which every file of the hot loops
+// that throw this would otherwise generate again (docs/design.md#build-time).
 class non_finite_value : public std::domain_error {
  public:
-  non_finite_value(std::string_view what_produced_it, std::span<const double> point, double value)
-      : std::domain_error(fmt::format("{} returned {} at x = ({})", what_produced_it, value,
-                                      fmt::join(point, ", "))) {}
+  non_finite_value(std::string_view what_produced_it, std::span<const double> point, double value);
 };
 
 // Formats a value for an invalid_argument message with max_digits10 significant digits (17 for

@@ -40,7 +40,6 @@
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/vector_math.hpp"
 #include "quadmc/functions/endpoint_derivatives.hpp"
-#include "quadmc/functions/inclusion_exclusion.hpp"
 #include "quadmc/functions/integrand.hpp"
 
 #include <boost/math/special_functions/sinc.hpp>
@@ -138,14 +137,7 @@ inline void validate_genz(std::span<const double> a, std::span<const double> u, 
 // for bit what a loop gives); when that over- or underflows on the way, or ends outside the normal
 // range, again in 50-digit arithmetic (exponent range ±2^31), which rounds only the final value:
 // a product of 1e200, 1e200 and 1e-300 is 1e100, not inf.
-inline double scaled_product(std::span<const double> factors) {
-  double product = 1.0;
-  for (double f : factors) product *= f;
-  if (std::isnormal(product)) return product;
-  wide_float wide = 1;
-  for (double f : factors) wide *= f;
-  return static_cast<double>(wide);
-}
+double scaled_product(std::span<const double> factors);  // lib/src/functions/genz.cpp
 
 // Refuses parameters whose reference a double cannot carry: `exact` must be finite, and for the
 // positive families (every Genz family but the oscillatory one) at least DBL_MIN, since a
@@ -339,23 +331,7 @@ class genz_corner_peak {
   }
   // The closed form and a bound on its relative rounding error (of the 50-digit sum, before the
   // final rounding to double), for any a > 0.
-  static std::pair<double, double> closed_form(std::span<const double> a) {
-    const std::size_t s = a.size();
-    const wide_float eps = std::numeric_limits<wide_float>::epsilon();
-    // g(t) = 1/(1 + t) after s integrations; |Δg| ≤ g²·|Δt| plus one rounding of the division.
-    const vertex_sum sum =
-        alternating_vertex_sum(a, [&](const wide_float& t, const wide_float& dt) {
-          wide_float g = 1 / (1 + t);
-          wide_float error = g * g * dt + eps * g;
-          return std::pair{std::move(g), std::move(error)};
-        });
-    wide_float denominator = 1;
-    for (std::size_t j = 0; j < s; ++j) denominator *= static_cast<double>(j + 1) * a[j];
-    // + 2s·ε for the s!·Π aᵢ divisor.
-    const wide_float relative =
-        sum.error_bound / boost::multiprecision::abs(sum.value) + 2 * static_cast<double>(s) * eps;
-    return {static_cast<double>(sum.value / denominator), static_cast<double>(relative)};
-  }
+  static std::pair<double, double> closed_form(std::span<const double> a);  // genz.cpp
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
     const std::size_t s = a_.size();
