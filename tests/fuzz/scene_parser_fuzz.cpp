@@ -3,8 +3,9 @@
 // out of bounds or hit undefined behaviour (the sanitizers run with it). Any other exception
 // escapes LLVMFuzzerTestOneInput and libFuzzer reports it as a crash.
 //
-// Use tests/fuzz/run.sh to build it with clang++ -fsanitize=fuzzer,address,undefined and run it
-// (CI: 60 s). Not a unit test: it has no fixed inputs beyond its seed corpus (bench/scenes/*.toml).
+// Use tests/fuzz/run.sh to build it (clang, -fsanitize=fuzzer,address,undefined, in the sanitize
+// preset's tree: tests/fuzz/CMakeLists.txt) and run it (CI: 60 s). Not a unit test: it has no
+// fixed inputs beyond its seed corpus (bench/scenes/*.toml).
 // Source: LLVM libFuzzer documentation, https://llvm.org/docs/LibFuzzer.html.
 #include "quadmc/scene/parse.hpp"
 
