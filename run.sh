@@ -20,17 +20,22 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# What the library and the quadmc command need to build.
-LIB_PACKAGES=(build-essential cmake ninja-build pkg-config
+# The tools of every build: ccache keeps compiled objects under ~/.cache/ccache, so that the
+# presets that compile the library alike (release, package) and repeated builds reuse them
+# (CMakeLists.txt, QUADMC_CCACHE).
+BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config ccache)
+# What the library and the quadmc command need to build, without the test and timing frameworks.
+LIBRARY_PACKAGES=(libboost-dev                # Boost.Math (header-only, part of libboost1.74-dev)
+                  libfmt-dev                  # fmt
+                  libcli11-dev                # CLI11 (command-line flags)
+                  libtomlplusplus-dev         # toml++ (scene files)
+                  librandom123-dev            # Random123 (Philox counter-based RNG)
+                  libquadrule-dev             # quadrule (Gauss–Patterson tables of the sparse grids)
+                  libquantlib0-dev)           # QuantLib: the lattice generating vectors
+# ... and with them: every preset but `package` configures the tests and the timing binaries.
+LIB_PACKAGES=("${BUILD_PACKAGES[@]}" "${LIBRARY_PACKAGES[@]}"
               libgtest-dev libgmock-dev       # GoogleTest
-              libbenchmark-dev                # Google Benchmark
-              libboost-dev                    # Boost.Math (header-only, part of libboost1.74-dev)
-              libfmt-dev                      # fmt
-              libcli11-dev                    # CLI11 (command-line flags)
-              libtomlplusplus-dev             # toml++ (scene files)
-              librandom123-dev                # Random123 (Philox counter-based RNG)
-              libquadrule-dev                 # quadrule (Gauss–Patterson tables of the sparse grids)
-              libquantlib0-dev)               # QuantLib: the lattice generating vectors
+              libbenchmark-dev)               # Google Benchmark
 # Plots: Debian's python3 with matplotlib (not a pyenv one). The tests need it too: the
 # end-to-end tests run `quadmc run` with plots on, which runs bench/plot.py.
 PLOT_PACKAGES=(python3 python3-matplotlib)
@@ -53,14 +58,16 @@ BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}"
 # with libclang-rt-14-dev). clang, not GCC: at -O1 with both sanitizers it compiles this code base
 # in about a third of GCC's time, and compiling is most of CI's 90 minutes (README, Tests and CI).
 SANITIZE_PACKAGES=("${TEST_PACKAGES[@]}" clang libclang-rt-14-dev)
-# The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang.
+# The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang. It is
+# built in the sanitize preset's tree and links its library (tests/fuzz/CMakeLists.txt), so it
+# configures that preset: the library's packages, GoogleTest and CLI11 included.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)
 # The Debian package: the library and the command (no tests, no benchmarks), CPack's DEB generator
 # with dpkg-shlibdeps (dpkg-dev) and `file` to declare the shared libraries it needs, and the
 # plots, since its check runs the extracted command with plots on.
-PACKAGE_PACKAGES=(build-essential cmake ninja-build pkg-config libboost-dev libfmt-dev libcli11-dev
-                  libtomlplusplus-dev librandom123-dev dpkg-dev file "${PLOT_PACKAGES[@]}")
+PACKAGE_PACKAGES=("${BUILD_PACKAGES[@]}" "${LIBRARY_PACKAGES[@]}" dpkg-dev file
+                  "${PLOT_PACKAGES[@]}")
 
 install_missing() {
   local missing=()
@@ -99,14 +106,16 @@ case "${1:-}" in
     install_missing "${TEST_PACKAGES[@]}"
     cmake --preset test >/dev/null
     cmake --build --preset test
-    ctest --preset test
+    # One test process per core: the suites share nothing but the machine (each end-to-end run
+    # works in a scratch folder of its own).
+    ctest --preset test -j "$(nproc)"
     ;;
   sanitize)
     install_missing "${SANITIZE_PACKAGES[@]}"
     cmake --preset sanitize >/dev/null
     cmake --build --preset sanitize
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      ctest --preset sanitize -j2
+      ctest --preset sanitize -j "$(nproc)"
     ;;
   format)
     install_missing "${FORMAT_PACKAGES[@]}"
@@ -115,7 +124,7 @@ case "${1:-}" in
     ;;
   fuzz)
     install_missing "${FUZZ_PACKAGES[@]}"
-    tests/fuzz/run.sh "${2:-60}" build/fuzz
+    tests/fuzz/run.sh "${2:-60}" build/fuzz/corpus
     ;;
   consumer)
     # Installs what the test preset built (run `./run.sh test` first).
