@@ -81,8 +81,14 @@ std::string first_line(const fs::path& file) {
 template <class Columns, class Added>
 std::string contract_header(const Columns& columns, const Added& added) {
   std::string line;
-  for (const auto c : columns) line += std::string(line.empty() ? "" : ",") + std::string(c);
-  for (const auto c : added) line += "," + std::string(c);
+  for (const auto c : columns) {
+    if (!line.empty()) line += ',';
+    line += c;
+  }
+  for (const auto c : added) {
+    line += ',';
+    line += c;
+  }
   return line;
 }
 
