@@ -2,11 +2,11 @@
 #include "quadmc/analysis/cell_statistics.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -14,8 +14,8 @@
 namespace quadmc {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using quadmc::test_support::eps;
+using test_support::nan;
 
 TEST(CellStatistics, HandComputedFourRepetitions) {
   // I = 1; errors 0.1, −0.2, 0, 0.3; every std_error 0.1, so the 95% interval is ±0.19600.

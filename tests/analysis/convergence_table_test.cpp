@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 
 #include "series_builder.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,7 @@ using test::cell_at;
 using test::repetition;
 using test::series_of;
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
 // A deterministic midpoint-like series: value = I + 0.1·N⁻² + a rounding floor of 4e-16 that
 // alternates in sign, N = 2^1 … 2^28, cells given in reverse order to check the sort.

@@ -2,11 +2,11 @@
 #include "quadmc/analysis/estimate_reliability.hpp"
 
 #include "series_builder.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace quadmc {
@@ -17,7 +17,7 @@ using test::monte_carlo_theory;
 using test::repetition;
 using test::series_of;
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
 // Cells at N = 4^k of R repetitions with errors `errors[r]`·ê and the estimate ê = 1/N.
 convergence_series with_estimates(std::string integrand, std::string method, smoothness cls,

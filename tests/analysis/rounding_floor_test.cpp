@@ -4,6 +4,7 @@
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/rng.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,7 @@
 namespace quadmc {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 std::vector<double> doubling_ladder(int first, int last) {
   std::vector<double> n;

@@ -3,15 +3,14 @@
 #include "quadmc/analysis/theoretical_rate.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
-
-#include <limits>
 
 namespace quadmc {
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
 integrand_class of(smoothness cls, std::size_t s, double alpha = nan) {
   return integrand_class{cls, s, alpha};

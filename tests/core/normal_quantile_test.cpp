@@ -1,6 +1,7 @@
 // Tests for core/normal_quantile.hpp: the one Φ⁻¹(0.975) of the suite against Boost.Math and
 // against Φ itself, and the quantile's argument checks.
 #include "quadmc/core/normal_quantile.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 #include <boost/math/distributions/normal.hpp>
@@ -14,7 +15,7 @@ namespace {
 
 using namespace quadmc;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 static_assert(normal_quantile_975() > 1.95 && normal_quantile_975() < 1.97,
               "usable in constant expressions");

@@ -15,6 +15,7 @@
 // reference is exact to well under 0.001 ulp, which is all the ulp counts below need; summing
 // 10⁸ terms in multiprecision instead would take minutes.
 #include "quadmc/core/summation.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,7 @@ namespace {
 
 using mp = boost::multiprecision::cpp_bin_float_50;
 
-constexpr double u = std::numeric_limits<double>::epsilon() / 2;  // unit roundoff 2^-53
+using quadmc::test_support::unit_roundoff;  // u = 2^-53
 
 double basel_term(std::uint64_t k) {
   const double d = static_cast<double>(k);
@@ -112,7 +113,7 @@ TEST(PairwiseSum, BaselSeriesOfTenMillionTermsIsWithinItsErrorBound) {
   // 3.1 ulp.
   const int levels = std::bit_width((n + 127) / 128) + 1 + 18;
   const double pairwise_bound_ulps =
-      levels * u * static_cast<double>(reference) / ulp_at(reference);
+      levels * unit_roundoff * static_cast<double>(reference) / ulp_at(reference);
   EXPECT_LE(pairwise_ulps, pairwise_bound_ulps) << "pairwise_sum over n = " << n;
   EXPECT_LE(compensated_ulps, 2.0) << "neumaier_sum over n = " << n;
   // Naive summation errs by 4377 ulp on these 10⁷ terms: over 1000 times what both others do.
@@ -132,7 +133,7 @@ TEST(PairwiseSum, BaselSeriesOfTenMillionTermsIsWithinItsErrorBound) {
     begin = end;
   }
   EXPECT_LE(error_in_ulps(merged.value(), reference),
-            4 * u * static_cast<double>(reference) / ulp_at(reference))
+            4 * unit_roundoff * static_cast<double>(reference) / ulp_at(reference))
       << "neumaier_sum merged from uneven chunks, n = " << n;
 }
 

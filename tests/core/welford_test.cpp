@@ -22,16 +22,16 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "quadmc/core/rng.hpp"
+#include "support/floating_point.hpp"
 
 namespace {
 
 using mp = boost::multiprecision::cpp_bin_float_50;
 
-constexpr double u = std::numeric_limits<double>::epsilon() / 2;  // unit roundoff 2^-53
+using quadmc::test_support::unit_roundoff;  // u = 2^-53
 
 struct exact_moments {
   double mean;
@@ -79,7 +79,8 @@ TEST(Welford, MergedUnevenChunksMatchOnePassAndTheExactMoments) {
   ASSERT_EQ(merged.count(), x.size());
   ASSERT_EQ(one_pass.count(), x.size());
 
-  const double tolerance = 7 * std::sqrt(static_cast<double>(x.size())) * u;  // see file comment
+  const double tolerance =
+      7 * std::sqrt(static_cast<double>(x.size())) * unit_roundoff;  // see file comment
   EXPECT_LE(relative_error(one_pass.mean(), exact.mean), tolerance) << "one pass, seed " << seed;
   EXPECT_LE(relative_error(one_pass.variance(), exact.variance), tolerance)
       << "one pass, seed " << seed;
@@ -134,9 +135,10 @@ TEST(Welford, HugeMeanTinyVarianceDefeatsTheTextbookFormulaButNotWelford) {
   // order √n·κ·u ≈ 6e-6 (worst case n·κ·u ≈ 4e-4). Measured: 3e-10 against 1055 for the textbook.
   const double kappa = exact_mean / std::sqrt(exact_variance);
   EXPECT_GT(relative_error(textbook, exact_variance), 1.0) << "textbook variance " << textbook;
-  EXPECT_LE(relative_error(w.variance(), exact_variance), std::sqrt(double{n}) * kappa * u)
+  EXPECT_LE(relative_error(w.variance(), exact_variance),
+            std::sqrt(double{n}) * kappa * unit_roundoff)
       << "welford variance " << w.variance() << ", exact " << exact_variance;
-  EXPECT_LE(relative_error(w.mean(), exact_mean), 7 * std::sqrt(double{n}) * u)
+  EXPECT_LE(relative_error(w.mean(), exact_mean), 7 * std::sqrt(double{n}) * unit_roundoff)
       << "welford mean " << w.mean() << ", exact " << exact_mean;
 }
 

@@ -5,6 +5,7 @@
 
 #include "quadmc/functions/catalogue.hpp"
 #include "reference_quadrature.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,7 @@
 namespace quadmc {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 constexpr double eps_float = std::numeric_limits<float>::epsilon();
 
 template <class F>

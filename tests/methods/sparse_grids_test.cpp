@@ -4,18 +4,18 @@
 // and error estimate on smooth, C0 and discontinuous families.
 #include "quadmc/methods/registry.hpp"
 #include "quadmc/rules/smolyak_grid.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <iostream>
-#include <limits>
 
 namespace quadmc {
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
 repetition_result run_once(const method& m, const any_integrand& f, const integrand_params& p,
                            std::uint64_t N, cell_control control = cell_control::fixed_size,

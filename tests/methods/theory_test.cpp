@@ -2,16 +2,15 @@
 // docs/theory.md#rate-table: the table the suite's "theory" column comes from.
 #include "quadmc/core/errors.hpp"
 #include "quadmc/methods/registry.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
-
-#include <limits>
 
 namespace quadmc {
 namespace {
 
 constexpr double tight = 1e-15;
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
 // Options a method needs to exist at all (importance has no default warp).
 option_table required_options(std::string_view method) {

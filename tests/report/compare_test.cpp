@@ -6,15 +6,15 @@
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "support/floating_point.hpp"
+#include "support/temporary_directory.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -28,20 +28,9 @@ using test::rule_theory;
 using test::series_of;
 
 namespace fs = std::filesystem;
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
-struct temporary_directory {
-  fs::path path;
-  temporary_directory() {
-    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
-    path = fs::temp_directory_path() /
-           fmt::format("quadmc_compare_{}_{}", tick, std::random_device{}());
-  }
-  ~temporary_directory() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using test_support::temporary_directory;
 
 // A midpoint series with error c·N^rate (exact power law: CI half-width ~0) and time 1e-8·N,
 // plus a Monte Carlo series with rate −1/2.
@@ -66,7 +55,7 @@ void write_folder(const fs::path& folder, double midpoint_rate, double time_fact
 }
 
 TEST(Compare, IdenticalFoldersPass) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   write_folder(dir.path / "a", -2.0, 1.0);
   write_folder(dir.path / "b", -2.0, 1.0);
   const compare_result r = compare_results(dir.path / "a", dir.path / "b", 0.1);
@@ -93,7 +82,7 @@ TEST(Compare, IdenticalFoldersPass) {
 }
 
 TEST(Compare, ShallowerSlopeIsARegression) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   write_folder(dir.path / "a", -2.0, 1.0);
   write_folder(dir.path / "b", -1.5, 2.0);  // midpoint got shallower (−2 → −1.5) and slower
   const compare_result r = compare_results(dir.path / "a", dir.path / "b", 0.1);
@@ -142,7 +131,7 @@ void write_jump_folder(const fs::path& folder, double rate, double scale) {
 }
 
 TEST(Compare, EnvelopeSeriesAreJudgedByTheirVerdict) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   write_jump_folder(dir.path / "a", -1.0, 0.3);      // under 0.5/N: within
   write_jump_folder(dir.path / "flat", 0.0, 1e-4);   // slope 0, still under 0.5/N up to 2^12
   write_jump_folder(dir.path / "above", -1.0, 0.6);  // 0.6/N > 0.5/N: above the envelope
@@ -162,7 +151,7 @@ TEST(Compare, EnvelopeSeriesAreJudgedByTheirVerdict) {
 }
 
 TEST(Compare, SmallSlopeChangeWithinToleranceAndMissingSeries) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   write_folder(dir.path / "a", -2.0, 1.0);
   write_folder(dir.path / "b", -1.95, 1.0);  // 0.05 shallower: within the 0.1 tolerance
   EXPECT_FALSE(compare_results(dir.path / "a", dir.path / "b", 0.1).regression);
@@ -195,7 +184,7 @@ void write_series(const fs::path& folder, const std::vector<convergence_series>&
 TEST(Compare, NothingToCompareIsIncomparableNotAPass) {
   // Regression: an empty B, another scene, or B without the fits A had gave "no regression",
   // a silent pass of the CI gate.
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   const auto mid = power_series("f", "midpoint", -2.0, 8);
   const auto simpson = power_series("f", "simpson", -4.0, 8);
   write_series(dir.path / "a", {mid, simpson});
@@ -233,7 +222,7 @@ TEST(Compare, NothingToCompareIsIncomparableNotAPass) {
 }
 
 TEST(Compare, NewSeriesInBAndFitsNewInBAreFine) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   const auto mid = power_series("f", "midpoint", -2.0, 8);
   write_series(dir.path / "a", {mid, power_series("f", "simpson", -4.0, 2)});  // simpson: no fit
   write_series(dir.path / "b", {mid, power_series("f", "simpson", -4.0, 8),
@@ -246,7 +235,7 @@ TEST(Compare, NewSeriesInBAndFitsNewInBAreFine) {
 }
 
 TEST(Compare, ARegressionOutranksIncomparabilityAndTheReasonNamesBoth) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_compare"};
   write_series(dir.path / "a",
                {power_series("f", "midpoint", -2.0, 8), power_series("f", "simpson", -4.0, 8)});
   write_series(dir.path / "b", {power_series("f", "midpoint", -1.0, 8)});

@@ -2,11 +2,11 @@
 #include "quadmc/report/markdown_report.hpp"
 
 #include "../analysis/series_builder.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -20,9 +20,9 @@ using test::repetition;
 using test::rule_theory;
 using test::series_of;
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
-std::vector<convergence_table> sample_tables() {
+std::vector<convergence_table> markdown_sample_tables() {
   convergence_series rule = series_of("genz|odd", 1, "trapezoid", smoothness::analytic, 2.0,
                                       rule_theory(2, smoothness::analytic));
   convergence_series mc = series_of("genz|odd", 1, "plain_mc", smoothness::analytic, 2.0,
@@ -251,7 +251,7 @@ TEST(MarkdownReport, DescriptionAndThreadsUsedAreOnThePage) {
   info.description = "  Why this scene exists: **Simpson** against plain MC.\n";
   info.threads = 1;
   info.threads_allowed = 64;
-  const auto tables = sample_tables();
+  const auto tables = markdown_sample_tables();
   const std::string page = render_results_markdown(info, tables);
   // The author's Markdown, trimmed, right under the title.
   EXPECT_EQ(page.rfind("# Results: described\n\nWhy this scene exists: **Simpson** against plain "
@@ -273,7 +273,7 @@ TEST(MarkdownReport, HeaderNamesWhatMadeThePage) {
   info.build.compiler = "GNU 12.2.0 (Release)";
   info.build.simd_levels_available = {"scalar", "sse2", "avx2"};
   info.build.simd_level = "avx2";
-  const std::string page = render_results_markdown(info, sample_tables());
+  const std::string page = render_results_markdown(info, markdown_sample_tables());
   EXPECT_NE(page.find("- quadmc: 0.1.0, commit 0123456789abcdef0123456789abcdef01234567\n"),
             std::string::npos)
       << page;
@@ -286,7 +286,7 @@ TEST(MarkdownReport, HeaderNamesWhatMadeThePage) {
   EXPECT_EQ(page.substr(first, std::string("SIMD level avx2 ").size()), "SIMD level avx2 ");
   EXPECT_EQ(page.find("SIMD level ", first + 1), std::string::npos) << page;
   // A caller that does not know (a library user's own run_info) gets no such lines.
-  const std::string bare = render_results_markdown(run_info{}, sample_tables());
+  const std::string bare = render_results_markdown(run_info{}, markdown_sample_tables());
   EXPECT_EQ(bare.find("- quadmc:"), std::string::npos) << bare;
   EXPECT_EQ(bare.find("SIMD levels available"), std::string::npos) << bare;
 }
@@ -299,7 +299,7 @@ TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   info.build.compiler = "GCC 12.2.0";
   info.run_seconds = 12.5;
   info.skipped = {"simpson s = 6: 7^6 > budget"};
-  const auto tables = sample_tables();
+  const auto tables = markdown_sample_tables();
   const std::string page = render_results_markdown(info, tables);
   EXPECT_EQ(page.rfind("# Results: default\n", 0), 0u);
   EXPECT_NE(page.find("- seed: 42"), std::string::npos);
@@ -352,8 +352,9 @@ TEST(MarkdownReport, ReliabilityTableWhereAMethodHasAnEstimate) {
   EXPECT_NE(page.find("| plain_mc | analytic | 1 | 5 | 10 | 0.500 | 1.000 |"), std::string::npos)
       << page;
   expect_rectangular_tables(page);
-  EXPECT_EQ(render_results_markdown({}, sample_tables()).find("Error-estimate reliability"),
-            std::string::npos);
+  EXPECT_EQ(
+      render_results_markdown({}, markdown_sample_tables()).find("Error-estimate reliability"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -5,16 +5,15 @@
 #include "../analysis/series_builder.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "support/floating_point.hpp"
+#include "support/temporary_directory.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
-#include <random>
 
 namespace quadmc {
 namespace {
@@ -26,22 +25,9 @@ using test::rule_theory;
 using test::series_of;
 
 namespace fs = std::filesystem;
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 
-// A fresh directory under the system temp dir, removed at the end of the test.
-struct temporary_directory {
-  fs::path path;
-  temporary_directory() {
-    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
-    path = fs::temp_directory_path() /
-           fmt::format("quadmc_results_csv_{}_{}", tick, std::random_device{}());
-    fs::create_directories(path);
-  }
-  ~temporary_directory() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using test_support::temporary_directory;
 
 void write(const fs::path& file, const std::string& text) {
   std::ofstream(file, std::ios::binary) << text;
@@ -50,7 +36,7 @@ void write(const fs::path& file, const std::string& text) {
 // Two series: a deterministic rule on a jump (no std_error, coverage empty, an error envelope
 // 0.5/N that its error 0.3/N stays under) with an awkward integrand name, and a Monte Carlo
 // method with coverage and no envelope.
-std::vector<convergence_table> sample_tables() {
+std::vector<convergence_table> csv_sample_tables() {
   convergence_series rule = series_of("step, \"shifted\"", 1, "midpoint", smoothness::discontinuous,
                                       1.0 / 3.0, rule_theory(2, smoothness::discontinuous));
   convergence_series mc = series_of("genz_gaussian", 2, "plain_mc", smoothness::analytic, 0.7,
@@ -73,7 +59,7 @@ std::vector<convergence_table> sample_tables() {
 }
 
 TEST(ResultsCsv, ExactHeaderLines) {
-  const auto tables = sample_tables();
+  const auto tables = csv_sample_tables();
   const std::string conv = convergence_csv_text("default", tables);
   EXPECT_EQ(conv.substr(0, conv.find('\n')),
             "scene,integrand,s,method,N,evaluations,repetitions,reference,estimate_mean,rmse,"
@@ -91,7 +77,7 @@ TEST(ResultsCsv, ExactHeaderLines) {
 }
 
 TEST(ResultsCsv, DeterministicRowHasEmptyCoverageAndFullReference) {
-  const auto tables = sample_tables();
+  const auto tables = csv_sample_tables();
   const std::string conv = convergence_csv_text("default", tables);
   // First data row: the quoted name, N = 4, reference 1/3 to 17 digits, empty std error and
   // coverage.
@@ -105,8 +91,8 @@ TEST(ResultsCsv, DeterministicRowHasEmptyCoverageAndFullReference) {
 }
 
 TEST(ResultsCsv, RoundTripThroughFiles) {
-  const temporary_directory dir;
-  const auto tables = sample_tables();
+  const temporary_directory dir{"quadmc_results_csv", temporary_directory::start::empty};
+  const auto tables = csv_sample_tables();
   write(dir.path / "convergence.csv", convergence_csv_text("default", tables));
   write(dir.path / "slopes.csv", slopes_csv_text("default", tables));
 
@@ -174,7 +160,7 @@ TEST(ResultsCsv, RoundTripThroughFiles) {
 // A VEGAS-like series: every repetition with its own error estimate and χ²/dof and Q; the cell's
 // coverage of its own estimate and the means reach the file and read back bit for bit.
 TEST(ResultsCsv, OwnEstimateCoverageAndChiSquaredRoundTrip) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_csv", temporary_directory::start::empty};
   convergence_series s = series_of("genz_gaussian", 2, "vegas", smoothness::analytic, 0.7,
                                    monte_carlo_theory(smoothness::analytic, 2));
   for (int k = 6; k <= 9; ++k) {
@@ -199,8 +185,8 @@ TEST(ResultsCsv, OwnEstimateCoverageAndChiSquaredRoundTrip) {
     EXPECT_EQ(r.chi2_per_dof, 1.0);
     EXPECT_EQ(r.q_value, 0.4375);
   }
-  // A series without them (sample_tables) leaves the four fields empty.
-  write(dir.path / "convergence.csv", convergence_csv_text("default", sample_tables()));
+  // A series without them (csv_sample_tables) leaves the four fields empty.
+  write(dir.path / "convergence.csv", convergence_csv_text("default", csv_sample_tables()));
   for (const convergence_record& r : read_convergence_csv(dir.path / "convergence.csv")) {
     EXPECT_TRUE(std::isnan(r.estimate_covers));
     EXPECT_TRUE(std::isnan(r.chi2_per_dof));
@@ -208,7 +194,7 @@ TEST(ResultsCsv, OwnEstimateCoverageAndChiSquaredRoundTrip) {
 }
 
 TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_csv", temporary_directory::start::empty};
   write(dir.path / "slopes.csv",
         "extra,scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"
         "floor_points,later\n"
@@ -221,7 +207,7 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
 
   // A convergence.csv without any of the added columns (an older folder) reads with floor =
   // false and no envelope, tolerance, error estimate, coverage of it or χ².
-  const auto tables = sample_tables();
+  const auto tables = csv_sample_tables();
   std::string text = convergence_csv_text("default", tables);
   std::string old;
   std::size_t start = 0;
@@ -248,7 +234,7 @@ TEST(ResultsCsv, ReaderToleratesAddedAndReorderedColumnsAndMissingFloor) {
 }
 
 TEST(ResultsCsv, MissingColumnOrBadNumberNamesFileAndColumn) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_csv", temporary_directory::start::empty};
   const fs::path file = dir.path / "slopes.csv";
   write(file, "scene,integrand,s,method,slope,ci_low,ci_high,verdict,points_used,floor_points\n");
   try {

@@ -5,17 +5,16 @@
 
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
+#include "support/temporary_directory.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
-#include <random>
 
 namespace quadmc {
 namespace {
@@ -28,21 +27,10 @@ using test::series_of;
 
 namespace fs = std::filesystem;
 
-struct temporary_directory {
-  fs::path path;
-  temporary_directory() {
-    const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
-    path = fs::temp_directory_path() /
-           fmt::format("quadmc_results_folder_{}_{}", tick, std::random_device{}());
-  }
-  ~temporary_directory() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using test_support::temporary_directory;
 
 TEST(ResultsFolder, WritesThreeAgreeingFiles) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_folder"};
   convergence_series s =
       series_of("f", 2, "simpson", smoothness::smooth, 1.0, rule_theory(4, smoothness::smooth, 2));
   for (std::uint64_t n : {9u, 25u, 81u, 289u}) {
@@ -86,7 +74,7 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
 // theory −1, which the slope verdict calls shallower) stays under its envelope: slopes.csv and the
 // README both say within_envelope, and the cells' envelopes reach convergence.csv.
 TEST(ResultsFolder, EnvelopeVerdictReachesSlopesCsvAndTheReadme) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_folder"};
   const double c = 0.93750095367431640625;  // 1/2 + 1/4 + 1/8 + 1/16 + 2⁻²⁰
   convergence_series s = series_of("step", 1, "midpoint", smoothness::discontinuous, 1.0 - c,
                                    rule_theory(2, smoothness::discontinuous));
@@ -117,7 +105,7 @@ TEST(ResultsFolder, EnvelopeVerdictReachesSlopesCsvAndTheReadme) {
 }
 
 TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
-  const temporary_directory dir;
+  const temporary_directory dir{"quadmc_results_folder"};
   convergence_series s = series_of("f", 1, "plain_mc", smoothness::smooth, 1.0,
                                    monte_carlo_theory(smoothness::smooth));
   s.cells.push_back(cell_at(16, {repetition(1.1, 0.1, 16, 1e-6)}));

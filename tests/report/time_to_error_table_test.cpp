@@ -5,11 +5,11 @@
 
 #include "../analysis/series_builder.hpp"
 #include "quadmc/report/markdown_report.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,7 +22,7 @@ using test::repetition;
 using test::rule_theory;
 using test::series_of;
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using test_support::nan;
 constexpr double reference = 2.0;  // relative tolerances 1e-3, 1e-6 are errors 2e-3, 2e-6
 
 cell_timing timed(double seconds) {
@@ -55,7 +55,7 @@ convergence_table to_tolerance(const std::string& method, double error3, double 
   return analyse_convergence(series);
 }
 
-std::vector<convergence_table> sample_tables() {
+std::vector<convergence_table> time_to_error_sample_tables() {
   std::vector<convergence_table> tables;
   // Meets 1e-3 (error 1e-3 ≤ 2e-3) in 1e-5 s; misses 1e-6 (error 1e-5 > 2e-6).
   tables.push_back(to_tolerance("genz_malik", 1e-3, 1e-5, 1e-5, 4e-5));
@@ -80,7 +80,7 @@ std::vector<convergence_table> sample_tables() {
 }
 
 TEST(TimeToErrorTable, EachMethodsTimeAndEvaluationsToTheTarget) {
-  const std::vector<convergence_table> tables = sample_tables();
+  const std::vector<convergence_table> tables = time_to_error_sample_tables();
   const std::vector<time_to_error_cell> cells = time_to_error_cells(tables);
   ASSERT_EQ(cells.size(), 2u);
   const time_to_error_cell& loose = cells[0];
@@ -125,7 +125,7 @@ TEST(TimeToErrorTable, EachMethodsTimeAndEvaluationsToTheTarget) {
 }
 
 TEST(TimeToErrorTable, OnThePageWithItsSummary) {
-  const std::vector<convergence_table> tables = sample_tables();
+  const std::vector<convergence_table> tables = time_to_error_sample_tables();
   const std::string page = render_results_markdown(run_info{}, tables);
   EXPECT_NE(page.find("## Time to error"), std::string::npos);
   EXPECT_NE(page.find("| genz_x | 2 | 0.001 ·\\|I\\| | 2.000e-03 | analytic |"), std::string::npos)
@@ -141,7 +141,7 @@ TEST(TimeToErrorTable, OnThePageWithItsSummary) {
 }
 
 TEST(TimeToErrorTable, NoTableWithoutPeersOrWithoutTolerances) {
-  std::vector<convergence_table> tables = sample_tables();
+  std::vector<convergence_table> tables = time_to_error_sample_tables();
   // Without the peer: nothing to compare with.
   std::vector<convergence_table> own{tables[0], tables[2]};
   EXPECT_TRUE(time_to_error_cells(own).empty());

@@ -3,6 +3,7 @@
 #include "quadmc/rules/dimension_adaptive_sparse_grid.hpp"
 
 #include "quadmc/rules/smolyak_grid.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace {
 
 using namespace quadmc;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 const nested_rule& cc() {
   return nested_rule_table(nested_rule_kind::clenshaw_curtis);

@@ -11,6 +11,7 @@
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 #include <boost/math/differentiation/autodiff.hpp>
@@ -18,7 +19,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -26,7 +26,7 @@
 namespace quadmc {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // The coefficients c_j of ∫f − Q(f) = Σ c_j·H^j·[f⁽ʲ⁻¹⁾(1) − f⁽ʲ⁻¹⁾(0)] in the convention of
 // docs/theory.md#euler-maclaurin-expansion (H the width of the rule's panel: a pair for Simpson)

@@ -3,6 +3,7 @@
 #include "jump_integrand.hpp"
 #include "log_log_slope.hpp"
 #include "quadmc/rules/tensor_product.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // m nodes integrate degree 2m − 1 exactly: xᵈ + x^(d−1) on [0, 1] with d = 2m − 1, ∫ = 1/(d + 1)
 // + 1/d. Bound: 4·n ulp of (b − a)·max|f| = 2 (the node tables themselves are correctly rounded

@@ -1,6 +1,7 @@
 #include "quadmc/rules/genz_malik_rule.hpp"
 
 #include "quadmc/core/rng.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -8,14 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <set>
 #include <span>
 #include <vector>
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // A polynomial Σ_m c_m Π_j x_j^{k_mj} with its exact integral over a box.
 struct polynomial {

@@ -9,19 +9,19 @@
 #include "quadmc/functions/indicators.hpp"
 #include "quadmc/rules/romberg.hpp"
 #include "quadmc/rules/tensor_product.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace quadmc {
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // The sums of a rule on [0, 1] with |f| ≤ 1 add terms of total magnitude ≤ 1: pairwise summation
 // errs by ≤ ε·log₂(nodes) (summation.hpp), the weights and the reference 1 − c by an ε each; 32ε

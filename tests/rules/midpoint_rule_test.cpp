@@ -5,17 +5,17 @@
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
 #include "reference_integrands.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // Exact for linear f: the midpoint of each panel is its centroid. f = 3x − 2 on [−1, 2]:
 // ∫ = [1.5x² − 2x] = (6 − 4) − (1.5 + 2) = −1.5. Bound: 4·n ulp of (b − a)·max|f| = 3·5.

@@ -2,6 +2,7 @@
 // nesting, weights (against quadrule's independent Clenshaw–Curtis code), degree of exactness,
 // and the by-node tables of weights and differences against the by-level ones.
 #include "quadmc/rules/nested_rule.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +10,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -21,7 +21,7 @@ namespace {
 
 using namespace quadmc;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 constexpr nested_rule_kind all_kinds[] = {nested_rule_kind::clenshaw_curtis,
                                           nested_rule_kind::gauss_patterson,
                                           nested_rule_kind::trapezoid};

@@ -3,18 +3,18 @@
 #include "jump_integrand.hpp"
 #include "log_log_slope.hpp"
 #include "quadmc/rules/tensor_product.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // Exact for constants only (first order). f = 2.5 on [−1, 2]: ∫ = 7.5, within 4·n ulp of 7.5.
 TEST(RectangleRule, ExactForConstants) {

@@ -1,6 +1,7 @@
 #include "quadmc/rules/romberg.hpp"
 
 #include "reference_integrands.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // Converges to near machine precision on every smooth reference integrand, within the default
 // budget, and says so.

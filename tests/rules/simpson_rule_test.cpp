@@ -5,19 +5,19 @@
 #include "quadmc/rules/midpoint_rule.hpp"
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <numbers>
 #include <vector>
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // Exact for cubics (the x³ error term integrates to zero over each symmetric panel pair).
 // f = x³ − 2x² + x − 5 on [−1, 2]: ∫ = [x⁴/4 − 2x³/3 + x²/2 − 5x] = (4 − 16/3 + 2 − 10) −

@@ -7,6 +7,7 @@
 #include "quadmc/rules/smolyak_grid.hpp"
 
 #include "quadmc/rules/weighted_sum.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -28,7 +29,7 @@ namespace {
 
 using namespace quadmc;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 const nested_rule& cc() {
   return nested_rule_table(nested_rule_kind::clenshaw_curtis);

@@ -10,11 +10,11 @@
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
 #include "reference_weighted_sum.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -25,9 +25,7 @@ namespace {
 
 using namespace quadmc;
 
-std::uint64_t bits(double v) {
-  return std::bit_cast<std::uint64_t>(v);
-}
+using quadmc::test_support::bits;
 
 // Point p of the tensor grid of q in s dimensions, straight from the definition: the base-m
 // digits of p (last axis fastest), t_j = node(k_j), w = w_{k_1}·…·w_{k_s} multiplied left to

@@ -10,10 +10,10 @@
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/tensor_product_grid.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,9 +33,7 @@ class simd_level_guard {
   simd_level saved_;
 };
 
-std::uint64_t bits(double v) {
-  return std::bit_cast<std::uint64_t>(v);
-}
+using quadmc::test_support::bits;
 
 // A box with a different offset and width on every axis, so that a coordinate written to the
 // wrong axis or the wrong point cannot go unnoticed.

@@ -6,6 +6,7 @@
 #include "quadmc/rules/midpoint_rule.hpp"
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,7 @@
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // exp(x₁ + … + x_s) on a box: smooth, not a polynomial, and a product of 1D factors, so
 // ∫ = Π(e^{b_j} − e^{a_j}) in closed form.

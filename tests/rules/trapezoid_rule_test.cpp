@@ -3,6 +3,7 @@
 #include "jump_integrand.hpp"
 #include "log_log_slope.hpp"
 #include "quadmc/rules/tensor_product.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,7 @@
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // Exact for linear f (the chord is the function). f = 3x − 2 on [−1, 2], ∫ = −1.5 (see the
 // midpoint test). Bound: 4·n ulp of (b − a)·max|f| = 3·5.

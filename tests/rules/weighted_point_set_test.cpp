@@ -8,6 +8,7 @@
 #include "quadmc/rules/simpson_rule.hpp"
 #include "quadmc/rules/tensor_product_grid.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <span>
 #include <vector>
 
@@ -32,7 +32,7 @@ static_assert(!box_mapped_point_set<extrapolated_midpoint>);
 static_assert(weighted_point_set<fibonacci_lattice>);
 static_assert(!weighted_point_set<simpson_rule::node_set>);  // a 1D node set is not a point set
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 
 // The unit cube's corners go to the box's corners; the widths of these boxes and the sums below
 // are exact in binary, so the map is exact too.

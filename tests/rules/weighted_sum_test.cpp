@@ -11,11 +11,11 @@
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/rules/tensor_product_grid.hpp"
 #include "reference_weighted_sum.hpp"
+#include "support/floating_point.hpp"
 #include "throws_with.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -31,14 +31,12 @@ using namespace quadmc;
 using quadmc::testing::extrapolated_midpoint;
 using quadmc::testing::fibonacci_lattice;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using quadmc::test_support::eps;
 constexpr double pi = std::numbers::pi;
 constexpr summation all_accumulators[] = {summation::pairwise, summation::neumaier,
                                           summation::naive, summation::long_double};
 
-std::uint64_t bits(double v) {
-  return std::bit_cast<std::uint64_t>(v);
-}
+using quadmc::test_support::bits;
 
 // f(x) = g(x) on a box, one point at a time.
 template <class G>

@@ -15,19 +15,19 @@ namespace {
 using namespace quadmc;
 using std::numbers::pi;
 
-constexpr std::uint64_t samples = 1000000;
-constexpr double alpha = 1e-4;  // false-alarm probability of each chi-square test
+using test_support::warp_alpha;
+using test_support::warp_samples;
 
 // Histogram in polar cells (r, θ) ∈ [0,1] × [0, 2π), 20 × 20; expected probability of a cell =
 // ∫∫ pdf(r cos θ, r sin θ)·r dr dθ (Jacobian r).
 template <class W>
 test_support::chi_square_result polar_histogram_test(const W& w, std::uint64_t seed) {
   constexpr std::size_t nr = 20, nt = 20;
-  std::vector<double> u(2 * samples);
-  independent_points(2, samples, seed, 2).generate(0, u);
+  std::vector<double> u(2 * warp_samples);
+  independent_points(2, warp_samples, seed, 2).generate(0, u);
   std::vector<double> counts(nr * nt, 0.0);
   double x[2];
-  for (std::uint64_t i = 0; i < samples; ++i) {
+  for (std::uint64_t i = 0; i < warp_samples; ++i) {
     w.sample(std::span<const double>(&u[2 * i], 2), x);
     const double r = std::hypot(x[0], x[1]);
     double theta = std::atan2(x[1], x[0]);
@@ -42,7 +42,7 @@ test_support::chi_square_result polar_histogram_test(const W& w, std::uint64_t s
         const double p[2] = {r * std::cos(t), r * std::sin(t)};
         return w.pdf(std::span<const double>(p, 2)) * r;
       },
-      samples, alpha);
+      warp_samples, warp_alpha);
 }
 
 TEST(UniformDiskWarp, PdfIntegratesToOne) {

@@ -16,8 +16,8 @@ namespace {
 using namespace quadmc;
 using std::numbers::pi;
 
-constexpr std::uint64_t samples = 1000000;
-constexpr double alpha = 1e-4;  // false-alarm probability of each chi-square test
+using test_support::warp_alpha;
+using test_support::warp_samples;
 
 // Direction of (z, φ): dω = dz dφ, so the density in (z, φ) is the solid-angle pdf itself.
 double pdf_at(const auto& w, double z, double phi) {
@@ -37,12 +37,12 @@ double pdf_integral(const W& w) {
 template <class W>
 test_support::chi_square_result histogram_test(const W& w, std::uint64_t seed) {
   constexpr std::size_t nz = 20, np = 20;
-  std::vector<double> u(2 * samples);
-  independent_points(2, samples, seed, 3).generate(0, u);
+  std::vector<double> u(2 * warp_samples);
+  independent_points(2, warp_samples, seed, 3).generate(0, u);
   std::vector<double> counts(nz * np, 0.0);
   double d[3];
   double worst_norm_error = 0.0;
-  for (std::uint64_t i = 0; i < samples; ++i) {
+  for (std::uint64_t i = 0; i < warp_samples; ++i) {
     w.sample(std::span<const double>(&u[2 * i], 2), d);
     worst_norm_error =
         std::max(worst_norm_error, std::abs(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - 1.0));
@@ -56,7 +56,7 @@ test_support::chi_square_result histogram_test(const W& w, std::uint64_t seed) {
   EXPECT_LE(worst_norm_error, 8 * std::numeric_limits<double>::epsilon());
   return test_support::chi_square_test(
       counts, nz, np, 0.0, 1.0, 0.0, 2 * pi, [&](double z, double p) { return pdf_at(w, z, p); },
-      samples, alpha);
+      warp_samples, warp_alpha);
 }
 
 TEST(UniformHemisphereWarp, PdfIntegratesToOneAndSamplesFollowIt) {

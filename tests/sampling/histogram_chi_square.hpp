@@ -13,10 +13,16 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
 namespace quadmc::test_support {
+
+// Every warp test draws this many samples and runs each of its chi-square tests at this
+// false-alarm probability (the suite's bound, 1e-4 per test).
+inline constexpr std::uint64_t warp_samples = 1000000;
+inline constexpr double warp_alpha = 1e-4;
 
 struct chi_square_result {
   double statistic = 0.0;

@@ -15,13 +15,12 @@ namespace {
 
 using namespace quadmc;
 
-constexpr std::uint64_t samples = 1000000;
-// False-alarm probability of every chi-square test in this file.
-constexpr double alpha = 1e-4;
+using test_support::warp_alpha;
+using test_support::warp_samples;
 
 std::vector<double> uniforms(std::uint64_t seed) {
-  std::vector<double> u(samples);
-  independent_points(1, samples, seed, 1).generate(0, u);
+  std::vector<double> u(warp_samples);
+  independent_points(1, warp_samples, seed, 1).generate(0, u);
   return u;
 }
 
@@ -40,8 +39,8 @@ test_support::chi_square_result histogram_test(const W& w, double upper, std::si
     }
   }
   return test_support::chi_square_test(
-      counts, bins, 1, 0.0, upper, 0.0, 1.0, [&](double x, double) { return w.pdf(x); }, samples,
-      alpha, tail, 1.0 - w.cdf(upper));
+      counts, bins, 1, 0.0, upper, 0.0, 1.0, [&](double x, double) { return w.pdf(x); },
+      warp_samples, warp_alpha, tail, 1.0 - w.cdf(upper));
 }
 
 TEST(PowerWarp, PdfIntegratesToOne) {

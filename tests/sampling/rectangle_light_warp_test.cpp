@@ -15,8 +15,8 @@ using namespace quadmc;
 
 // Faces down (normal = edge_u × edge_v ∝ (0, 0.2, −1)), towards points below it.
 const rectangle light{{-0.5, 0.2, 1.0}, {0.0, 1.0, 0.2}, {1.0, 0.0, 0.0}};
-constexpr std::uint64_t samples = 1000000;
-constexpr double alpha = 1e-4;  // false-alarm probability of the chi-square test
+using test_support::warp_alpha;
+using test_support::warp_samples;
 
 using gk = boost::math::quadrature::gauss_kronrod<double, 21>;
 
@@ -64,12 +64,12 @@ TEST(RectangleLightWarp, SolidAnglePdfIntegratesToOne) {
 // Histogram in the light's (s, t) parameters recovered with the dual basis (edges ⊥).
 TEST(RectangleLightWarp, SamplesAreUniformOnTheLight) {
   const rectangle_light_warp w(light);
-  std::vector<double> u(2 * samples);
-  independent_points(2, samples, 4, 4).generate(0, u);
+  std::vector<double> u(2 * warp_samples);
+  independent_points(2, warp_samples, 4, 4).generate(0, u);
   constexpr std::size_t ns = 20, nt = 20;
   std::vector<double> counts(ns * nt, 0.0);
   const double jacobian = w.area();
-  for (std::uint64_t i = 0; i < samples; ++i) {
+  for (std::uint64_t i = 0; i < warp_samples; ++i) {
     double x[3];
     w.sample(std::span<const double>(&u[2 * i], 2), x);
     const vec3 q = vec3{x[0], x[1], x[2]} - light.corner;
@@ -87,7 +87,7 @@ TEST(RectangleLightWarp, SamplesAreUniformOnTheLight) {
         const double x[3] = {p.x, p.y, p.z};
         return w.pdf(std::span<const double>(x, 3)) * jacobian;
       },
-      samples, alpha);
+      warp_samples, warp_alpha);
   EXPECT_TRUE(r.passes()) << "χ² = " << r.statistic << " > " << r.critical;
 }
 

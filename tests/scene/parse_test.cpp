@@ -4,6 +4,7 @@
 
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
+#include "scene_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,14 +28,7 @@ scene parse(std::string_view text) {
   return parse_scene(text, "scene.toml");
 }
 
-// 1-based line of the first occurrence of `needle`: the line an error about that key must name.
-std::uint32_t line_of(std::string_view text, std::string_view needle) {
-  const auto at = text.find(needle);
-  EXPECT_NE(at, std::string_view::npos) << needle;
-  std::uint32_t line = 1;
-  for (std::size_t i = 0; i < at; ++i) line += text[i] == '\n' ? 1 : 0;
-  return line;
-}
+using test_support::line_of;
 
 // Parses `text`, expects a scene_error at `line` about `key`, and returns its message.
 std::string expect_error(std::string_view text, std::uint32_t line, std::string_view key) {
@@ -71,13 +65,7 @@ repetitions = 8
 N = [16, 64]
 )";
 
-std::string replace(std::string_view text, std::string_view from, std::string_view to) {
-  std::string s(text);
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  s.replace(at, from.size(), to);
-  return s;
-}
+using test_support::replace;
 
 TEST(ParseScene, MinimalSceneFileGivesTheExpectedStruct) {
   const scene sc = parse_scene_file(QUADMC_SOURCE_DIR "/bench/scenes/minimal.toml");

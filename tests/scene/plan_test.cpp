@@ -5,6 +5,7 @@
 #include "quadmc/core/rng.hpp"
 #include "quadmc/functions/genz.hpp"
 #include "quadmc/scene/parse.hpp"
+#include "scene_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,13 +23,7 @@ plan plan_of(std::string_view text) {
   return make_plan(parse_scene(text, "scene.toml"));
 }
 
-std::string replace(std::string_view text, std::string_view from, std::string_view to) {
-  std::string s(text);
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
+using test_support::replace;
 
 std::vector<plan_cell> cells_of(const plan& p, std::string_view label) {
   std::vector<plan_cell> out;
@@ -45,11 +40,7 @@ const plan_skip* find_skip(const plan& p, std::string_view what) {
   return nullptr;
 }
 
-std::uint32_t line_of(std::string_view text, std::string_view needle) {
-  const auto at = text.find(needle);
-  EXPECT_NE(at, std::string_view::npos) << needle;
-  return 1 + static_cast<std::uint32_t>(std::count(text.begin(), text.begin() + at, '\n'));
-}
+using test_support::line_of;
 
 void expect_plan_error(std::string_view text, std::uint32_t line, std::string_view key,
                        std::string_view fragment) {

@@ -8,6 +8,8 @@
 // docs/references.md does not list, naming the file and the line. Anchors are GitHub heading
 // slugs (lower case, spaces to hyphens, other punctuation dropped); docs/ headings are ASCII so
 // that the slug is predictable. Links no layer of the library: it only reads files.
+#include "source_tree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -24,9 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path source_dir() {
-  return fs::path(QUADMC_SOURCE_DIR);
-}
+using quadmc::test_support::source_dir;
 
 std::vector<std::string> lines_of(const fs::path& p) {
   std::ifstream in(p);
@@ -89,11 +89,7 @@ std::string where(const fs::path& p, std::size_t line) {
   return fs::relative(p, source_dir()).string() + ":" + std::to_string(line + 1);
 }
 
-std::string listed(const std::vector<std::string>& v) {
-  std::string out;
-  for (const std::string& s : v) out += "\n  " + s;
-  return out;
-}
+using quadmc::test_support::listed;
 
 // The files that cite: the library, the benchmarks and the tests (this file excepted: it spells
 // the forbidden forms out).

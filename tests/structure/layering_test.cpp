@@ -7,6 +7,8 @@
 // links; only reading the includes finds it. The table is the transitive closure of the direct
 // dependencies written here, which must match the DEPS of lib/CMakeLists.txt (checked below).
 // This executable links no layer of the library: it only reads files under QUADMC_SOURCE_DIR.
+#include "source_tree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,9 +67,7 @@ std::string joined(const std::set<std::string>& names) {
   return out;
 }
 
-fs::path source_dir() {
-  return fs::path(QUADMC_SOURCE_DIR);
-}
+using quadmc::test_support::source_dir;
 
 struct include_edge {
   std::string file;  // relative to the source directory
@@ -142,11 +142,7 @@ std::vector<std::string> violations(const std::vector<include_edge>& edges,
   return out;
 }
 
-std::string listed(const std::vector<std::string>& lines) {
-  std::string out;
-  for (const std::string& l : lines) out += "\n  " + l;
-  return out;
-}
+using quadmc::test_support::listed;
 
 TEST(Layering, EveryLibraryFolderIsALayerOfTheTable) {
   const layer_graph allowed = transitive_closure(direct_dependencies);
