@@ -4,6 +4,8 @@
 #   ./run.sh bench      install what is missing, build the command (Release), run the default scene → results/
 #                       (extra arguments go to `quadmc run`, e.g. --out DIR, --threads T)
 #   ./run.sh test       install what is missing, build, run every test with CTest
+#   ./run.sh benchmarks install what is missing, build the Google Benchmark binaries and bench/peers
+#                       (Release, beside README command 1's command) → build/release/bench/
 #   ./run.sh sanitize   the same tests (the command's end-to-end runs included) under ASan + UBSan
 #   ./run.sh format     check that every C++ file is clang-format clean
 #   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
@@ -97,10 +99,15 @@ case "${1:-}" in
     install_missing "${BENCH_PACKAGES[@]}"
     cmake --preset release >/dev/null
     # Only what the scene runs: the command. The Google Benchmark binaries and bench/peers are
-    # `cmake --build --preset release` (README, Benchmarks); the test preset builds them too.
+    # `./run.sh benchmarks` (README, Benchmarks).
     cmake --build --preset release --target quadmc_cli
     shift
     ./build/release/bench/quadmc run bench/scenes/default.toml "$@"
+    ;;
+  benchmarks)
+    install_missing "${BENCH_PACKAGES[@]}"
+    cmake --preset release >/dev/null
+    cmake --build --preset release
     ;;
   test)
     install_missing "${TEST_PACKAGES[@]}"
@@ -150,7 +157,7 @@ case "${1:-}" in
     tests/package/check_package.sh "${debs[0]}" build/package-check
     ;;
   *)
-    echo "usage: ./run.sh bench | test | sanitize | format | fuzz [SECONDS] | consumer | package | deps | packages" >&2
+    echo "usage: ./run.sh bench | test | benchmarks | sanitize | format | fuzz [SECONDS] | consumer | package | deps | packages" >&2
     exit 2
     ;;
 esac

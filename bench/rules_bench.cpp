@@ -10,7 +10,7 @@
 // be judged), not for accuracy: that is tested in tests/rules/. Counters: evals_per_second
 // (Google Benchmark kIsRate over all iterations), abs_error against the exact integral, and
 // evaluations (the points of one iteration). Run only the equal-N comparison with
-//   build/test/bench/rules_bench --benchmark_filter=equal_n
+//   build/release/bench/rules_bench --benchmark_filter=equal_n
 // Source of the kernel: lib/include/quadmc/rules/tensor_product.hpp, smolyak_grid.hpp.
 #include <benchmark/benchmark.h>
 
