@@ -20,11 +20,14 @@
 //    [Higham 2002, §4.2]) and does not grow with N (Boost's naive_monte_carlo explains why a plain
 //    running sum's εN error eventually exceeds σ/√N). Per-sample Welford updates cost a division
 //    each; this costs none.
-//  - Buffers are allocated once per chunk; the batch function runs once per 256 points.
+//  - Buffers are allocated once per chunk; the batch function runs once per 256 points, called
+//    through a function_ref (core/function_ref.hpp) from the kernel, which is compiled once
+//    (lib/src/estimators/sample_mean.cpp) rather than once per point set and estimator.
 #pragma once
 
 #include "quadmc/core/batching.hpp"
-#include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/core/chunk_exchange.hpp"
+#include "quadmc/core/function_ref.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/core/welford.hpp"
 #include "quadmc/estimators/estimate.hpp"
@@ -278,34 +281,36 @@ class sample_statistics {
 template <>
 inline constexpr bool shareable_chunk_result<sample_statistics> = true;
 
+namespace detail {
+
+// Writes the values Y of one batch: points first … first + k − 1 of the set into u (row-major,
+// k·s), then Y at them into y (k values). Called once per batch of batch_points points, so that
+// the chunked, parallel kernel below is compiled once, in the library, while the set's generate()
+// and the estimator's batch function stay inlined into the caller's batch (as in
+// rules/weighted_sum.hpp, batch_source; docs/design.md, "Build time").
+using sample_batch_source =
+    function_ref<void(std::uint64_t first, std::span<double> u, std::span<double> y)>;
+
+// The kernel proper: the mean of Y over n points of dimension s, chunked for `structure`'s
+// groups, folded in chunk order (lib/src/estimators/sample_mean.cpp).
+estimate sample_mean_of_batches(std::uint64_t n, std::size_t s, variance_structure structure,
+                                unsigned threads, sample_batch_source make_batch);
+
+}  // namespace detail
+
 // Mean of Y over `points`. batch_values(first, u, y) receives a batch of points u (row-major,
 // y.size() points starting at index `first`) and writes Y for each into y; it may overwrite u
 // (e.g. map it to a box in place). It must be safe to call concurrently (it is called from several
 // threads on distinct chunks).
 template <point_set P, class BatchValues>
 estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_values) {
-  const std::uint64_t n = points.size();
-  const std::size_t s = points.dimension();
-  const variance_structure structure = points.variance();
-  const std::uint64_t group = structure.points_per_group();
-  const chunking layout{n, group * std::max<std::uint64_t>(1, sample_chunk_points / group)};
-  const sample_statistics total = parallel_reduce(
-      layout.chunks(), threads, sample_statistics(structure),
-      [&](std::size_t c) {
-        sample_statistics stats(structure);
-        std::vector<double> u(batch_points * s);
-        std::vector<double> y(batch_points);
-        for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
-          const std::span<double> ub(u.data(), count * s);
-          const std::span<double> yb(y.data(), count);
-          points.generate(first, ub);
-          batch_values(first, ub, yb);
-          stats.add_batch(first, yb);
-        });
-        return stats;
-      },
-      [](sample_statistics& acc, const sample_statistics& part) { acc.merge(part); });
-  return total.result();
+  const auto make = [&points, &batch_values](std::uint64_t first, std::span<double> u,
+                                             std::span<double> y) {
+    points.generate(first, u);
+    batch_values(first, u, y);
+  };
+  return detail::sample_mean_of_batches(points.size(), points.dimension(), points.variance(),
+                                        threads, detail::sample_batch_source(make));
 }
 
 }  // namespace quadmc

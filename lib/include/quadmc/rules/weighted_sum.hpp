@@ -21,14 +21,15 @@
 //    vector kernel), bitwise what multiplying first and summing after gives;
 //  - the sum can instead be naive, all-Neumaier or long double (enum summation), so the stress
 //    scene can show what each accumulator's rounding floor is on the same terms;
-//  - no allocation or virtual call per point: buffers once per chunk, the set's generate() once
-//    per batch (a template call, inlined).
+//  - no allocation or virtual call per point: buffers once per chunk; per batch, one call through
+//    a function pointer (detail::batch_source) into the caller's code, where the set's
+//    generate() and the integrand's evaluate() are template calls, inlined. The rest of the
+//    kernel is compiled once, in lib/src/rules/weighted_sum.cpp.
 #pragma once
 
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
-#include "quadmc/core/parallel_reduce.hpp"
-#include "quadmc/core/split_naive_sum.hpp"
+#include "quadmc/core/function_ref.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/rules/rule_result.hpp"
@@ -72,88 +73,6 @@ namespace detail {
 // w and y have the same size.
 double weighted_pairwise_sum(std::span<const double> w, std::span<const double> y) noexcept;
 
-// The accumulators of enum summation (core/summation.hpp), each a value type with the same
-// operations, so the kernel below is one template and the default path compiles to the same code
-// as before the option existed. add_weighted(w, y) adds the terms w_i·y_i, overwriting w with
-// them where the accumulator needs them stored.
-struct pairwise_accumulator {
-  neumaier_sum sum;
-  void add_batch(std::span<const double> terms) noexcept { sum.add(pairwise_sum(terms)); }
-  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
-    sum.add(weighted_pairwise_sum(w, y));
-  }
-  void merge(const pairwise_accumulator& other) noexcept { sum.merge(other.sum); }
-  double value() const noexcept { return sum.value(); }
-};
-
-// add(running, t) for the terms in order, on a value, out of line: the accumulators that add one
-// term at a time call it. Inlined into the kernel, where the accumulator is a captured object
-// that `terms` could alias as far as the compiler knows, GCC 12 stored and reloaded the running
-// sum every second term, putting store-to-load forwarding into the chain of adds (a 2^28-panel
-// naive Simpson cell took 1.87 s instead of 1.64 s). Same operations, so the same bits.
-template <class Sum, class Add>
-[[gnu::noinline]] Sum add_in_order(Sum running, std::span<const double> terms, Add add) noexcept {
-  for (const double t : terms) add(running, t);
-  return running;
-}
-
-// w_i ← w_i·y_i, then add_batch: the accumulators that add the terms one at a time.
-template <class Accumulator>
-void multiply_then_add(Accumulator& acc, std::span<double> w, std::span<const double> y) noexcept {
-  for (std::size_t i = 0; i < w.size(); ++i) w[i] *= y[i];
-  acc.add_batch(std::span<const double>(w));
-}
-
-struct neumaier_accumulator {
-  neumaier_sum sum;
-  void add_batch(std::span<const double> terms) noexcept {
-    sum = add_in_order(sum, terms, [](neumaier_sum& s, double t) { s.add(t); });
-  }
-  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
-    multiply_then_add(*this, w, y);
-  }
-  void merge(const neumaier_accumulator& other) noexcept { sum.merge(other.sum); }
-  double value() const noexcept { return sum.value(); }
-};
-
-struct long_double_accumulator {
-  long double sum = 0.0L;
-  void add_batch(std::span<const double> terms) noexcept {
-    sum = add_in_order(sum, terms, [](long double& s, double t) { s += t; });
-  }
-  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
-    multiply_then_add(*this, w, y);
-  }
-  void merge(const long_double_accumulator& other) noexcept { sum += other.sum; }
-  double value() const noexcept { return static_cast<double>(sum); }
-};
-
-}  // namespace detail
-
-// A chunk of the kernel below returns its whole sum and writes nothing else, so a cell split
-// across processes may share these chunk results (core/chunk_exchange.hpp).
-template <>
-inline constexpr bool shareable_chunk_result<detail::pairwise_accumulator> = true;
-template <>
-inline constexpr bool shareable_chunk_result<detail::neumaier_accumulator> = true;
-template <>
-inline constexpr bool shareable_chunk_result<detail::long_double_accumulator> = true;
-
-namespace detail {
-
-// One double carried through every term in index order: the kernel runs its chunks serially and
-// hands each chunk the running sum, so this is exactly Σ left to right, never re-associated.
-struct naive_accumulator {
-  double sum = 0.0;
-  void add_batch(std::span<const double> terms) noexcept {
-    sum = add_in_order(sum, terms, [](double& s, double t) { s += t; });
-  }
-  void add_weighted(std::span<double> w, std::span<const double> y) noexcept {
-    multiply_then_add(*this, w, y);
-  }
-  double value() const noexcept { return sum; }
-};
-
 // The integrand's info after the checks every rule needs: s ≥ 1, a domain of dimension s, a
 // finite box with lower ≤ upper.
 template <integrand F>
@@ -177,112 +96,40 @@ concept writes_on_the_side = requires {
 };
 
 // Whether the sum with `accumulate` may be split between processes (core/chunk_exchange.hpp):
-// the accumulators' own declarations above for the parallel_reduce ones; the naive sum, one
-// running double carried through the chunks in order, by split_naive_sum, which keeps its bits.
-constexpr bool accumulator_shares_chunks(summation accumulate) noexcept {
-  switch (accumulate) {
-    case summation::pairwise:
-      return shareable_chunk_result<pairwise_accumulator>;
-    case summation::neumaier:
-      return shareable_chunk_result<neumaier_accumulator>;
-    case summation::long_double:
-      return shareable_chunk_result<long_double_accumulator>;
-    case summation::naive:
-      return true;  // split exactly by split_naive_sum (core/split_naive_sum.hpp)
-  }
-  return false;
-}
+// the accumulators' own declarations (shareable_chunk_result, lib/src/rules/weighted_sum.cpp) for
+// the parallel_reduce ones; the naive sum, one running double carried through the chunks in
+// order, by split_naive_sum, which keeps its bits.
+bool accumulator_shares_chunks(summation accumulate) noexcept;
 
-// The kernel proper, on a checked integrand and a set of its dimension: generate(first, x, w)
-// writes a batch of box coordinates and weights. ShareChunks: whether a chunk's sum is all it
-// computes (see writes_on_the_side).
+// Writes one batch of the set and its integrand: the nodes of points first … first + k − 1 in box
+// coordinates into x (row-major, k·s), their weights into w and f at them into y (k values).
+// Called once per batch of batch_points points, so that the kernel below is compiled once, in
+// the library, while the set's generate() and the integrand's evaluate() stay inlined into the
+// caller's batch, where the work per point is. (As one template per integrand and set, its four
+// accumulators, parallel_reduce and the naive split were instantiated again for each and were
+// most of the build time of a file that integrates: docs/design.md, "Build time".)
+using batch_source = function_ref<void(std::uint64_t first, std::span<double> x,
+                                       std::span<double> w, std::span<double> y)>;
+
+// The kernel proper, on a checked integrand's info and `total` points made batch by batch by
+// `make_batch`: vol(box)·Σ w_i f(x_i), each batch checked finite (the error names info.name and
+// the point). share_chunks: whether a chunk's sum is all it computes (see writes_on_the_side).
+rule_result weighted_sum_of_batches(const integrand_info& info, std::uint64_t total,
+                                    batch_source make_batch, bool share_chunks, unsigned threads,
+                                    summation accumulate);
+
+// The kernel on a checked integrand and a set of its dimension: generate(first, x, w) writes a
+// batch of box coordinates and weights. ShareChunks: whether a chunk's sum is all it computes.
 template <bool ShareChunks, integrand F, class Generate>
 rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std::uint64_t total,
                                     const Generate& generate, unsigned threads,
                                     summation accumulate) {
-  const std::size_t s = info.dimension();
-  const chunking layout{total, rule_chunk_points};
-
-  // Makes chunk c batch by batch — the set's nodes and weights, the integrand's values, checked
-  // finite — and hands each batch to use(first, w, y). Buffers once per chunk (2^14 points),
-  // never per point; small enough to stay in L1.
-  auto evaluate_chunk = [&](std::size_t c, auto&& use) {
-    std::vector<double> x(batch_points * s);
-    std::vector<double> y(batch_points);
-    std::vector<double> w(batch_points);
-    for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
-      const std::span<double> xs(x.data(), count * s);
-      const std::span<double> ys(y.data(), count);
-      const std::span<double> ws(w.data(), count);
-      generate(first, xs, ws);
-      f.evaluate(std::span<const double>(xs), ys);
-      check_finite_batch(info.name, xs, ys, s);
-      use(first, ws, std::span<const double>(ys));
-    });
+  const auto make = [&f, &generate](std::uint64_t first, std::span<double> x, std::span<double> w,
+                                    std::span<double> y) {
+    generate(first, x, w);
+    f.evaluate(std::span<const double>(x), y);
   };
-
-  // Adds the terms of chunk c to `sum` (a fresh accumulator, or the running one for naive).
-  auto chunk_sum = [&](std::size_t c, auto sum) {
-    evaluate_chunk(c, [&](std::uint64_t, std::span<double> w, std::span<const double> y) {
-      sum.add_weighted(w, y);
-    });
-    return sum;
-  };
-
-  // Chunk c's terms w·f in order (rounded as multiply_then_add rounds them) into `out`, for the
-  // naive sum split across processes. Only the products go to `out`: generating into it
-  // directly, outside L1, slowed the walk by half.
-  auto chunk_terms = [&](std::size_t c, std::span<double> out) {
-    evaluate_chunk(c, [&](std::uint64_t first, std::span<double> w, std::span<const double> y) {
-      double* const products = out.data() + (first - layout.begin(c));
-      for (std::size_t i = 0; i < w.size(); ++i) products[i] = w[i] * y[i];
-    });
-  };
-
-  auto reduce = [&]<class Accumulator>(Accumulator init) {
-    if constexpr (ShareChunks) {
-      return parallel_reduce(
-          layout.chunks(), threads, init,
-          [&](std::size_t c) { return chunk_sum(c, Accumulator{}); },
-          [](Accumulator& acc, const Accumulator& part) { acc.merge(part); });
-    } else {
-      using local = process_local<Accumulator>;
-      return parallel_reduce(
-                 layout.chunks(), threads, local{init},
-                 [&](std::size_t c) { return local{chunk_sum(c, Accumulator{})}; },
-                 [](local& acc, const local& part) { acc.value.merge(part.value); })
-          .value;
-    }
-  };
-
-  double sum = 0.0;
-  switch (accumulate) {
-    case summation::pairwise:
-      sum = reduce(pairwise_accumulator{}).value();
-      break;
-    case summation::neumaier:
-      sum = reduce(neumaier_accumulator{}).value();
-      break;
-    case summation::long_double:
-      sum = reduce(long_double_accumulator{}).value();
-      break;
-    case summation::naive: {
-      chunk_exchange* const group = active_chunk_exchange();
-      if (ShareChunks && group != nullptr && group->size() > 1) {
-        sum = split_naive_sum(*group, layout, threads, chunk_terms);
-        break;
-      }
-      naive_accumulator running;
-      for (std::size_t c = 0; c < layout.chunks(); ++c) running = chunk_sum(c, running);
-      sum = running.value();
-      break;
-    }
-  }
-
-  rule_result result;
-  result.value = info.domain.volume() * sum;
-  result.evaluations = total;
-  return result;
+  return weighted_sum_of_batches(info, total, batch_source(make), ShareChunks, threads, accumulate);
 }
 
 // weighted_sum after the integrand's checks: checks the set against it and picks the set's own
@@ -322,7 +169,7 @@ rule_result checked_weighted_sum(const F& f, const integrand_info& info, const P
 // branches on, the set's writes_on_the_side and the accumulator's declaration. The methods
 // layer's shares_chunks (methods/method.hpp) asks this.
 template <class P>
-constexpr bool weighted_sum_shares_chunks(summation accumulate) noexcept {
+bool weighted_sum_shares_chunks(summation accumulate) noexcept {
   return !detail::writes_on_the_side<P> && detail::accumulator_shares_chunks(accumulate);
 }
 
