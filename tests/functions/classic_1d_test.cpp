@@ -8,8 +8,12 @@
 #include <gtest/gtest.h>
 #include <boost/math/differentiation/autodiff.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <string>
 
 namespace quadmc {
 namespace {
@@ -164,6 +168,58 @@ TEST(Classic1d, BoundsWhoseIntegralOverflowsAreRefused) {
   m = message([] { sin_1d(-1e308, 1e308); });
   EXPECT_NE(m.find("a finite width upper − lower"), std::string::npos) << m;
   EXPECT_TRUE(std::isfinite(sin_1d(-1e307, 1e307).info().exact));
+}
+
+// Regression: the closed forms subtracted two nearly equal values. On narrow intervals e^hi − e^lo
+// was off by 7.5e-7 relative on [700, 700 + 1e-10] (so a Simpson estimate right to 1e-16 showed
+// |error| 7.6e287), (hi⁶ − lo⁶)/6 by 2e-7 on [1e10, 1e10 + 1] and cos lo − cos hi by 1.5e-7 on
+// [0.3, 0.3 + 1e-10]. The reference is the same difference in 50 significant digits of the same
+// double endpoints (Boost.Multiprecision), where the cancellation leaves over 35 digits.
+TEST(Classic1d, ClosedFormsKeepTheirDigitsOnNarrowIntervals) {
+  using big = boost::multiprecision::cpp_bin_float_50;
+  const auto relative = [](double value, const big& exact) {
+    return static_cast<double>(abs((big(value) - exact) / exact));
+  };
+  const double e_lo = 700.0;
+  const double e_hi = 700.0000000001;
+  EXPECT_LT(relative(exp_1d(e_lo, e_hi).info().exact, exp(big(e_hi)) - exp(big(e_lo))), 1e-14);
+  const double p_lo = 1e10;
+  const double p_hi = 1e10 + 1.0;
+  EXPECT_LT(relative(poly_1d(p_lo, p_hi).info().exact, (pow(big(p_hi), 6) - pow(big(p_lo), 6)) / 6),
+            1e-14);
+  // Across 0, where x⁵ is odd: ∫ over [−1, 1 + 1e-9] is the sliver [1, 1 + 1e-9].
+  const double q_hi = 1.0 + 1e-9;
+  EXPECT_LT(relative(poly_1d(-1.0, q_hi).info().exact, (pow(big(q_hi), 6) - 1) / 6), 1e-14);
+  EXPECT_EQ(poly_1d(-2.0, 2.0).info().exact, 0.0) << "an odd function over a symmetric interval";
+  const double s_lo = 0.3;
+  const double s_hi = 0.3 + 1e-10;
+  EXPECT_LT(relative(sin_1d(s_lo, s_hi).info().exact, cos(big(s_lo)) - cos(big(s_hi))), 1e-14);
+  // Wide intervals keep the direct forms, still to 1e-14.
+  EXPECT_LT(relative(sin_1d(0.3, 1e10).info().exact, cos(big(0.3)) - cos(big(1e10))), 1e-14);
+  EXPECT_LT(relative(exp_1d(-1000.0, 1.0).info().exact, exp(big(1.0)) - exp(big(-1000.0))), 1e-14);
+}
+
+// Regression: e^x on [−745, −744.9] and x⁵ on [0, 1e-60] had the exact value 0 (the integral
+// underflows), which the README says is refused; and what no form carries to 12 digits is refused
+// too, naming the interval.
+TEST(Classic1d, IntegralsThatUnderflowOrCannotBeCarriedAreRefused) {
+  auto message = [](auto&& build) -> std::string {
+    try {
+      build();
+    } catch (const invalid_argument& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  for (const std::string& m :
+       {message([] { exp_1d(-745.0, -744.9); }), message([] { poly_1d(0.0, 1e-60); }),
+        message([] { sin_1d(1e10, 1e10 + 1e-6); })}) {
+    EXPECT_NE(m.find("invalid upper = "), std::string::npos) << m;
+    EXPECT_NE(m.find("accurate to 1e-12"), std::string::npos) << m;
+  }
+  // A whole period: the integral is 0 to within the rounding of its values, which is what a rule
+  // resolves too (error is judged against (upper − lower)·max|f|).
+  EXPECT_LT(std::abs(sin_1d(0.0, 2.0 * std::numbers::pi).info().exact), 1e-15);
 }
 
 }  // namespace

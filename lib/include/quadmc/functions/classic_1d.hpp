@@ -27,10 +27,12 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc {
@@ -65,6 +67,27 @@ inline double max_abs_sin(double lo, double hi) {
   return std::max(std::abs(std::sin(lo)), std::abs(std::sin(hi)));
 }
 
+// A closed form's value with a bound on its absolute rounding error.
+struct bounded_value {
+  double value;
+  double error;
+};
+
+// Refuses an interval whose closed form cannot be trusted to 12 digits: error > 1e-12·scale,
+// scale = (upper − lower)·max|f| ≥ ∫|f| ≥ |∫f|, the size of the sum Σ|w·f| whose rounding every
+// rule's estimate carries anyway (so a tiny integral of a large f, sin over a whole period, is
+// judged by absolute error, as the results are). An absolute floor of 8 subnormal spacings
+// (8·2^−1074) in every bound makes an integral that underflows a refusal, not an exact 0.
+inline void require_accurate_closed_form(const bounded_value& v, double scale, double lo, double hi,
+                                         std::string_view integral) {
+  const double floor = 8.0 * std::numeric_limits<double>::denorm_min();
+  require(v.error + floor <= 1e-12 * scale, "upper", hi,
+          fmt::format("an interval [lower = {}, upper] on which the closed form {} = {} is "
+                      "accurate to 1e-12 of (upper − lower)·max|f| = {} (its rounding error is up "
+                      "to {}: the integral underflows or cancels below what double carries)",
+                      quote(lo), integral, v.value, scale, v.error + floor));
+}
+
 }  // namespace detail
 
 class poly_1d {
@@ -78,6 +101,9 @@ class poly_1d {
             "|lower| ≤ 1e51 (the integral (upper⁶ − lower⁶)/6 must stay finite)");
     require(std::abs(hi_) <= max_abs_bound, "upper", hi_,
             "|upper| ≤ 1e51 (the integral (upper⁶ − lower⁶)/6 must stay finite)");
+    const double m = std::max(std::abs(lo_), std::abs(hi_));
+    detail::require_accurate_closed_form(integral(lo_, hi_), (hi_ - lo_) * std::pow(m, 5), lo_, hi_,
+                                         "(upper⁶ − lower⁶)/6");
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -86,9 +112,32 @@ class poly_1d {
       y[i] = x2 * x2 * x[i];
     }
   }
+  // (upper⁶ − lower⁶)/6 without cancellation: x⁵ is odd, so over [lo, hi] with lo < 0 < hi it is
+  // ±∫ over [min(|lo|, hi), max(|lo|, hi)]; on 0 ≤ a ≤ b, b⁶ − a⁶ = (b − a)·Σ_{k≤5} b^(5−k)·a^k has
+  // six terms of one sign, so the only cancellation is b − a, which rounds once (exact by Sterbenz
+  // when a ≥ b/2). About 12 roundings of relative u each: error ≤ 16u·|value|.
+  static detail::bounded_value integral(double lo, double hi) {
+    double sign = 1.0;
+    double a = lo;
+    double b = hi;
+    if (hi <= 0.0) {  // [lo, hi] ⊂ (−∞, 0]: ∫ x⁵ = −∫ over [|hi|, |lo|]
+      sign = -1.0;
+      a = -hi;
+      b = -lo;
+    } else if (lo < 0.0) {
+      a = std::min(-lo, hi);
+      b = std::max(-lo, hi);
+      sign = hi >= -lo ? 1.0 : -1.0;
+    }
+    double sum = 0.0;  // Σ_{k≤5} b^(5−k)·a^k
+    for (int k = 0; k <= 5; ++k) sum += std::pow(b, 5 - k) * std::pow(a, k);
+    const double value = sign * (b - a) * sum / 6.0;
+    return {value, 16.0 * std::numeric_limits<double>::epsilon() * std::abs(value)};
+  }
+
   integrand_info info() const {
-    auto info = detail::info_1d("poly", "x⁵", lo_, hi_, (std::pow(hi_, 6) - std::pow(lo_, 6)) / 6.0,
-                                smoothness::analytic);
+    auto info =
+        detail::info_1d("poly", "x⁵", lo_, hi_, integral(lo_, hi_).value, smoothness::analytic);
     // f⁽ᵏ⁾ = 5!/(5−k)!·x^(5−k): |·| is largest where |x| is.
     const double m = std::max(std::abs(lo_), std::abs(hi_));
     const double falling[5] = {1.0, 5.0, 20.0, 60.0, 120.0};
@@ -119,6 +168,19 @@ class exp_1d {
     detail::validate_interval(lo_, hi_);
     require(hi_ <= max_upper, "upper", hi_,
             "upper ≤ 709.78 (e^upper must stay finite: ln of the largest double)");
+    detail::require_accurate_closed_form(integral(lo_, hi_), (hi_ - lo_) * std::exp(hi_), lo_, hi_,
+                                         "e^upper − e^lower");
+  }
+
+  // e^hi − e^lo without cancellation: for d = hi − lo < 1, e^lo·expm1(d) (d rounds once, exactly
+  // when lo and hi are within a factor 2 (Sterbenz); expm1 is accurate to an ulp for every d);
+  // for d ≥ 1, e^hi·(1 − e^−d) loses at most the factor 1/(1 − e^−1) ≈ 1.6 to the subtraction.
+  // Error ≤ 8u·|value|, plus e^lo's own loss when it is subnormal (the absolute floor of
+  // require_accurate_closed_form).
+  static detail::bounded_value integral(double lo, double hi) {
+    const double d = hi - lo;
+    const double value = d < 1.0 ? std::exp(lo) * std::expm1(d) : std::exp(hi) - std::exp(lo);
+    return {value, 8.0 * std::numeric_limits<double>::epsilon() * std::abs(value)};
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
@@ -126,7 +188,7 @@ class exp_1d {
   }
   integrand_info info() const {
     auto info =
-        detail::info_1d("exp", "eˣ", lo_, hi_, std::exp(hi_) - std::exp(lo_), smoothness::analytic);
+        detail::info_1d("exp", "eˣ", lo_, hi_, integral(lo_, hi_).value, smoothness::analytic);
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = std::exp(hi_);
     info.endpoint_derivatives =
         endpoint::product_of(1.0, {endpoint::exponential(1.0, lo_, hi_, info.exact)});
@@ -141,14 +203,32 @@ class sin_1d {
  public:
   explicit sin_1d(double lower = 0.0, double upper = std::numbers::pi) : lo_(lower), hi_(upper) {
     detail::validate_interval(lo_, hi_);
+    detail::require_accurate_closed_form(integral(lo_, hi_),
+                                         (hi_ - lo_) * detail::max_abs_sin(lo_, hi_), lo_, hi_,
+                                         "cos lower − cos upper");
+  }
+
+  // cos lo − cos hi, by whichever of two forms is the more accurate: the difference itself (two
+  // cosines of exact arguments, error ≤ 4u absolute), or 2·sin(m)·sin(d/2) with d = hi − lo and
+  // m = lo + d/2 (no cancellation; m rounds by up to u·|m|, which moves the value by at most
+  // u·|m|·d, so error ≤ u·(|m|·d + 4|value|)). On a narrow interval the second is exact to a few
+  // ulps where the first keeps only the digits of d: [0.3, 0.3 + 1e-10] lost 6 of them.
+  static detail::bounded_value integral(double lo, double hi) {
+    const double u = std::numeric_limits<double>::epsilon();
+    const double d = hi - lo;
+    const double m = lo + 0.5 * d;
+    const double product = 2.0 * std::sin(m) * std::sin(0.5 * d);
+    const double product_error = u * (std::abs(m) * d + 4.0 * std::abs(product));
+    if (std::isfinite(product) && product_error < 4.0 * u) return {product, product_error};
+    return {std::cos(lo) - std::cos(hi), 4.0 * u};
   }
   std::size_t dimension() const noexcept { return 1; }
   void evaluate(std::span<const double> x, std::span<double> y) const noexcept {
     for (std::size_t i = 0; i < y.size(); ++i) y[i] = std::sin(x[i]);
   }
   integrand_info info() const {
-    auto info = detail::info_1d("sin", "sin x", lo_, hi_, std::cos(lo_) - std::cos(hi_),
-                                smoothness::analytic);
+    auto info =
+        detail::info_1d("sin", "sin x", lo_, hi_, integral(lo_, hi_).value, smoothness::analytic);
     // Even derivatives are ±sin, odd ones ±cos = ±sin(· + π/2).
     const double ms = detail::max_abs_sin(lo_, hi_);
     const double mc = detail::max_abs_sin(lo_ + std::numbers::pi / 2, hi_ + std::numbers::pi / 2);
