@@ -5,11 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "support/temporary_directory.hpp"
+
 namespace quadmc {
 namespace {
+
+using test_support::temporary_directory;
 
 TEST(Csv, QuotesOnlyWhatNeedsIt) {
   EXPECT_EQ(csv_field("midpoint"), "midpoint");
@@ -62,6 +68,16 @@ TEST(Csv, MalformedTextThrows) {
   EXPECT_THROW(parse_csv("a,b\n\"x\"y,2\n", "memory"), invalid_argument);
   EXPECT_THROW(parse_csv("a,b\n1,2,3\n", "memory"), invalid_argument);
   EXPECT_THROW(read_csv_file("/nonexistent/quadmc/none.csv"), invalid_argument);
+}
+
+// Regression: a file saved by a spreadsheet as "CSV UTF-8" starts with a byte-order mark, which
+// became part of the first column's name ("missing column 'scene'").
+TEST(Csv, AByteOrderMarkBeforeTheHeaderIsNotPartOfTheFirstColumn) {
+  const temporary_directory dir{"quadmc_csv_bom", temporary_directory::start::empty};
+  const std::filesystem::path file = dir.path / "slopes.csv";
+  std::ofstream(file, std::ios::binary) << "\xEF\xBB\xBFscene,s\ndefault,2\n";
+  const csv_table table = read_csv_file(file);
+  EXPECT_EQ(table.rows.at(0).at(table.column("scene")), "default");
 }
 
 }  // namespace

@@ -134,7 +134,12 @@ csv_table read_csv_file(const std::filesystem::path& file) {
   if (!in) throw invalid_argument("file", file.string(), "a readable CSV file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_csv(text.str(), file.string());
+  std::string content = text.str();
+  // A spreadsheet that saves "CSV UTF-8" puts a byte-order mark first, which made the first
+  // column "\xEF\xBB\xBFscene" and the error "missing column 'scene'". It carries no data.
+  constexpr std::string_view bom = "\xEF\xBB\xBF";
+  if (content.starts_with(bom)) content.erase(0, bom.size());
+  return parse_csv(content, file.string());
 }
 
 }  // namespace quadmc

@@ -1,12 +1,16 @@
 // convergence.csv and slopes.csv: writers and readers; the column contract is in results_csv.hpp.
 #include "quadmc/report/results_csv.hpp"
 
+#include "quadmc/analysis/slope_verdict.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/csv.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
+#include <tuple>
 
 namespace quadmc {
 namespace {
@@ -39,6 +43,14 @@ class record_reader {
     if (ec != std::errc() || end != t.data() + t.size()) fail(name, t, "a number");
     return value;
   }
+  // A number that is finite or empty (NaN): ±inf and "nan" are no value a writer of ours gives.
+  double finite_or_empty(std::string_view name) const {
+    const double value = real(name);
+    if (!text(name).empty() && !std::isfinite(value)) {
+      fail(name, text(name), "a finite number or an empty field");
+    }
+    return value;
+  }
   std::uint64_t count(std::string_view name) const {
     const std::string& t = text(name);
     std::uint64_t value = 0;
@@ -49,13 +61,15 @@ class record_reader {
     return value;
   }
 
- private:
   [[noreturn]] void fail(std::string_view name, const std::string& t,
                          std::string_view expected) const {
     // Data row r is record r + 2 of the file (the header is record 1).
     throw invalid_argument(fmt::format("{}: record {}, column '{}' = '{}': expected {}",
                                        table_.source, r_ + 2, name, t, expected));
   }
+  std::size_t record() const noexcept { return r_ + 2; }
+
+ private:
   const csv_table& table_;
   std::size_t r_;
 };
@@ -170,10 +184,12 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     rec.n = f.count("N");
     rec.evaluations = f.count("evaluations");
     rec.repetitions = f.count("repetitions");
-    rec.reference = f.real("reference");
-    rec.estimate_mean = f.real("estimate_mean");
-    rec.rmse = f.real("rmse");
-    rec.mean_abs_error = f.real("mean_abs_error");
+    // "nan" or "inf" in these is no figure a run writes (it writes NaN as an empty field): refused
+    // here, naming file, record and column, not later where the row is no longer known.
+    rec.reference = f.finite_or_empty("reference");
+    rec.estimate_mean = f.finite_or_empty("estimate_mean");
+    rec.rmse = f.finite_or_empty("rmse");
+    rec.mean_abs_error = f.finite_or_empty("mean_abs_error");
     rec.std_error_of_rmse = f.real("std_error_of_rmse");
     rec.coverage_95 = f.real("coverage_95");
     rec.seconds = f.real("seconds");
@@ -203,9 +219,16 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
   return out;
 }
 
+// A slopes.csv row is checked as it is read, so that `compare` (and anything else reading it)
+// never judges from a malformed row: a duplicated series (only the first was read, so a regressed
+// copy appended after it passed), ci_low > ci_high (a negative half-width widened the allowed
+// difference), ±inf or NaN written out, an unknown verdict, a slope where fit_status says no fit
+// was made. Each is an invalid_argument naming the file, the record and the column.
 std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file) {
   const csv_table table = read_csv_file(file);
   require_columns(table, slopes_csv_columns);
+  const bool has_fit_status = table.has_column("fit_status");
+  std::map<std::tuple<std::string, std::string, std::size_t, std::string>, std::size_t> seen;
   std::vector<slope_record> out;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const record_reader f(table, r);
@@ -214,16 +237,45 @@ std::vector<slope_record> read_slopes_csv(const std::filesystem::path& file) {
     rec.integrand = f.text("integrand");
     rec.s = f.count("s");
     rec.method = f.text("method");
-    rec.slope = f.real("slope");
-    rec.ci_low = f.real("ci_low");
-    rec.ci_high = f.real("ci_high");
-    rec.theory = f.real("theory");
+    rec.slope = f.finite_or_empty("slope");
+    rec.ci_low = f.finite_or_empty("ci_low");
+    rec.ci_high = f.finite_or_empty("ci_high");
+    rec.theory = f.finite_or_empty("theory");
     rec.verdict = f.text("verdict");
     rec.points_used = f.count("points_used");
     rec.floor_points = f.count("floor_points");
     if (table.has_column("envelope_ratio")) rec.envelope_ratio = f.real("envelope_ratio");
     if (table.has_column("verdict_reason")) rec.verdict_reason = f.text("verdict_reason");
     if (table.has_column("class_theory")) rec.class_theory = f.real("class_theory");
+
+    try {
+      (void)parse_slope_verdict(rec.verdict);
+    } catch (const invalid_argument&) {
+      f.fail("verdict", rec.verdict, "a verdict quadmc writes (agrees, steeper, shallower, …)");
+    }
+    if (std::isnan(rec.ci_low) != std::isnan(rec.ci_high)) {
+      f.fail(std::isnan(rec.ci_low) ? "ci_low" : "ci_high", "",
+             "both ends of the interval or neither");
+    }
+    if (rec.ci_low > rec.ci_high) {
+      f.fail("ci_low", f.text("ci_low"), fmt::format("at most ci_high = {}", f.text("ci_high")));
+    }
+    if (!std::isnan(rec.ci_low) && std::isnan(rec.slope)) {
+      f.fail("slope", "", "a slope where the row has an interval");
+    }
+    if (has_fit_status && f.text("fit_status") != "ok" && !std::isnan(rec.slope)) {
+      f.fail("slope", f.text("slope"),
+             fmt::format("an empty field: fit_status = '{}' says no fit was made",
+                         f.text("fit_status")));
+    }
+    const auto [at, fresh] =
+        seen.emplace(std::tuple{rec.scene, rec.integrand, rec.s, rec.method}, f.record());
+    if (!fresh) {
+      f.fail("method", rec.method,
+             fmt::format("one row per series: record {} has the same scene, integrand, s and "
+                         "method",
+                         at->second));
+    }
     out.push_back(std::move(rec));
   }
   return out;
