@@ -36,6 +36,7 @@
 
 #include "build_provenance.hpp"
 #include "catalogue_listing.hpp"
+#include "cli_validators.hpp"
 #include "gallery_command.hpp"
 #include "interruption.hpp"
 #include "mpi_run.hpp"
@@ -53,6 +54,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -116,12 +118,9 @@ std::string machine_description() {
 
 // The names the run will write into its folder, for the name-length checks made before it.
 std::vector<std::string> result_file_names(const quadmc::plan& p) {
-  std::vector<std::string> files;
+  std::vector<std::string> files = {std::string(quadmc::meta_csv_file)};
   const quadmc::output_spec& output = p.source.output;
-  if (output.csv) {
-    files.insert(files.end(),
-                 {"convergence.csv", "slopes.csv", std::string(quadmc::meta_csv_file)});
-  }
+  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
   if (output.markdown) files.emplace_back("README.md");
   if (output.plots) {
     std::set<std::pair<std::string, std::size_t>> groups;
@@ -175,11 +174,44 @@ std::string threads_text(const quadmc::run_output& out, unsigned ranks) {
                      out.threads, out.threads_allowed);
 }
 
+// Whether `file` can be written at the end of a run without touching it now: an existing
+// regular file we may write, or a new name in a folder we may write into. Throws
+// quadmc::invalid_argument naming `option`.
+void check_writable_file(const std::string& option, const std::string& file) {
+  std::error_code ec;
+  const fs::path path(file);
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_regular_file(status)) {
+      throw quadmc::invalid_argument(option, file, "a file (this is a folder or a special file)");
+    }
+    if (::access(path.c_str(), W_OK) != 0) {
+      throw quadmc::invalid_argument(option, file,
+                                     fmt::format("a writable file ({})", std::strerror(errno)));
+    }
+    return;
+  }
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec)) {
+    throw quadmc::invalid_argument(
+        option, file, fmt::format("a file in an existing folder ({} is not one)", parent.string()));
+  }
+  if (::access(parent.c_str(), W_OK | X_OK) != 0) {
+    throw quadmc::invalid_argument(
+        option, file,
+        fmt::format("a file in a writable folder ({}: {})", parent.string(), std::strerror(errno)));
+  }
+}
+
 int run_command(const run_request& request, standard_output& out,
                 const quadmc_cli::mpi::world& world) {
   const quadmc_cli::mpi::split_policy split =
       quadmc_cli::mpi::parse_split_policy(request.split_cells);
-  const quadmc::scene scene = quadmc::parse_scene_file(request.scene_file);
+  quadmc::scene scene = quadmc::parse_scene_file(request.scene_file);
+  // The command line's overrides go into the scene before it is planned, so that the plan's
+  // header shows the thread count and timing minimum the run uses, not the scene's.
+  if (request.threads) scene.threads = *request.threads;
+  if (request.timing_min_seconds) scene.budget.timing_min_seconds = *request.timing_min_seconds;
   const quadmc::plan p = quadmc::make_plan(scene);
   // Under mpirun every rank parses and plans (deterministically, so all fail alike on bad
   // input); only rank 0 prints, stages and writes, and the others follow its verdict.
@@ -202,6 +234,9 @@ int run_command(const run_request& request, standard_output& out,
 
   staged_results staged;
   try {
+    // Checked with the other outputs, before any work: found after the run, an unwritable
+    // --cells-csv cost every cell's computing.
+    if (!request.cells_csv.empty()) check_writable_file("--cells-csv", request.cells_csv);
     if (writes) {
       const fs::path folder = quadmc_cli::results_folder_path(request.out_dir, scene.name);
       const bool given = !request.out_dir.empty();
@@ -282,6 +317,8 @@ int run_command(const run_request& request, standard_output& out,
     info.run_seconds = result.seconds;
     for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
     for (const auto& skip : result.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+    info.csv = outputs.csv;
+    info.plots = outputs.plots;
     quadmc::results_outputs files;
     files.csv = outputs.csv;
     files.markdown = outputs.markdown;
@@ -321,9 +358,24 @@ int plan_command(const std::string& scene_file, standard_output& out) {
   return 0;
 }
 
+// CLI11's messages, made one line.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
 int compare_command(const std::string& a, const std::string& b, double tolerance,
                     standard_output& out) {
-  const quadmc::compare_result result = quadmc::compare_results(a, b, tolerance);
+  quadmc::compare_result result;
+  try {
+    result = quadmc::compare_results(a, b, tolerance);
+  } catch (const quadmc::invalid_argument& e) {
+    // A folder whose files cannot be read as results (a missing column, a malformed row) cannot
+    // be compared: the same exit status as a candidate that lacks what the baseline has.
+    fmt::print(stderr, "quadmc: compare: incomparable: {}\n", one_line(e.what()));
+    return exit_incomparable;
+  }
   out.print(quadmc::render_compare_markdown(result) + "\n");
   if (out.failed()) throw std::runtime_error(out.message());
   switch (result.outcome) {
@@ -337,13 +389,6 @@ int compare_command(const std::string& a, const std::string& b, double tolerance
       return exit_incomparable;
   }
   return exit_failure;
-}
-
-// CLI11's messages, made one line.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
 }
 
 }  // namespace
@@ -389,7 +434,7 @@ int main(int argc, char** argv) {
                       "Stable timing: repeat each cell's first estimate until this many seconds "
                       "have passed, 0 to 60; 0 = time it once (default: the scene's "
                       "budget.timing_min_seconds, 0.01)")
-          ->check(CLI::Range(0.0, 60.0));
+          ->check(quadmc_cli::finite_number(0.0, 60.0, "between 0 and 60"));
   run->add_option("--split-cells", request.split_cells,
                   "Under mpirun: which cells all ranks run together, each computing a share of "
                   "its chunks (auto: the costly ones whose method shares chunks; all: every "
@@ -415,7 +460,7 @@ int main(int argc, char** argv) {
   compare->add_option("baseline", folder_a, "Results folder A (baseline)")->required();
   compare->add_option("candidate", folder_b, "Results folder B (candidate)")->required();
   compare->add_option("--tolerance", tolerance, "Slope regression tolerance, ≥ 0 (default 0.1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(quadmc_cli::finite_number(0.0, HUGE_VAL, "≥ 0"));
 
   quadmc_cli::points_request points_request;
   auto* points = quadmc_cli::add_points_subcommand(app, points_request);
@@ -449,6 +494,18 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*run) return run_command(request, out, mpi.world);
+    // Only `run` shares its work between the ranks of mpirun; every other subcommand would run
+    // whole on each rank, writing one folder or file from all of them at once (render and
+    // gallery did, and the job failed) or printing everything once per rank.
+    if (mpi.world.size > 1) {
+      const std::string name = app.get_subcommands().empty()
+                                   ? std::string("this command")
+                                   : app.get_subcommands().front()->get_name();
+      throw std::runtime_error(fmt::format(
+          "`quadmc {}` runs in one process, not under mpirun ({} ranks): every rank would "
+          "write the same output; run it without mpirun (only `quadmc run` is distributed)",
+          name, mpi.world.size));
+    }
     if (*plan) return plan_command(plan_file, out);
     if (*list) {
       out.print(quadmc_cli::catalogue_listing());

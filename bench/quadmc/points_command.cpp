@@ -24,6 +24,7 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
       ->required();
   points->add_option("--n", request.n, "Number of points N ≥ 1")
       ->required()
+      ->check(non_negative_integer())
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
   points->add_option("--s", request.s, "Dimension s ≥ 1")
       ->required()
@@ -87,6 +88,16 @@ struct file_closer {
   void operator()(std::FILE* f) const noexcept { std::fclose(f); }
 };
 
+// Thrown from the batch callback when a write fails (a closed pipe: `quadmc points … | head`),
+// so that generating stops at once instead of running through all N points unwritten.
+struct output_gone {};
+
+// Above this size the command says on stderr how much text it is about to write: at N = 2^40 a
+// mistyped --n is terabytes.
+constexpr double announced_bytes = 1e9;
+// The longest text of one coordinate: "0." and 17 significant digits, or an exponent form.
+constexpr double bytes_per_coordinate = 24.0;
+
 }  // namespace
 
 void run_points(const points_request& r, const std::function<bool(std::string_view)>& write) {
@@ -96,6 +107,12 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
                                    fmt::format("one of: {}", quadmc::point_set_names()));
   }
   const quadmc::point_set_options options = options_for(*set, r);
+  // The dimension first, so that a set that cannot have s dimensions blames --s, not --n.
+  if (set->max_dimension != 0 && r.s > set->max_dimension) {
+    throw quadmc::invalid_argument(
+        "--s", std::to_string(r.s),
+        fmt::format("s ≤ {} for the {} points", set->max_dimension, set->name));
+  }
   const std::string problem = quadmc::size_problem(*set, r.s, r.n, options);
   if (!problem.empty()) {
     throw quadmc::invalid_argument("--n", fmt::format("{} (s = {})", r.n, r.s), problem);
@@ -119,22 +136,33 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
     }
     return write(text);
   };
+  const double bytes = static_cast<double>(r.n) * static_cast<double>(r.s) * bytes_per_coordinate;
+  if (bytes > announced_bytes) {
+    const bool tera = bytes >= 1e12;
+    fmt::print(stderr,
+               "quadmc points: up to {:.3g} {} of text ({} points × {} coordinates) to {}\n",
+               bytes / (tera ? 1e12 : 1e9), tera ? "TB" : "GB", r.n, r.s,
+               r.out.empty() ? "standard output" : r.out);
+  }
   std::string text;
   for (std::size_t j = 0; j < r.s; ++j) text += fmt::format("{}x{}", j == 0 ? "" : ",", j + 1);
   text += '\n';
-  bool ok = emit(text);
-  set->points(
-      r.s, r.n, {r.seed, r.stream},
-      [&](std::uint64_t, std::span<const double> x) {
-        if (!ok) return;
-        text.clear();
-        auto out = std::back_inserter(text);
-        for (std::size_t k = 0; k < x.size(); ++k) {
-          fmt::format_to(out, "{}{}", x[k], (k + 1) % r.s == 0 ? "\n" : ",");
-        }
-        ok = emit(text);
-      },
-      options);
+  if (!emit(text)) return;
+  try {
+    set->points(
+        r.s, r.n, {r.seed, r.stream},
+        [&](std::uint64_t, std::span<const double> x) {
+          text.clear();
+          auto out = std::back_inserter(text);
+          for (std::size_t k = 0; k < x.size(); ++k) {
+            fmt::format_to(out, "{}{}", x[k], (k + 1) % r.s == 0 ? "\n" : ",");
+          }
+          if (!emit(text)) throw output_gone{};
+        },
+        options);
+  } catch (const output_gone&) {
+    return;  // `write` has recorded why; the caller reports it
+  }
   if (file && std::fclose(file.release()) != 0) {
     throw std::runtime_error(
         fmt::format("--out {}: close failed: {}", r.out, std::strerror(errno)));

@@ -127,6 +127,14 @@ error_stats compare(std::span<const double> x, std::span<const double> exact,
   error_stats s;
   for (std::size_t p = 0; p < x.size(); ++p) {
     const double e = x[p] - exact[p];
+    // No page is written with a non-finite figure: a NaN here made every rmse NaN and the README
+    // say "mean nan" with exit status 0.
+    if (!std::isfinite(e)) {
+      throw std::runtime_error(fmt::format(
+          "pixel {} (column {}, row {}): estimate {} against exact {} gives a non-finite error; "
+          "nothing written",
+          p, p % width, p / width, x[p], exact[p]));
+    }
     sq += e * e;
     sum += e;
     const auto v = static_cast<std::size_t>(vis[p]);

@@ -115,14 +115,6 @@ class reader {
   std::string file_;
 };
 
-bool portable(std::string_view s) {
-  if (s.empty() || s == "." || s == "..") return false;
-  return std::all_of(s.begin(), s.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-' || c == '.';
-  });
-}
-
 const quadmc::point_set_entry& set_named(const reader& r, const toml::key& k, std::string_view path,
                                          const toml::node& v) {
   const std::string what = fmt::format("a point set, one of: {}", quadmc::point_set_names());
@@ -136,17 +128,17 @@ render_scene parse_root(const reader& r, const toml::table& root) {
   r.check_keys(root, render_scene_keys(), "", "a render scene");
   render_scene sc;
   sc.file = r.file();
-  sc.name = std::filesystem::path(r.file()).stem().string();
-  if (!portable(sc.name)) sc.name = "render";
+  sc.name = quadmc::scene_name_from_file(r.file(), "render");
   std::optional<std::pair<const toml::key*, const toml::node*>> spp_entry, width_entry,
       region_entry, height_entry;
   for (auto&& [key, value] : root) {
     const std::string_view k = key.str();
     const std::string path(k);
     if (k == "name") {
-      const std::string_view what = "a name of letters, digits, '_', '-', '.'";
+      const std::string_view what =
+          "a name of letters, digits, '_', '-', '.', other than '.' and '..'";
       sc.name = r.string(key, path, value, what);
-      if (!portable(sc.name)) r.expected(key, path, value, what);
+      if (!quadmc::is_portable_name(sc.name)) r.expected(key, path, value, what);
     } else if (k == "description") {
       sc.description = r.string(key, path, value, "a string");
     } else if (k == "seed") {

@@ -2,6 +2,7 @@
 #include "results_staging.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
 
 #include <fcntl.h>
@@ -33,22 +34,78 @@ std::string error_text(int error) {
   return std::strerror(error);
 }
 
-// What makes `folder` not a results folder (its first such entry), or nothing. Only regular
-// files count as results files: a folder named "figures.svg" is somebody's folder.
+// "a folder", "a symbolic link", …: what an entry is, for messages.
+std::string_view file_kind(const fs::file_status& status) {
+  switch (status.type()) {
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::symlink:
+      return "a symbolic link";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::block:
+    case fs::file_type::character:
+      return "a device";
+    default:
+      return "not a regular file";
+  }
+}
+
+// What makes `folder` not a results folder of this command, or nothing: an entry that is not a
+// regular file with a name the command writes (a folder named "figures.svg" is somebody's), or,
+// in a folder with any entry, no meta.csv that quadmc wrote. Every run that writes a folder writes
+// meta.csv (report/provenance.hpp), so hand-made files that happen to have a run's names — a
+// README.md, drawings in *.svg — are never taken for old results and deleted.
 std::optional<std::string> first_foreign_entry(const fs::path& folder,
                                                results_file_predicate is_results_file) {
   std::error_code ec;
+  bool empty = true;
   fs::directory_iterator it(folder, ec);
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    empty = false;
     const std::string name = it->path().filename().string();
     std::error_code status_ec;
-    const bool regular = fs::is_regular_file(it->symlink_status(status_ec));
-    if (!regular || !is_results_file(name)) {
+    const fs::file_status status = it->symlink_status(status_ec);
+    if (!is_results_file(name))
       return fmt::format("it holds '{}', which a run does not write", name);
+    if (!fs::is_regular_file(status)) {
+      return fmt::format("it holds '{}', {} where a run writes a regular file", name,
+                         file_kind(status));
     }
   }
   if (ec) return fmt::format("its entries cannot be listed ({})", ec.message());
+  if (empty) return std::nullopt;
+  const fs::path meta = folder / std::string(quadmc::meta_csv_file);
+  std::error_code meta_ec;
+  if (!fs::is_regular_file(fs::symlink_status(meta, meta_ec))) {
+    return fmt::format(
+        "it has no {} (which every run writes beside its results), so its files are not a run's",
+        quadmc::meta_csv_file);
+  }
+  try {
+    (void)quadmc::read_meta_csv(meta);
+  } catch (const std::exception& e) {
+    return fmt::format("its {} is not one a run writes ({})", quadmc::meta_csv_file, e.what());
+  }
   return std::nullopt;
+}
+
+// Whether `folder` is the current folder or one of its parents: replacing it would pull the
+// working directory from under the user (even a results folder: `cd results/default` and
+// `quadmc run … --out .`).
+bool holds_current_folder(const fs::path& folder) {
+  std::error_code ec;
+  const fs::path here = fs::canonical(fs::current_path(ec), ec);
+  if (ec) return false;
+  const fs::path target = fs::weakly_canonical(folder, ec);
+  if (ec) return false;
+  auto h = here.begin();
+  for (auto t = target.begin(); t != target.end(); ++t, ++h) {
+    if (h == here.end() || *h != *t) return false;
+  }
+  return true;
 }
 
 // The file system's longest name in the nearest existing folder on the way to `path`.
@@ -94,6 +151,9 @@ results_staging::results_staging(std::string parameter, std::string given, fs::p
     // and leave the folder it pointed to with the old results.
     link_ = folder_;
     const fs::path target = fs::canonical(link_, ec);
+    if (ec == std::errc::too_many_symbolic_link_levels) {
+      refuse("a symlink loop (following it never reaches a folder); give the folder itself");
+    }
     if (ec) {
       refuse(fmt::format("a symlink to '{}', which does not exist; give the folder itself",
                          fs::read_symlink(link_, ec).string()));
@@ -101,6 +161,11 @@ results_staging::results_staging(std::string parameter, std::string given, fs::p
     folder_ = target;
   }
   check_names(files);
+  if (holds_current_folder(folder_)) {
+    refuse(
+        "the current folder or one of its parents, which a run never replaces (give a folder "
+        "inside it, e.g. --out results/mine)");
+  }
   const fs::file_status status = fs::status(folder_, ec);
   if (fs::exists(status)) {
     if (!fs::is_directory(status)) refuse("a file, not a folder");

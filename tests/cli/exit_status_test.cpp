@@ -34,6 +34,12 @@ TEST(ExitStatusTest, UsageErrorsExitTwoWithOneLine) {
       {"run", scene, "--threads", "-1"},      // out of range
       {"compare", "a"},                       // missing candidate
       {"compare", "a", "b", "--tolerance", "-1"},
+      // Regression: NaN passed CLI11's range checks (every comparison with NaN is false) and
+      // failed after the plan with exit 1.
+      {"compare", "a", "b", "--tolerance", "nan"},
+      {"run", scene, "--timing-min-seconds", "nan"},
+      {"run", scene, "--timing-min-seconds", "inf"},
+      {"run", scene, "--timing-min-seconds", "61"},
   };
   for (const auto& args : usage_errors) {
     std::string shown;
@@ -166,6 +172,18 @@ TEST(ExitStatusTest, TheReportedThreadCountIsTheOneUsed) {
   EXPECT_NE(r.out.find(" on 1 threads (64 allowed"), std::string::npos) << describe(r);
   const std::string readme = read_text(dir / "out" / "README.md");
   EXPECT_NE(readme.find("- threads: 1 used (64 allowed"), std::string::npos) << readme;
+}
+
+TEST(ExitStatusTest, ThePlanShowsTheCommandLinesOverrides) {
+  // Regression: the plan's header showed the scene's threads and timing_min_seconds while the
+  // run used --threads and --timing-min-seconds.
+  scratch_folder dir;
+  write_text(dir / "s.toml", tiny_scene("s", "", false));
+  const command_result r = run_quadmc(dir, {"run", (dir / "s.toml").string(), "--out", "out",
+                                            "--threads", "3", "--timing-min-seconds", "0.25"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_NE(r.out.find("threads 3,"), std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("timing_min_seconds 0.25"), std::string::npos) << describe(r);
 }
 
 TEST(ExitStatusTest, TheSummaryCountsTheCellsThatRan) {

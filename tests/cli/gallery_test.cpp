@@ -159,8 +159,9 @@ TEST(GalleryErrors, BadArgumentsGetOneLine) {
   expect_one_line_error({"gallery", "--realizations", "1"}, 2, "--realizations");
   expect_one_line_error({"gallery", "--realizations", "many"}, 2, "--realizations");
   expect_one_line_error({"gallery", "--realizations", "100001"}, 2, "--realizations");
-  expect_one_line_error({"gallery", "--seed", "-3"}, 2,
-                        "--seed: expected an integer K ≥ 0, got -3");
+  expect_one_line_error(
+      {"gallery", "--seed", "-3"}, 2,
+      "--seed: expected an integer K with 0 ≤ K ≤ 2^64 − 1 = 18446744073709551615, got -3");
   expect_one_line_error({"gallery", "--threads", "5000"}, 2, "--threads");
   expect_one_line_error({"gallery", "extra"}, 2, "extra");
   expect_one_line_error({"gallery", "--out"}, 2, "--out");

@@ -8,8 +8,11 @@
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc_process.hpp"
 
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -118,6 +121,80 @@ TEST(OutputFolderTest, OnlyRegularFilesCountAsResultsFiles) {
   EXPECT_EQ(read_text(dir / "docs" / "README.md"), "my notes");
   EXPECT_EQ(read_text(dir / "linked" / "plot.svg"), "<svg/>");
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"docs", "elsewhere.svg", "linked", "s.toml"}));
+}
+
+TEST(OutputFolderTest, FilesWithARunsNamesAreNotResultsWithoutARunsMetaCsv) {
+  // Regression: a folder holding only names a run writes was taken for old results and replaced:
+  // `--out art` deleted art/diagram1.svg, `--out notes` a hand-written README.md and logo.svg.
+  // Every run writes meta.csv, so a folder without one that quadmc wrote is somebody's.
+  scratch_folder dir;
+  write_text(dir / "s.toml", tiny_scene("s", "", false));
+  fs::create_directory(dir / "art");
+  write_text(dir / "art" / "diagram1.svg", "<svg/>");
+  fs::create_directory(dir / "notes");
+  write_text(dir / "notes" / "README.md", "my notes");
+  write_text(dir / "notes" / "logo.svg", "<svg/>");
+  fs::create_directory(dir / "fake");
+  write_text(dir / "fake" / "README.md", "mine");
+  write_text(dir / "fake" / "meta.csv", "author,year\nme,2026\n");
+  std::vector<std::map<std::string, std::string>> before;
+  for (const char* folder : {"art", "notes", "fake"}) before.push_back(snapshot(dir / folder));
+  for (const auto& [out, reason] : std::vector<std::pair<std::string, std::string>>{
+           {"art", "no meta.csv"}, {"notes", "no meta.csv"}, {"fake", "meta.csv is not one"}}) {
+    const command_result r = run_quadmc(dir, {"run", (dir / "s.toml").string(), "--out", out});
+    EXPECT_EQ(r.exit_status, 1) << describe(r);
+    EXPECT_EQ(line_count(r.err), 1u) << describe(r);
+    EXPECT_NE(r.err.find(reason), std::string::npos) << describe(r);
+    EXPECT_EQ(r.out, "") << "refused before the run\n" << describe(r);
+  }
+  EXPECT_EQ(snapshot(dir / "art"), before[0]);
+  EXPECT_EQ(snapshot(dir / "notes"), before[1]);
+  EXPECT_EQ(snapshot(dir / "fake"), before[2]);
+
+  // A run's own folder, markdown only, is still replaced by the next run: meta.csv is written
+  // with any output.
+  write_text(dir / "md.toml", tiny_scene("md", "first", false) + "csv = false\n");
+  ASSERT_EQ(run_quadmc(dir, {"run", (dir / "md.toml").string(), "--out", "md"}).exit_status, 0);
+  EXPECT_TRUE(fs::exists(dir / "md" / "meta.csv"));
+  const command_result again = run_quadmc(dir, {"run", (dir / "md.toml").string(), "--out", "md"});
+  EXPECT_EQ(again.exit_status, 0) << describe(again);
+}
+
+TEST(OutputFolderTest, RefusalsSayWhatTheEntryIs) {
+  // Regression: a FIFO named convergence.csv was "a file a run does not write" (it is a name a
+  // run writes, in a form it does not), and a symlink loop "did not exist".
+  scratch_folder dir;
+  write_text(dir / "s.toml", tiny_scene("s", "", false));
+  fs::create_directory(dir / "piped");
+  ASSERT_EQ(::mkfifo((dir / "piped" / "convergence.csv").c_str(), 0600), 0);
+  fs::create_symlink(dir / "loop", dir / "loop");
+  for (const auto& [out, says] : std::vector<std::pair<std::string, std::string>>{
+           {"piped", "'convergence.csv', a FIFO where a run writes a regular file"},
+           {"loop", "a symlink loop"}}) {
+    const command_result r = run_quadmc(dir, {"run", (dir / "s.toml").string(), "--out", out});
+    EXPECT_EQ(r.exit_status, 1) << describe(r);
+    EXPECT_EQ(line_count(r.err), 1u) << describe(r);
+    EXPECT_NE(r.err.find(says), std::string::npos) << "expected '" << says << "'\n" << describe(r);
+  }
+}
+
+TEST(OutputFolderTest, TheCurrentFolderAndItsParentsAreNeverReplaced) {
+  // Regression: `--out .` in a folder holding only a README.md replaced the working directory.
+  // Refused even when the folder is a run's results (`cd results/x && quadmc run … --out .`).
+  scratch_folder dir;
+  write_text(dir / "s.toml", tiny_scene("s", "", false));
+  ASSERT_EQ(run_quadmc(dir, {"run", (dir / "s.toml").string(), "--out", "sub"}).exit_status, 0);
+  const auto before = snapshot(dir / "sub");
+  for (const std::string out : {".", "..", "./"}) {
+    const command_result r = run_command(
+        dir, {"/bin/sh", "-c",
+              "cd sub && exec " + std::string(QUADMC_CLI) + " run ../s.toml --out " + out});
+    EXPECT_EQ(r.exit_status, 1) << out << "\n" << describe(r);
+    EXPECT_EQ(line_count(r.err), 1u) << describe(r);
+    EXPECT_NE(r.err.find("the current folder or one of its parents"), std::string::npos)
+        << describe(r);
+  }
+  EXPECT_EQ(snapshot(dir / "sub"), before);
 }
 
 TEST(OutputFolderTest, AFileAddedDuringTheRunIsNotDeleted) {

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace quadmc_cli_test {
@@ -91,6 +92,30 @@ TEST(PlanTimeCheckTest, ReadOnlyParentOrFolderIsRefused) {
     beside.push_back(e.path().filename().string());
   }
   EXPECT_EQ(beside, std::vector<std::string>{"out"}) << "no staging folder or lock file left";
+}
+
+TEST(PlanTimeCheckTest, AnUnwritableCellsCsvIsRefusedBeforeTheRun) {
+  // Regression: --cells-csv was opened after every cell had run, so a folder or a missing
+  // folder in its path cost the whole run.
+  scratch_folder dir;
+  write_text(dir / "s.toml", tiny_scene("s", "", false));
+  fs::create_directory(dir / "a_folder");
+  write_text(dir / "mine.csv", "keep me");
+  for (const auto& [file, says] : std::vector<std::pair<std::string, std::string>>{
+           {"a_folder", "a file (this is a folder"},
+           {"missing/cells.csv", "a file in an existing folder"}}) {
+    const command_result r =
+        run_quadmc(dir, {"run", (dir / "s.toml").string(), "--out", "out", "--cells-csv", file});
+    expect_refused_before_the_run(r, "--cells-csv");
+    EXPECT_NE(r.err.find(says), std::string::npos) << describe(r);
+    EXPECT_FALSE(fs::exists(dir / "out"));
+  }
+  // A file that exists is checked, not emptied, until the run has something to write.
+  EXPECT_EQ(read_text(dir / "mine.csv"), "keep me");
+  const command_result ok = run_quadmc(
+      dir, {"run", (dir / "s.toml").string(), "--out", "out", "--cells-csv", "mine.csv"});
+  EXPECT_EQ(ok.exit_status, 0) << describe(ok);
+  EXPECT_NE(read_text(dir / "mine.csv").find("shares_chunks,placement"), std::string::npos);
 }
 
 TEST(PlanTimeCheckTest, MissingMatplotlibIsReportedBeforeTheRun) {

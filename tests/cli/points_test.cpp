@@ -55,20 +55,71 @@ void expect_one_line_error(const std::vector<std::string>& args, const std::stri
   EXPECT_TRUE(r.out.empty()) << describe(r);
 }
 
-TEST(PointsCommand, RefusesANegativeSeedOrStreamAsAUsageError) {
-  // CLI11 alone reads "-3" into an unsigned as 2^64 − 3 and would print the points of that seed.
+TEST(PointsCommand, RefusesASeedOrStreamOutsideZeroTo2To64Minus1AsAUsageError) {
+  // CLI11 alone reads "-3" into an unsigned as 2^64 − 3, and clamps 2^64 and more to 2^64 − 1
+  // (so two different seeds gave the same points).
   for (const char* option : {"--seed", "--stream"}) {
+    for (const char* value : {"-3", "18446744073709551616", "99999999999999999999999", "1e3"}) {
+      scratch_folder dir;
+      std::vector<std::string> args{"points", "sobol", "--n", "4", "--s", "2", "--seed", "1"};
+      args.insert(args.end(), {option, value});
+      const command_result r = run_quadmc(dir, args);
+      EXPECT_EQ(r.exit_status, 2) << describe(r);
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
+      EXPECT_NE(r.err.find(std::string(option) +
+                           ": expected an integer K with 0 ≤ K ≤ 2^64 − 1 = "
+                           "18446744073709551615, got " +
+                           value),
+                std::string::npos)
+          << describe(r);
+      EXPECT_TRUE(r.out.empty()) << describe(r);
+    }
+    // The largest value is a seed (a stream) like any other.
     scratch_folder dir;
-    std::vector<std::string> args{"points", "sobol", "--n", "4", "--s", "2", "--seed", "1"};
-    args.insert(args.end(), {option, "-3"});
-    const command_result r = run_quadmc(dir, args);
-    EXPECT_EQ(r.exit_status, 2) << describe(r);
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << describe(r);
-    EXPECT_NE(r.err.find(std::string(option) + ": expected an integer K ≥ 0, got -3"),
-              std::string::npos)
-        << describe(r);
-    EXPECT_TRUE(r.out.empty()) << describe(r);
+    std::vector<std::string> args{"points", "sobol", "--n", "4", "--s", "2"};
+    if (std::string(option) == "--stream") args.insert(args.end(), {"--seed", "1"});
+    args.insert(args.end(), {option, "18446744073709551615"});
+    const command_result largest = run_quadmc(dir, args);
+    EXPECT_EQ(largest.exit_status, 0) << describe(largest);
   }
+}
+
+TEST(PointsCommand, StopsAtTheFirstFailedWriteAndAnnouncesAHugeOutput) {
+  // Regression: `quadmc points … --n 2^40 | head -2` went on computing every point after
+  // head had gone (over 60 s). The CPU limit turns a return of that into a failure (SIGXCPU)
+  // instead of a hang; the fixed command stops within milliseconds.
+  scratch_folder dir;
+  const command_result r =
+      run_command(dir, {"/bin/sh", "-c",
+                        "( ulimit -t 30; " + std::string(QUADMC_CLI) +
+                            " points independent --n 1099511627776 --s 1 --seed 1 2> err.txt; "
+                            "echo $? > status.txt ) | head -2"});
+  EXPECT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_EQ(r.out.rfind("x1\n0.", 0), 0u) << describe(r);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << describe(r);
+  EXPECT_EQ(read_text(dir / "status.txt"), "1\n") << read_text(dir / "err.txt");
+  const std::string err = read_text(dir / "err.txt");
+  EXPECT_NE(err.find("up to 26.4 TB of text (1099511627776 points × 1 coordinates)"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("cannot write to standard output"), std::string::npos) << err;
+}
+
+TEST(PointsCommand, BlamesTheOptionThatIsWrong) {
+  // Regression: `--s 100000` with Sobol' was reported as a bad --n, and `--n 1e3` got CLI11's
+  // conversion message instead of what N must be.
+  scratch_folder dir;
+  const command_result wide =
+      run_quadmc(dir, {"points", "sobol", "--n", "2", "--s", "100000", "--seed", "1"});
+  EXPECT_EQ(wide.exit_status, 1) << describe(wide);
+  EXPECT_NE(wide.err.find("invalid --s = 100000: expected s ≤ "), std::string::npos)
+      << describe(wide);
+  const command_result scientific =
+      run_quadmc(dir, {"points", "sobol", "--n", "1e3", "--s", "2", "--seed", "1"});
+  EXPECT_EQ(scientific.exit_status, 2) << describe(scientific);
+  EXPECT_NE(scientific.err.find("--n: expected an integer K with 0 ≤ K ≤ 2^64 − 1"),
+            std::string::npos)
+      << describe(scientific);
 }
 
 TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
@@ -81,7 +132,8 @@ TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
       "--randomization", "owen, permutation, none");
   expect_one_line_error({"points", "niederreiter", "--n", "8", "--s", "2", "--seed", "1"},
                         "point set", "sobol");
-  expect_one_line_error({"points", "sobol", "--n", "8", "--s", "3668", "--seed", "1"}, "--n",
+  // The dimension is what is wrong here, so --s is named (it was --n).
+  expect_one_line_error({"points", "sobol", "--n", "8", "--s", "3668", "--seed", "1"}, "--s",
                         "s ≤ 3667");
   expect_one_line_error(
       {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "baker"},

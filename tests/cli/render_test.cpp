@@ -172,8 +172,9 @@ void expect_one_line_error(const std::vector<std::string>& args, int status,
 
 TEST(RenderErrors, BadArgumentsGetOneLine) {
   expect_one_line_error({"render"}, 2, "scene");
-  expect_one_line_error({"render", "s.toml", "--seed", "-3"}, 2,
-                        "--seed: expected an integer K ≥ 0, got -3");
+  expect_one_line_error(
+      {"render", "s.toml", "--seed", "-3"}, 2,
+      "--seed: expected an integer K with 0 ≤ K ≤ 2^64 − 1 = 18446744073709551615, got -3");
   expect_one_line_error({"render", "s.toml", "--threads", "5000"}, 2, "--threads");
   expect_one_line_error({"render", "s.toml", "extra"}, 2, "extra");
   expect_one_line_error({"render", "s.toml", "--out"}, 2, "--out");
@@ -200,6 +201,12 @@ TEST(RenderErrors, BadScenesGetOneLineNamingTheKey) {
                         with("width = 16", "width = 0"));
   expect_one_line_error(args, 1, "key 'region': expected [x_min, y_min, x_max, y_max]",
                         with("[-0.55, -0.6, 0.15, 0.1]", "[1, 0, 0, 1]"));
+  // Regression: a region this far out squared distances past DBL_MAX, and the render exited 0
+  // with rmse = nan for every estimator.
+  expect_one_line_error(args, 1,
+                        "key 'region': ", with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
+  expect_one_line_error(args, 1, "|x| ≤ 1e100",
+                        with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
   expect_one_line_error(
       args, 1, "key 'occluder_height': ", with("occluder_height = 0.15", "occluder_height = 1.5"));
   expect_one_line_error(args, 1, "key 'images': expected true or false, got \"yes\"",

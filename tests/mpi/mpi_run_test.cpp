@@ -246,5 +246,29 @@ TEST(MpiRun, BadInputIsOneLineFromRankZero) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"scene.toml"}) << describe(r);
 }
 
+TEST(MpiRun, EveryOtherSubcommandRefusesMpirunInOneLine) {
+  // Regression: `mpirun -np 2 quadmc render` and `… gallery` ran whole on both ranks, wrote one
+  // folder from both and exited 1; `points`, `list` and the others printed once per rank.
+  scratch_folder dir;
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"render", (fs::path(QUADMC_SOURCE_DIR) / "bench/scenes/render.toml").string(), "--out",
+            "r"},
+           {"gallery", "--out", "g"},
+           {"points", "sobol", "--n", "4", "--s", "2", "--seed", "1"},
+           {"list"}}) {
+    const command_result r = run_ranks(dir, 2, args);
+    EXPECT_NE(r.exit_status, 0) << describe(r);
+    const std::vector<std::string> said = quadmc_lines(r.err);
+    ASSERT_EQ(said.size(), 1u) << describe(r);
+    EXPECT_NE(said[0].find("`quadmc " + args[0] +
+                           "` runs in one process, not under mpirun (2 "
+                           "ranks)"),
+              std::string::npos)
+        << describe(r);
+    EXPECT_EQ(r.out, "") << describe(r);
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{}) << "nothing written";
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

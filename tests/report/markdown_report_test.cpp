@@ -194,6 +194,26 @@ TEST(MarkdownReport, WhoLeadsAtEqualNPerFamilyAndDimension) {
   expect_rectangular_tables(page);
 }
 
+// Regression: the page of a run with plots = false embedded plots that were not written, and
+// with csv = false pointed to CSV files that did not exist.
+TEST(MarkdownReport, ThePageLinksOnlyTheFilesTheRunWrote) {
+  const std::vector<convergence_table> tables = markdown_sample_tables();
+  run_info info;
+  info.scene = "unit";
+  const std::string all = render_results_markdown(info, tables);
+  EXPECT_NE(all.find(".svg)"), std::string::npos);
+  EXPECT_NE(all.find("`convergence.csv`"), std::string::npos);
+  info.plots = false;
+  const std::string no_plots = render_results_markdown(info, tables);
+  EXPECT_EQ(no_plots.find(".svg"), std::string::npos) << no_plots;
+  EXPECT_NE(no_plots.find("`convergence.csv`"), std::string::npos);
+  info.csv = false;
+  const std::string neither = render_results_markdown(info, tables);
+  EXPECT_EQ(neither.find(".svg"), std::string::npos) << neither;
+  EXPECT_EQ(neither.find(".csv`"), std::string::npos) << neither;
+  EXPECT_NE(neither.find("[output] turns csv off"), std::string::npos) << neither;
+}
+
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
   // A name that already ends in "_s<s>" (a default name, a `dimensions` expansion) is used as it
   // is; any other gets "_s=<s>".

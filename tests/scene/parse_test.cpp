@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -109,6 +110,45 @@ TEST(ParseScene, DefaultsWhenOptionalKeysAreOmitted) {
   EXPECT_TRUE(sc.methods[0].tolerances.empty());
   EXPECT_FALSE(sc.budget.max_evaluations.has_value());
   EXPECT_TRUE(sc.output.csv && sc.output.markdown && sc.output.plots);
+}
+
+// Regression: a scene without `name` whose file name was not portable got the name "scene", so
+// "my results.toml" and "other-test+1.toml" wrote one results/scene/ over the other.
+TEST(ParseScene, AFileNameThatIsNotPortableGivesAPortableNameOfItsOwn) {
+  const std::string text = replace(valid, "name = \"t\"\n", "");
+  const auto name_of = [&](std::string_view file) { return parse_scene(text, file).name; };
+  const std::vector<std::string> names = {name_of("my results.toml"), name_of("my+results.toml"),
+                                          name_of("other-test+1.toml"),
+                                          name_of("r\xc3\xa9sum\xc3\xa9.toml")};
+  const std::vector<std::string> prefixes = {"my_results-", "my_results-", "other-test_1-",
+                                             "r__sum__-"};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& n = names[i];
+    EXPECT_TRUE(is_portable_name(n)) << n;
+    ASSERT_EQ(n.rfind(prefixes[i], 0), 0u) << n;
+    const std::string hash = n.substr(prefixes[i].size());
+    EXPECT_EQ(hash.size(), 8u) << n;
+    EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos) << n;
+  }
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size())
+      << "names that differ only in unportable bytes get folders of their own";
+  EXPECT_EQ(name_of("dir/my results.toml"), names[0]) << "the same file name, the same folder";
+  EXPECT_EQ(name_of("dir/my_run.toml"), "my_run") << "a portable file name is kept as it is";
+  // "." and ".." are made of allowed characters: the message says they are not names.
+  const std::string dots = replace(valid, "name = \"t\"", "name = \"..\"");
+  const std::string m = expect_error(dots, line_of(dots, "name"), "name");
+  EXPECT_NE(m.find("other than '.' and '..'"), std::string::npos) << m;
+}
+
+// Regression: a name with a newline was shown as "a b" (another name than the one refused), and
+// max_evaluations = 1e300 was refused as "expected a positive number", which it is.
+TEST(SceneErrors, MessagesShowTheValueAsWrittenAndTheRealRange) {
+  const std::string newline = replace(valid, "name = \"t\"", "name = \"a\\nb\"");
+  std::string m = expect_error(newline, line_of(newline, "name"), "name");
+  EXPECT_NE(m.find("got \"a\\nb\""), std::string::npos) << m;
+  const std::string huge = std::string(valid) + "max_evaluations = 1e300\n";
+  m = expect_error(huge, line_of(huge, "max_evaluations"), "budget.max_evaluations");
+  EXPECT_NE(m.find("a whole number of evaluations from 1 to 2^63 − 1"), std::string::npos) << m;
 }
 
 TEST(ParseScene, ListAndRangeFormsOfN) {

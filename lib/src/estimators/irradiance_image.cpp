@@ -47,6 +47,12 @@ void validate(const irradiance_plane& plane) {
   require(finite && g[0] < g[2] && g[1] < g[3], "region",
           fmt::format("[{}, {}, {}, {}]", g[0], g[1], g[2], g[3]),
           "finite [x_min, y_min, x_max, y_max] with x_min < x_max and y_min < y_max");
+  // The irradiance formulas square distances to the light: at |x| ≈ 1e155 they overflow and every
+  // figure of the render became NaN. 1e100 leaves squares and products of them finite.
+  const bool bounded =
+      std::all_of(g.begin(), g.end(), [](double v) { return std::abs(v) <= 1e100; });
+  require(bounded, "region", fmt::format("[{}, {}, {}, {}]", g[0], g[1], g[2], g[3]),
+          "coordinates with |x| ≤ 1e100 (the squared distances to the light must stay finite)");
   require(plane.width >= 1 && plane.width <= max_side, "width", plane.width, "1 ≤ W ≤ 32768");
   require(plane.height >= 1 && plane.height <= max_side, "height", plane.height, "1 ≤ H ≤ 32768");
   for (const double x : {g[0], g[2]}) {

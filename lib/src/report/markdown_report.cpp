@@ -330,7 +330,9 @@ std::string render_results_markdown(const run_info& info,
       "asymptotic one only from the N the reason gives); *at_floor* when the rounding floor of "
       "the evaluation precision and the accumulator comes before three points could be fitted. "
       "*steeper* and *shallower* remain only where no computed reason explains the slope: they "
-      "are findings, listed first. Data: `convergence.csv`, `slopes.csv`.\n\n";
+      "are findings, listed first.";
+  out += info.csv ? " Data: `convergence.csv`, `slopes.csv`.\n\n"
+                  : " (No CSV files: the scene's [output] turns csv off.)\n\n";
   out +=
       "Times: `time (s)` is the wall time of a cell's repetitions; `s per estimate` is its "
       "stable timing, apart from the statistics: repetition 1's call repeated in batches until "
@@ -405,7 +407,10 @@ std::string render_results_markdown(const run_info& info,
         "square over its repetitions) and the mean χ²/dof of the iterations (VEGAS). A 1σ "
         "estimate (Monte Carlo's σ̂/√N, VEGAS's σ̂) that is honest covers ≈ 0.68 at 1× and ≈ 0.997 "
         "at 3×; a bound (Romberg's last difference, Genz–Malik's |Q₇ − Q₅|) should cover every "
-        "estimate. Column `estimate_covers` (`_3x`) of `convergence.csv` holds it per cell.\n\n";
+        "estimate.";
+    out += info.csv
+               ? " Column `estimate_covers` (`_3x`) of `convergence.csv` holds it per cell.\n\n"
+               : "\n\n";
     out +=
         "| method | class | series | cells | estimates | \\|error\\| ≤ ê | ≤ 3ê | worst RMSE/ê | "
         "χ²/dof |\n";
@@ -432,8 +437,10 @@ std::string render_results_markdown(const run_info& info,
   }
   for (const auto& [integrand, s] : groups) {
     out += fmt::format("## {} (s = {})\n\n", cell(integrand), s);
-    out += fmt::format("![error against N]({})\n\n", convergence_plot_file(integrand, s));
-    out += fmt::format("![work-precision]({})\n\n", work_precision_plot_file(integrand, s));
+    if (info.plots) {
+      out += fmt::format("![error against N]({})\n\n", convergence_plot_file(integrand, s));
+      out += fmt::format("![work-precision]({})\n\n", work_precision_plot_file(integrand, s));
+    }
     std::vector<double> targets;
     for (const convergence_table& t : tables) {
       if (t.integrand != integrand || t.s != s) continue;

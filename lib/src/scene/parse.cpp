@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -57,7 +58,37 @@ constexpr std::size_t max_ladder = scene_limits::max_ladder;
 std::string describe(const toml::node& n) {
   if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
   if (const auto* v = n.as_floating_point()) return fmt::format("{}", v->get());
-  if (const auto* v = n.as_string()) return fmt::format("\"{}\"", v->get());
+  if (const auto* v = n.as_string()) {
+    // Control characters escaped as TOML writes them: a message is one line, and "a\nb" shown
+    // as "a b" was another name than the one refused.
+    std::string text;
+    for (const char c : v->get()) {
+      switch (c) {
+        case '\n':
+          text += "\\n";
+          break;
+        case '\t':
+          text += "\\t";
+          break;
+        case '\r':
+          text += "\\r";
+          break;
+        case '"':
+          text += "\\\"";
+          break;
+        case '\\':
+          text += "\\\\";
+          break;
+        default:
+          if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+            text += fmt::format("\\u{:04X}", static_cast<unsigned char>(c));
+          } else {
+            text += c;
+          }
+      }
+    }
+    return fmt::format("\"{}\"", text);
+  }
   if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
   if (n.is_array()) return "an array";
   if (n.is_table()) return "a table";
@@ -157,23 +188,20 @@ class scene_reader {
   // and a suffix, so they are at most max_name_length long; the scene's own `name` is one folder
   // name, whose length the command checks against the file system.
   std::string display_name(const entry& e, bool bounded = true) const {
+    // "." and ".." are made of those characters but name the folder itself and its parent.
     const std::string what =
-        bounded ? fmt::format("a name of letters, digits, '_', '-', '.' (at most {} characters)",
-                              max_name_length)
-                : std::string("a name of letters, digits, '_', '-', '.'");
+        bounded ? fmt::format(
+                      "a name of letters, digits, '_', '-', '.', other than '.' and '..' "
+                      "(at most {} characters)",
+                      max_name_length)
+                : std::string("a name of letters, digits, '_', '-', '.', other than '.' and '..'");
     std::string s = string(e, what);
     if (!is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
     return s;
   }
   static constexpr std::size_t max_name_length = scene_limits::max_name_length;
 
-  static bool is_portable_name(std::string_view s) {
-    if (s.empty() || s == "." || s == "..") return false;
-    return std::all_of(s.begin(), s.end(), [](char c) {
-      return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-             c == '_' || c == '-' || c == '.';
-    });
-  }
+  static bool is_portable_name(std::string_view s) { return quadmc::is_portable_name(s); }
 
   const toml::table& table(const entry& e, std::string_view what) const {
     if (const auto* t = e.value->as_table()) return *t;
@@ -643,7 +671,7 @@ budget_spec parse_budget(const scene_reader& r, const entry& e) {
   b.N_location = r.at(*N);
   if (const auto m = r.find(t, "max_evaluations", "budget")) {
     b.max_evaluations = r.count(*m, 1, std::numeric_limits<std::int64_t>::max(),
-                                "a positive number of evaluations");
+                                "a whole number of evaluations from 1 to 2^63 − 1");
   }
   if (const auto s = r.find(t, "max_seconds", "budget")) {
     const double v = r.number(*s, "a positive number of seconds");
@@ -692,8 +720,7 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
   if (const auto e = r.find(root, "name", "")) {
     sc.name = r.display_name(*e, false);
   } else {
-    sc.name = std::filesystem::path(r.file()).stem().string();
-    if (!scene_reader::is_portable_name(sc.name)) sc.name = "scene";
+    sc.name = scene_name_from_file(r.file());
   }
   if (const auto e = r.find(root, "description", "")) sc.description = r.string(*e, "a string");
   if (const auto e = r.find(root, "seed", "")) {
@@ -746,6 +773,35 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
 }
 
 }  // namespace
+
+namespace {
+
+bool is_portable_char(char c) noexcept {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-' || c == '.';
+}
+
+}  // namespace
+
+bool is_portable_name(std::string_view name) noexcept {
+  if (name.empty() || name == "." || name == "..") return false;
+  return std::all_of(name.begin(), name.end(), is_portable_char);
+}
+
+// FNV-1a (32 bits: offset basis 2166136261, prime 16777619) over the file name's bytes: a hash
+// fixed by its definition, the same on every machine, so the folder name is too.
+std::string scene_name_from_file(const std::filesystem::path& file, std::string_view when_empty) {
+  const std::string stem = file.stem().string();
+  if (is_portable_name(stem)) return stem;
+  if (stem.empty()) return std::string(when_empty);
+  std::string name;
+  std::uint32_t hash = 2166136261u;
+  for (const char c : stem) {
+    hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+    name += is_portable_char(c) ? c : '_';
+  }
+  return fmt::format("{}-{:08x}", name, hash);
+}
 
 std::span<const scene_table_keys> scene_keys() noexcept {
   return key_tables;

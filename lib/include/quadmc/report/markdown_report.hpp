@@ -30,6 +30,9 @@ struct run_info {
   provenance build;                  // version, commit, compiler, SIMD levels (also meta.csv)
   double run_seconds = 0.0;          // wall time of the whole run
   std::vector<std::string> skipped;  // the plan's skipped cells, with their reason
+  // What else the folder holds ([output] of the scene): the page links only files that exist.
+  bool csv = true;    // convergence.csv and slopes.csv
+  bool plots = true;  // the error and work-precision plots
 };
 
 // Plot file names, distinct for distinct (integrand, s) by construction, so that no two series

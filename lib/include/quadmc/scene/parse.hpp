@@ -156,6 +156,18 @@ std::span<const scene_table_keys> scene_keys() noexcept;
 // `file_name` is used in messages only (and as the default scene name).
 scene parse_scene(std::string_view toml_text, std::string_view file_name);
 
+// Whether `name` may be a folder or file name part of results/: letters, digits, '_', '-', '.',
+// and not "." or ".." (which are made of them but name a folder itself and its parent).
+bool is_portable_name(std::string_view name) noexcept;
+
+// The results folder name of a scene file without `name`: the file name without its extension
+// when that is portable; otherwise each other byte becomes '_' and "-" and 8 hex digits of a hash
+// of the file name follow ("my results.toml" → "my_results-…"), so that two files whose names
+// differ only in such bytes get folders of their own (README, "Scene files"). `when_empty` for a
+// file name with nothing before the extension (a scene read from standard input).
+std::string scene_name_from_file(const std::filesystem::path& file,
+                                 std::string_view when_empty = "scene");
+
 // Reads and parses `path`; a file that cannot be read is a scene_error at line 0.
 scene parse_scene_file(const std::filesystem::path& path);
 
