@@ -210,6 +210,29 @@ N = [13, 20, 29]
   EXPECT_NE(listing.find("L=3"), std::string::npos) << listing;
 }
 
+TEST(MakePlan, ASparseGridAtItsLastLevelSaysSo) {
+  // Regression: Gauss–Patterson's tables end at level 7 (255 nodes), so every N past its grid
+  // gave the same level-7 grid, and the plan said only "same grid" (and Clenshaw–Curtis "level
+  // 14"), hiding the cap.
+  const plan p = plan_of(R"(
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "smolyak"
+rule = "gauss_patterson"
+[budget]
+N = [100000, 10000000]
+)");
+  ASSERT_EQ(p.cells.size(), 1u);
+  EXPECT_EQ(p.cells[0].level, 7);
+  const plan_skip* s = find_skip(p, "smolyak_gauss_patterson × genz_gaussian_s2, N = 10000000");
+  ASSERT_NE(s, nullptr) << format_plan(p);
+  EXPECT_EQ(s->reason,
+            "same grid as N = 100000 (level 7, 1793 evaluations: level 7 is the last of the "
+            "gauss_patterson tables)");
+}
+
 TEST(MakePlan, CellsOverTheBudgetAreSkippedWithTheReason) {
   // plain_mc: N × 100 repetitions; 6561·100 = 656100 ≤ 1e6 < 65535·100.
   const plan p = plan_of(base);

@@ -80,9 +80,9 @@ std::optional<std::string> unavailable_method(std::string_view name) {
       return fmt::format(
           "method '{}' ({}) is a peer, not built into this quadmc (the peers are optional; "
           "GSL and cubature are GPL): run the scene with "
-          "build/<preset>/bench/peers/quadmc_with_peers, which the "
-          "release and test presets build when libgsl-dev and libcubature-dev are installed "
-          "(./run.sh deps)",
+          "build/<preset>/bench/peers/quadmc_with_peers, which ./run.sh benchmarks (release "
+          "preset) and ./run.sh test (test preset) build when libgsl-dev and libcubature-dev "
+          "are installed; README command 1 builds only the plain command",
           name, p.library);
     }
   }

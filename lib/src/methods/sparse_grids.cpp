@@ -66,6 +66,11 @@ class smolyak_method final : public method {
       best = cell_size{*n, 0, 0, 0, static_cast<int>(L)};
     }
     if (!best) return {std::nullopt, "N is below the smallest grid, 1 evaluation"};
+    // The tables end at max_level: a larger N gets the same grid, and the plan says why.
+    if (static_cast<unsigned>(best->level) == rule.max_level()) {
+      return {best, fmt::format("level {} is the last of the {} tables", rule.max_level(),
+                                to_string(rule_.kind))};
+    }
     return {best, {}};
   }
 
@@ -183,10 +188,11 @@ class adaptive_sparse_grid_method final : public method {
 
 constexpr std::array<option_doc, 1> smolyak_options{{
     {"rule",
-     "the nested 1D rule: \"clenshaw_curtis\" (default; 1, 3, 5, 9, … nodes), "
-     "\"gauss_patterson\" (1, 3, 7, 15, … nodes, interior only), \"trapezoid\" (1, 2, 4, … nodes, "
-     "for integrands periodic in every coordinate); the label gets the suffix unless "
-     "clenshaw_curtis"},
+     "the nested 1D rule: \"clenshaw_curtis\" (default; 1, 3, 5, 9, … nodes, levels 0 to 14), "
+     "\"gauss_patterson\" (1, 3, 7, 15, … nodes, interior only, levels 0 to 7: the tables end at "
+     "255 nodes), \"trapezoid\" (1, 2, 4, … nodes, levels 0 to 16, for integrands periodic in "
+     "every coordinate); N beyond the last level's grid gives that grid again (the plan says "
+     "so); the label gets the suffix unless clenshaw_curtis"},
 }};
 constexpr std::array<option_doc, 1> adaptive_options{{
     {"rule",

@@ -369,11 +369,13 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
   };
 
   std::vector<std::pair<std::uint64_t, plan_cell>> kept;  // (nominal N, cell) for duplicates
-  auto consider = [&](std::uint64_t N, plan_cell c) {
+  // `note`: what the method says of this size (a sparse grid at its last level).
+  auto consider = [&](std::uint64_t N, plan_cell c, const std::string& note = {}) {
     for (const auto& [earlier, k] : kept) {
       if (k.evaluations == c.evaluations && k.per_axis == c.per_axis && k.level == c.level) {
-        skips.push_back({what(N), fmt::format("same {} as N = {} ({})", rule ? "grid" : "strata",
-                                              earlier, describe_grid(c))});
+        skips.push_back(
+            {what(N), fmt::format("same {} as N = {} ({}{})", rule ? "grid" : "strata", earlier,
+                                  describe_grid(c), note.empty() ? "" : ": " + note)});
         return;
       }
     }
@@ -451,7 +453,7 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
     }
     plan_cell c = sized(base, *size.size);
     c.nominal_N = N;
-    consider(N, c);
+    consider(N, c, size.reason);
   }
 }
 
