@@ -68,8 +68,9 @@ std::optional<std::string> first_foreign_entry(const fs::path& folder,
     const std::string name = it->path().filename().string();
     std::error_code status_ec;
     const fs::file_status status = it->symlink_status(status_ec);
-    if (!is_results_file(name))
+    if (!is_results_file(name)) {
       return fmt::format("it holds '{}', which a run does not write", name);
+    }
     if (!fs::is_regular_file(status)) {
       return fmt::format("it holds '{}', {} where a run writes a regular file", name,
                          file_kind(status));
