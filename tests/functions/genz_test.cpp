@@ -339,6 +339,16 @@ TEST(Genz, BadParametersAreNamed) {
             std::string::npos);
   EXPECT_NE(message_of([] { genz_discontinuous({1.0}, {0.5}, {2}); }).find("invalid cut = 2"),
             std::string::npos);
+  // Regression: u₁ = 0 on a cut coordinate makes the integral 0, and the refusal named a.
+  EXPECT_NE(message_of([] {
+              genz_discontinuous({1.0, 1.0}, {0.0, 0.5});
+            }).find("invalid u = 0"),
+            std::string::npos)
+      << message_of([] {
+           genz_discontinuous({1.0, 1.0}, {0.0, 0.5});
+         });
+  // A coordinate that is not cut may have uᵢ = 0 (it is not used).
+  EXPECT_NO_THROW(genz_discontinuous({1.0, 1.0, 1.0}, {0.5, 0.5, 0.0}));
   EXPECT_NE(message_of([] {
               genz_discontinuous({1.0, 1.0}, {0.5, 0.5}, {1, 1});
             }).find("distinct"),

@@ -516,6 +516,12 @@ class genz_discontinuous {
       require(c >= 1 && c <= s, "cut", c, fmt::format("indices in 1..{} (1-based)", s));
       require(std::isinf(threshold_[c - 1]), "cut", c, "distinct indices");
       threshold_[c - 1] = u_[c - 1];
+      // f is 0 beyond a cut coordinate's uᵢ, so uᵢ = 0 makes the integral 0: refused here as u,
+      // the parameter at fault (below, the zero reference was blamed on a).
+      require(u_[c - 1] > 0.0, "u", u_[c - 1],
+              fmt::format("uᵢ > 0 for the cut coordinate {} (f = 0 for xᵢ > uᵢ: uᵢ = 0 makes the "
+                          "integral 0, which leaves no relative error to measure)",
+                          c));
     }
     // f's largest value is e^peak, peak = Σ max(0, aᵢ·upperᵢ): it must be finite, or exp(Σaᵢxᵢ)
     // overflows at the corner. Then no factor of the closed form exceeds e^{aᵢ·upperᵢ}, so only
