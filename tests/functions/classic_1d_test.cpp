@@ -4,6 +4,7 @@
 
 #include "jump_metadata.hpp"
 #include "reference_quadrature.hpp"
+#include "support/invalid_argument_message.hpp"
 
 #include <gtest/gtest.h>
 #include <boost/math/differentiation/autodiff.hpp>
@@ -21,6 +22,7 @@ namespace {
 using test::at;
 using test::gauss_kronrod;
 using test::relative_error;
+using test_support::message_of;
 
 template <class F>
 double integral_by_gauss_kronrod(const F& f, std::vector<double> breaks = {}) {
@@ -127,45 +129,29 @@ TEST(Classic1d, StepCarriesItsJumpAndFlatPieces) {
 }
 
 TEST(Classic1d, BadParametersAreNamed) {
-  auto message = [](auto&& build) -> std::string {
-    try {
-      build();
-    } catch (const invalid_argument& e) {
-      return e.what();
-    }
-    return "no exception";
-  };
-  EXPECT_NE(message([] { poly_1d(1.0, 1.0); }).find("invalid upper = 1"), std::string::npos);
-  EXPECT_NE(message([] { exp_1d(NAN, 1.0); }).find("invalid lower"), std::string::npos);
-  EXPECT_NE(message([] { abs_kink_1d(1.5); }).find("invalid c = 1.5"), std::string::npos);
-  EXPECT_NE(message([] { step_1d(-0.1); }).find("invalid c = -0.1"), std::string::npos);
+  EXPECT_NE(message_of([] { poly_1d(1.0, 1.0); }).find("invalid upper = 1"), std::string::npos);
+  EXPECT_NE(message_of([] { exp_1d(NAN, 1.0); }).find("invalid lower"), std::string::npos);
+  EXPECT_NE(message_of([] { abs_kink_1d(1.5); }).find("invalid c = 1.5"), std::string::npos);
+  EXPECT_NE(message_of([] { step_1d(-0.1); }).find("invalid c = -0.1"), std::string::npos);
 }
 
 // exp on [0, 1000] had exact = inf and poly on [−1e100, 1e100] exact = NaN, and both planned:
 // the run then failed at the first value. The bounds that keep the closed forms finite are
 // checked when the integrand is built.
 TEST(Classic1d, BoundsWhoseIntegralOverflowsAreRefused) {
-  auto message = [](auto&& build) -> std::string {
-    try {
-      build();
-    } catch (const invalid_argument& e) {
-      return e.what();
-    }
-    return "no exception";
-  };
-  std::string m = message([] { exp_1d(0.0, 1000.0); });
+  std::string m = message_of([] { exp_1d(0.0, 1000.0); });
   EXPECT_NE(m.find("invalid upper = 1000: expected upper ≤ 709.78"), std::string::npos) << m;
   const double at_limit = exp_1d(709.0, 709.78).info().exact;
   EXPECT_TRUE(std::isfinite(at_limit));
   EXPECT_NEAR(at_limit, std::exp(709.78) - std::exp(709.0), 1e-15 * at_limit);
-  m = message([] { poly_1d(-1e100, 1e100); });
+  m = message_of([] { poly_1d(-1e100, 1e100); });
   EXPECT_NE(m.find("invalid lower = -1e+100: expected |lower| ≤ 1e51"), std::string::npos) << m;
-  m = message([] { poly_1d(0.0, 2e51); });
+  m = message_of([] { poly_1d(0.0, 2e51); });
   EXPECT_NE(m.find("invalid upper = 2e+51"), std::string::npos) << m;
   // (1e51)⁶/6 = 1.7e305: finite.
   EXPECT_NEAR(poly_1d(0.0, 1e51).info().exact, 1e306 / 6.0, 1e-14 * 1e306 / 6.0);
   // A width beyond double: every node lower + (upper − lower)·t would be NaN.
-  m = message([] { sin_1d(-1e308, 1e308); });
+  m = message_of([] { sin_1d(-1e308, 1e308); });
   EXPECT_NE(m.find("a finite width upper − lower"), std::string::npos) << m;
   EXPECT_TRUE(std::isfinite(sin_1d(-1e307, 1e307).info().exact));
 }
@@ -203,17 +189,9 @@ TEST(Classic1d, ClosedFormsKeepTheirDigitsOnNarrowIntervals) {
 // underflows), which the README says is refused; and what no form carries to 12 digits is refused
 // too, naming the interval.
 TEST(Classic1d, IntegralsThatUnderflowOrCannotBeCarriedAreRefused) {
-  auto message = [](auto&& build) -> std::string {
-    try {
-      build();
-    } catch (const invalid_argument& e) {
-      return e.what();
-    }
-    return "no exception";
-  };
   for (const std::string& m :
-       {message([] { exp_1d(-745.0, -744.9); }), message([] { poly_1d(0.0, 1e-60); }),
-        message([] { sin_1d(1e10, 1e10 + 1e-6); })}) {
+       {message_of([] { exp_1d(-745.0, -744.9); }), message_of([] { poly_1d(0.0, 1e-60); }),
+        message_of([] { sin_1d(1e10, 1e10 + 1e-6); })}) {
     EXPECT_NE(m.find("invalid upper = "), std::string::npos) << m;
     EXPECT_NE(m.find("accurate to 1e-12"), std::string::npos) << m;
   }

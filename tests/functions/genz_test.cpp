@@ -4,6 +4,7 @@
 
 #include "jump_metadata.hpp"
 #include "reference_quadrature.hpp"
+#include "support/invalid_argument_message.hpp"
 
 #include <gtest/gtest.h>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -314,15 +315,7 @@ TEST(Genz, CornerPeakRejectsParametersWhereTheClosedFormIsUntrustworthy) {
   }
 }
 
-template <class F>
-std::string message_of(F&& build) {
-  try {
-    build();
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using test_support::message_of;
 
 TEST(Genz, BadParametersAreNamed) {
   EXPECT_NE(message_of([] { genz_gaussian({}, {}); }).find("invalid a"), std::string::npos);

@@ -6,6 +6,7 @@
 #include "quadmc/functions/catalogue.hpp"
 #include "reference_quadrature.hpp"
 #include "support/floating_point.hpp"
+#include "support/invalid_argument_message.hpp"
 
 #include <gtest/gtest.h>
 
@@ -126,14 +127,7 @@ TEST(Stability1d, FloatTwinsRoundToSinglePrecision) {
   EXPECT_EQ(qf.info().exact, std::numbers::pi / 4);
 }
 
-std::string message_of(auto&& fn) {
-  try {
-    fn();
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using test_support::message_of;
 
 TEST(Stability1d, ShiftedExpRejectsBadBoxes) {
   EXPECT_EQ(message_of([] { shifted_exp_1d(std::nan(""), 1.0); }),

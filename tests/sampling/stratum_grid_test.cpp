@@ -4,18 +4,13 @@
 
 #include <string>
 
+#include "support/invalid_argument_message.hpp"
+
 namespace {
 
 using quadmc::stratum_grid;
 
-std::string message_of(auto&& f) {
-  try {
-    f();
-  } catch (const quadmc::invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using quadmc::test_support::message_of;
 
 TEST(StratumGrid, ValidSizesArePerfectPowers) {
   EXPECT_TRUE(stratum_grid::is_valid_size(2, 16));
