@@ -108,10 +108,8 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
   }
   const quadmc::point_set_options options = options_for(*set, r);
   // The dimension first, so that a set that cannot have s dimensions blames --s, not --n.
-  if (set->max_dimension != 0 && r.s > set->max_dimension) {
-    throw quadmc::invalid_argument(
-        "--s", std::to_string(r.s),
-        fmt::format("s ≤ {} for the {} points", set->max_dimension, set->name));
+  if (const std::string problem = quadmc::dimension_problem(*set, r.s); !problem.empty()) {
+    throw quadmc::invalid_argument("--s", std::to_string(r.s), problem);
   }
   const std::string problem = quadmc::size_problem(*set, r.s, r.n, options);
   if (!problem.empty()) {

@@ -115,6 +115,19 @@ TEST(PointSetCatalogue, PaddedJitteredHoldsSquaresInTwoOrMoreDimensions) {
       << size_problem(padded, 2, 96);
 }
 
+// The dimension check alone (quadmc points blames --s with it), and size_problem begins with it.
+TEST(PointSetCatalogue, DimensionProblemNamesTheSetsLastDimension) {
+  const point_set_entry& sobol = *find_point_set("sobol");
+  ASSERT_NE(sobol.max_dimension, 0u);
+  EXPECT_EQ(dimension_problem(sobol, sobol.max_dimension), "");
+  const std::string beyond = dimension_problem(sobol, sobol.max_dimension + 1);
+  EXPECT_NE(beyond.find(fmt::format("s ≤ {} for the sobol points", sobol.max_dimension)),
+            std::string::npos)
+      << beyond;
+  EXPECT_EQ(size_problem(sobol, sobol.max_dimension + 1, 8), beyond);
+  EXPECT_EQ(dimension_problem(*find_point_set("independent"), 100000), "");
+}
+
 TEST(PointSetCatalogue, LargestCountIsAPerfectPowerOrSquare) {
   EXPECT_EQ(largest_point_count(point_count::perfect_power, 4096, 3).per_axis, 16u);
   EXPECT_EQ(largest_point_count(point_count::perfect_power, 4095, 3).points, 3375u);

@@ -364,13 +364,18 @@ bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
   return s != 0 && n != 0 && size_problem(set, s, n, options).empty();
 }
 
+std::string dimension_problem(const point_set_entry& set, std::size_t s) {
+  if (set.max_dimension != 0 && s > set.max_dimension) {
+    return fmt::format("s ≤ {} for the {} points, got s = {}", set.max_dimension, set.name, s);
+  }
+  return {};
+}
+
 std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_t n,
                          const point_set_options& options) {
   if (s == 0) return "a dimension s ≥ 1";
   if (n == 0) return "N ≥ 1";
-  if (set.max_dimension != 0 && s > set.max_dimension) {
-    return fmt::format("s ≤ {} for the {} points, got s = {}", set.max_dimension, set.name, s);
-  }
+  if (std::string problem = dimension_problem(set, s); !problem.empty()) return problem;
   if (n > (std::uint64_t{1} << 62) / s) {
     return "N·s < 2^62 (the counter space of one random stream)";
   }

@@ -165,6 +165,9 @@ bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
                   const point_set_options& options = {});
 // The largest N a set holds (2^32 for Sobol', 2^20 for the lattice), else 2^62.
 std::uint64_t max_point_count(const point_set_entry& set, const point_set_options& options = {});
+// "s ≤ 3667 for the sobol points, got s = 3668" for a dimension beyond the set's tables, or empty
+// (size_problem begins with it; a caller that names its parameters blames s, not N, for it).
+std::string dimension_problem(const point_set_entry& set, std::size_t s);
 // "N = 2^m required: nearest valid sizes 512 and 1024"-style text for a count a set cannot hold,
 // or empty when it can.
 std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_t n,
