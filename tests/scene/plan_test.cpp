@@ -7,6 +7,7 @@
 #include "quadmc/scene/parse.hpp"
 #include "scene_text.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -185,18 +186,25 @@ TEST(MakePlan, DuplicateGridsAreSkippedWithTheReason) {
   ASSERT_NE(find_skip(p, "midpoint × genz_gaussian_s8, N = 65535"), nullptr);
 }
 
-TEST(MakePlan, SparseGridCellsCarryTheirLevelAndRepeatedLevelsAreSkipped) {
-  // Clenshaw–Curtis Smolyak in s = 2 has 1, 5, 13, 29 nodes at L = 0 … 3: N = 13 and 20 give L = 2,
-  // N = 29 gives L = 3; the listing shows the level where a rule shows its n per axis.
-  const plan p = plan_of(R"(
+// The Smolyak method (with `rule`, when given) on the Genz Gaussian in s = 2, over the ladder `N`.
+plan smolyak_plan_of(std::string_view rule, std::string_view N) {
+  return plan_of(fmt::format(R"(
 [[integrand]]
 family = "genz_gaussian"
 dimension = 2
 [[method]]
 name = "smolyak"
+{}
 [budget]
-N = [13, 20, 29]
-)");
+N = {}
+)",
+                             rule.empty() ? "" : fmt::format("rule = \"{}\"", rule), N));
+}
+
+TEST(MakePlan, SparseGridCellsCarryTheirLevelAndRepeatedLevelsAreSkipped) {
+  // Clenshaw–Curtis Smolyak in s = 2 has 1, 5, 13, 29 nodes at L = 0 … 3: N = 13 and 20 give L = 2,
+  // N = 29 gives L = 3; the listing shows the level where a rule shows its n per axis.
+  const plan p = smolyak_plan_of("", "[13, 20, 29]");
   ASSERT_EQ(p.cells.size(), 2u);
   EXPECT_EQ(p.cells[0].level, 2);
   EXPECT_EQ(p.cells[0].evaluations, 13u);
@@ -214,16 +222,7 @@ TEST(MakePlan, ASparseGridAtItsLastLevelSaysSo) {
   // Regression: Gauss–Patterson's tables end at level 7 (255 nodes), so every N past its grid
   // gave the same level-7 grid, and the plan said only "same grid" (and Clenshaw–Curtis "level
   // 14"), hiding the cap.
-  const plan p = plan_of(R"(
-[[integrand]]
-family = "genz_gaussian"
-dimension = 2
-[[method]]
-name = "smolyak"
-rule = "gauss_patterson"
-[budget]
-N = [100000, 10000000]
-)");
+  const plan p = smolyak_plan_of("gauss_patterson", "[100000, 10000000]");
   ASSERT_EQ(p.cells.size(), 1u);
   EXPECT_EQ(p.cells[0].level, 7);
   const plan_skip* s = find_skip(p, "smolyak_gauss_patterson × genz_gaussian_s2, N = 10000000");
