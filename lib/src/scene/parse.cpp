@@ -196,12 +196,10 @@ class scene_reader {
                       max_name_length)
                 : std::string("a name of letters, digits, '_', '-', '.', other than '.' and '..'");
     std::string s = string(e, what);
-    if (!is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
+    if (!quadmc::is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
     return s;
   }
   static constexpr std::size_t max_name_length = scene_limits::max_name_length;
-
-  static bool is_portable_name(std::string_view s) { return quadmc::is_portable_name(s); }
 
   const toml::table& table(const entry& e, std::string_view what) const {
     if (const auto* t = e.value->as_table()) return *t;
