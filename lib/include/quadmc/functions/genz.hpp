@@ -197,6 +197,12 @@ class genz_oscillatory {
     for (double ai : a_) bound += std::abs(ai);
     require(std::isfinite(bound), "a", fmt::format("[{}]", fmt::join(a_, ", ")),
             "parameters with a finite 2π + Σ|aᵢ| (the phase of cos must stay finite)");
+    const exact_value e = exact();
+    require(e.error <= 1e-12, "a", fmt::format("[{}]", fmt::join(a_, ", ")),
+            fmt::format("parameters whose closed form is accurate to 1e-12 of its amplitude "
+                        "Π|sin(aᵢ/2)/(aᵢ/2)| (its bound is {:.2g}: the phase 2πu₁ + Σaᵢ/2 is too "
+                        "large to carry in two doubles)",
+                        e.error));
   }
   std::size_t dimension() const noexcept { return a_.size(); }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -208,16 +214,46 @@ class genz_oscillatory {
     }
     vector_cos(y, y);
   }
-  integrand_info info() const {
-    double half_sum = 0.0, product = 1.0;
-    for (double ai : a_) {
-      half_sum += 0.5 * ai;
-      product *= boost::math::sinc_pi(0.5 * ai);
+  // cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2), with `error` a bound on its absolute error relative
+  // to the amplitude Π|sin(aᵢ/2)/(aᵢ/2)|. Summed in one double, the phase lost its fraction of a
+  // period once Σaᵢ/2 was large (relative error 8e-8 at a₁ = 1e10, the wrong sign at 1e16). Here
+  // it is kept as an unevaluated sum hi + lo, TwoSum at every step
+  // (docs/theory.md#a-phase-carried-in-two-doubles): |hi + lo − phase| ≤ γ²ₙ·Σ|terms| ≈
+  // (n·u)²·Σ|terms|. aᵢ/2 is exact,
+  // and glibc's cos and sin reduce any double argument exactly and round to within an ulp, so
+  // cos(hi + lo) = cos hi·cos lo − sin hi·sin lo adds at most 8u, and the s factors sin(t)/t and
+  // their product 3u each: error ≤ (3s + 8)·u + the phase's.
+  struct exact_value {
+    double value;
+    double error;
+  };
+  exact_value exact() const {
+    const double u = std::numeric_limits<double>::epsilon() / 2.0;
+    double hi = phase_;
+    double lo = 0.0;
+    double magnitude = std::abs(phase_);
+    double product = 1.0;
+    for (const double ai : a_) {
+      const double term = 0.5 * ai;
+      const double sum = hi + term;  // TwoSum: sum + err = hi + term exactly
+      const double back = sum - hi;
+      lo += (hi - (sum - back)) + (term - back);
+      hi = sum;
+      magnitude += std::abs(term);
+      product *= boost::math::sinc_pi(term);
     }
+    const double n = static_cast<double>(a_.size() + 1);
+    const double phase_error = (n * u) * (n * u) * magnitude;
+    const double cosine = std::cos(hi) * std::cos(lo) - std::sin(hi) * std::sin(lo);
+    return {cosine * product, static_cast<double>(3 * a_.size() + 8) * u + phase_error};
+  }
+
+  integrand_info info() const {
     auto info =
-        detail::genz_info(genz_family::oscillatory, "cos(2πu₁ + Σ aᵢxᵢ)", a_.size(),
-                          std::cos(phase_ + half_sum) * product,
-                          "closed form cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2)", smoothness::analytic);
+        detail::genz_info(genz_family::oscillatory, "cos(2πu₁ + Σ aᵢxᵢ)", a_.size(), exact().value,
+                          "closed form cos(2πu₁ + Σaᵢ/2)·Π sin(aᵢ/2)/(aᵢ/2), the phase "
+                          "summed in two doubles",
+                          smoothness::analytic);
     // |∂ᵏf/∂xⱼᵏ| = |aⱼ|ᵏ·|cos or sin| ≤ |aⱼ|ᵏ (an upper bound, attained when the phase allows).
     const double m = detail::max_abs(a_);
     for (int k = 0; k <= 4; ++k) info.derivative_bound[k] = detail::finite_bound(std::pow(m, k));
