@@ -103,6 +103,16 @@ TEST(Catalogue, KeysAreDocumentedAndNamesUnique) {
   EXPECT_EQ(names.size(), 26u);
 }
 
+// The planner draws an instance from (seed, family, s, k) before building it, so it needs the
+// s that dimension = 0 will build: resolved_dimension must be what every factory resolves.
+TEST(Catalogue, ResolvedDimensionIsWhatEveryFactoryBuilds) {
+  for (const catalogue_entry& e : integrand_catalogue()) {
+    const any_integrand f = make_integrand(e.name, integrand_params{});
+    EXPECT_EQ(resolved_dimension(e, 0), f.dimension()) << e.name;
+    EXPECT_EQ(resolved_dimension(e, 5), 5u) << e.name;
+  }
+}
+
 std::string message_of(std::string_view name, const integrand_params& p) {
   try {
     make_integrand(name, p);

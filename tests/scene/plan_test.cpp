@@ -61,7 +61,7 @@ void expect_plan_error(std::string_view text, std::uint32_t line, std::string_vi
 TEST(MakePlan, MinimalScene) {
   const plan p = make_plan(parse_scene_file(QUADMC_SOURCE_DIR "/bench/scenes/minimal.toml"));
   ASSERT_EQ(p.instances.size(), 1u);
-  EXPECT_EQ(p.instances[0].seed, stream_id({42, 0, 0}));
+  EXPECT_EQ(p.instances[0].seed, stream_id({42, name_id("genz_gaussian"), 3, 0}));
   // Simpson in s = 3: the largest even n with (n+1)^3 ≤ N for N = 4^3 … 4^10 (integer cube
   // roots 4, 6, 10, 16, 25, 40, 64, 101).
   const auto simpson = cells_of(p, "simpson");
@@ -78,7 +78,9 @@ TEST(MakePlan, MinimalScene) {
   for (const auto& c : mc) {
     EXPECT_EQ(c.evaluations, c.nominal_N);
     EXPECT_EQ(c.repetitions, 64u);
-    EXPECT_EQ(c.stream_parts, (std::array<std::uint64_t, 4>{0, 0, 1, c.nominal_N}));
+    // Named by the integrand's name and the method's label, never by their positions.
+    EXPECT_EQ(c.stream_parts, (std::array<std::uint64_t, 4>{name_id(p.source.integrands[0].name), 0,
+                                                            name_id("plain_mc"), c.nominal_N}));
   }
   // 64 · 4^10 = 2^26 < 1e8: nothing is over budget, and no grid repeats.
   EXPECT_TRUE(p.skips.empty());
@@ -333,7 +335,8 @@ N = [10, 20]
 )");
   ASSERT_EQ(p.instances.size(), 6u);
   for (const auto& inst : p.instances) {
-    EXPECT_EQ(inst.seed, stream_id({9, inst.integrand, inst.instance}));
+    EXPECT_EQ(inst.seed,
+              stream_id({9, name_id("genz_gaussian"), inst.integrand + 1, inst.instance}));
     // Neither a nor u is given: both are drawn, with the catalogue's rule (catalogue.hpp).
     const genz_parameters expected =
         genz_random_parameters(genz_family::gaussian, inst.function.dimension(), inst.seed);
@@ -343,7 +346,9 @@ N = [10, 20]
     EXPECT_EQ(inst.params.dimension, inst.integrand + 1);
   }
   EXPECT_EQ(p.cells.size(), 2u * 3u * 2u);
-  EXPECT_EQ(p.cells.back().stream_parts, (std::array<std::uint64_t, 4>{1, 2, 0, 20}));
+  EXPECT_EQ(p.cells.back().stream_parts,
+            (std::array<std::uint64_t, 4>{name_id(p.source.integrands[1].name), 2,
+                                          name_id("plain_mc"), 20}));
   EXPECT_EQ(p.total_evaluations, 3u * 32u * (10 + 20) * 2u);
   EXPECT_NE(format_plan(p).find("drawn from seed"), std::string::npos);
 }

@@ -285,6 +285,11 @@ const catalogue_entry* find_family(std::string_view name) noexcept {
   return nullptr;
 }
 
+std::size_t resolved_dimension(const catalogue_entry& entry, std::size_t dimension) noexcept {
+  if (dimension != 0) return dimension;
+  return entry.fixed_dimension != 0 ? entry.fixed_dimension : 1;
+}
+
 const catalogue_entry& find_catalogue_entry(std::string_view name) {
   if (const catalogue_entry* e = find_family(name)) return *e;
   std::vector<std::string_view> names;

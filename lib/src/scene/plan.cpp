@@ -262,8 +262,11 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
   }
   const bool draws = draws_parameters(f, dimension_bound(f));
   const std::size_t first = out.size();
+  // Instance k draws from (seed, family, s, k) only, never from the integrand's position in the
+  // scene: the same family at the same s is the same instance in any scene with that seed.
+  const std::size_t s = resolved_dimension(*entry, f.dimension);
   for (std::size_t k = 0; k < f.ensemble; ++k) {
-    params.seed = stream_id({sc.seed, index, k});
+    params.seed = stream_id({sc.seed, name_id(f.family), s, k});
     if (k > 0 && !draws) {
       // Nothing is drawn from the seed: instance k is instance 0 (any_integrand shares it), and
       // a family whose reference costs 2^s terms is not summed K times.
@@ -565,7 +568,7 @@ plan make_plan(const scene& input) {
       for (plan_cell c : pair_cells) {
         c.instance = k;
         c.stream_parts = {
-            c.integrand, k, c.method,
+            name_id(f.name), k, name_id(sc.methods[c.method].label),
             std::isnan(c.tolerance) ? c.nominal_N : std::bit_cast<std::uint64_t>(c.tolerance)};
         p.total_evaluations =
             saturating_sum(p.total_evaluations, saturating_product(c.evaluations, c.repetitions));

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <span>
+#include <string_view>
 
 namespace quadmc {
 
@@ -47,6 +48,17 @@ constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
 constexpr std::uint64_t stream_id(std::initializer_list<std::uint64_t> parts) noexcept {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
   for (std::uint64_t p : parts) h = mix64(h ^ mix64(p + 0x9e3779b97f4a7c15ULL));
+  return h;
+}
+
+// A name as a stream part: 64-bit FNV-1a (offset basis 14695981039346656037, prime
+// 1099511628211) over its bytes, fixed by its definition, so the same on every machine. The
+// planner names an integrand's draws by its family and a cell's streams by the integrand's name
+// and the method's label, not by their positions in the scene: one row re-run in a scene of its
+// own draws the same numbers.
+constexpr std::uint64_t name_id(std::string_view name) noexcept {
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
   return h;
 }
 

@@ -66,6 +66,10 @@ const catalogue_entry* find_family(std::string_view name) noexcept;
 // The catalogue entry named `name`; throws invalid_argument("integrand", name, list of names).
 const catalogue_entry& find_catalogue_entry(std::string_view name);
 
+// The dimension the family builds for `dimension` (a scene's key; 0 asks for the default):
+// `dimension` itself, or the family's only s, or 1. make_integrand resolves 0 the same way.
+std::size_t resolved_dimension(const catalogue_entry& entry, std::size_t dimension) noexcept;
+
 // A key the family does not take, or one given as a number where it takes an array (or the
 // reverse): which key and why. The scene planner and make_integrand both ask this one rule.
 struct key_problem {

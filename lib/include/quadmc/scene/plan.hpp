@@ -89,7 +89,8 @@ struct plan_cell {
   int level = -1;                     // sparse grids: the Smolyak level L; −1 otherwise
   // Names the cell's random streams: the runner appends (repetition, chunk) and calls
   // quadmc::stream_id with the scene seed as the Philox key.
-  // {integrand, instance, method, nominal_N}; a tolerance cell has the tolerance's bits for N.
+  // {name_id(integrand name), instance, name_id(method label), nominal_N}, never positions in
+  // the scene; a tolerance cell has the tolerance's bits for N.
   std::array<std::uint64_t, 4> stream_parts{};
 
   cell_size size() const noexcept { return {evaluations, per_axis, points_per_axis, order, level}; }
