@@ -100,6 +100,33 @@ TEST(CellStatistics, RejectsANegativeChiSquaredOrAQOutsideTheUnitInterval) {
   EXPECT_THROW(compute_cell_statistics(reps, 1.0), invalid_argument);
 }
 
+// A tolerance cell's `reached`: the fraction of repetitions whose own error estimate is at or
+// below the target (equal counts); one without an estimate claims nothing. A sized cell has none,
+// and a target on some repetitions only is refused (the runner sets it on all or none).
+TEST(CellStatistics, ReachedCountsRepetitionsWhoseEstimateMetTheTarget) {
+  std::vector<repetition_result> reps = {
+      {1.0, nan, 10, 0.1}, {1.0, nan, 10, 0.1}, {1.0, nan, 10, 0.1}, {1.0, nan, 10, 0.1}};
+  const double estimates[] = {1e-4, 1e-3, 2e-3, 5e-4};
+  for (std::size_t r = 0; r < reps.size(); ++r) {
+    reps[r].error_estimate = estimates[r];
+    reps[r].target = 1e-3;
+  }
+  EXPECT_EQ(compute_cell_statistics(reps, 1.0).reached, 0.75);
+  reps[0].error_estimate = nan;
+  EXPECT_EQ(compute_cell_statistics(reps, 1.0).reached, 0.5);
+  for (auto& r : reps) r.target = nan;
+  EXPECT_TRUE(std::isnan(compute_cell_statistics(reps, 1.0).reached));
+  reps[2].target = 1e-3;
+  try {
+    compute_cell_statistics(reps, 1.0);
+    FAIL() << "a target on one repetition only must be refused";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("repetitions[2].target"), std::string::npos) << e.what();
+  }
+  reps[2].target = -1.0;
+  EXPECT_THROW(compute_cell_statistics(reps, 1.0), invalid_argument);
+}
+
 TEST(CellStatistics, DeterministicRuleHasNoSpreadAndNoCoverage) {
   const std::vector<repetition_result> reps = {{0.75, nan, 17, 0.0}};
   const cell_statistics c = compute_cell_statistics(reps, 1.0);

@@ -77,6 +77,49 @@ void expect_rectangular_tables(const std::string& page) {
   }
 }
 
+// A cell run to a tolerance whose own estimate is still above the target when its budget runs
+// out (genz_malik at 1e-300 spent 99,977 of 100,000 evaluations) was a row like any other: now
+// the table says ❌ and the page lists it under "Targets not reached"; a page whose every cell
+// got there says so in one line, and a page without tolerance cells has no such section.
+TEST(MarkdownReport, ToleranceCellsThatStoppedOnTheirBudgetAreListed) {
+  convergence_series s = series_of("peak", 2, "genz_malik", smoothness::analytic, 1.0,
+                                   rule_theory(7, smoothness::analytic));
+  const double tolerances[] = {1e-3, 1e-300};
+  const double estimates[] = {2e-4, 3e-9};
+  const std::uint64_t spent[] = {153, 99977};
+  for (int k = 0; k < 2; ++k) {
+    repetition_result r = repetition(1.0 + estimates[k] / 2, nan, spent[k], 1e-3);
+    r.error_estimate = estimates[k];
+    r.target = tolerances[k];
+    convergence_cell c = cell_at(0, {r});
+    c.tolerance = tolerances[k];
+    s.cells.push_back(c);
+  }
+  const std::vector<convergence_table> tables = {analyse_convergence(s)};
+  const std::string page = render_results_markdown(run_info{}, tables);
+  EXPECT_NE(page.find("## Targets not reached\n\n1 cell run to a tolerance spent its budget"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("- peak (s = 2), genz_malik, tolerance 1.000e-300: 1 of 1 repetition stopped "
+                      "with its error estimate above the target (99977 evaluations, error "
+                      "estimate 3.000e-09)"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("| 1.000e-300 | 99977 | 1.500e-09 | ❌ 0 of 1 |"), std::string::npos) << page;
+  EXPECT_NE(page.find("| 1.000e-03 | 153 | 1.000e-04 | ✅ |"), std::string::npos) << page;
+  expect_rectangular_tables(page);
+
+  s.cells.pop_back();
+  const std::vector<convergence_table> all_reached = {analyse_convergence(s)};
+  const std::string reached = render_results_markdown(run_info{}, all_reached);
+  EXPECT_NE(reached.find("## Targets not reached\n\nNone: every cell run to a tolerance"),
+            std::string::npos)
+      << reached;
+  const std::vector<convergence_table> sized_tables = markdown_sample_tables();
+  const std::string sized = render_results_markdown(run_info{}, sized_tables);
+  EXPECT_EQ(sized.find("Targets not reached"), std::string::npos);
+}
+
 TEST(MarkdownReport, EnvelopeSeriesShowsItsVerdictRatioAndEnvelopeColumn) {
   run_info info;
   info.scene = "jumps";

@@ -8,12 +8,14 @@
 #include "quadmc/rules/tensor_product.hpp"
 #include "quadmc/scene/parse.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +46,104 @@ repetitions = 3
 [budget]
 N = [1000]
 )";
+
+// Regression ("reproducing one row alone"): a Genz instance was drawn from the
+// integrand's position in the scene, and a cell's points from the integrand's and the method's
+// positions, so the time-to-error page's product peak at s = 8 could not be re-run alone (another
+// instance, 2,005 evaluations for 1e-3 instead of 401). Now a row's numbers depend on (seed,
+// family, s, instance) and on the integrand's name and the method's label only: the same row
+// placed second, after another integrand and method, gives bitwise the same estimates.
+TEST(RunPlan, OneRowReRunAloneGivesItsNumbers) {
+  constexpr std::string_view row = R"(
+[[integrand]]
+family = "genz_product_peak"
+dimension = 8
+ensemble = 2
+[[method]]
+name = "plain_mc"
+repetitions = 2
+[[method]]
+name = "genz_malik"
+control = "tolerance"
+tolerances = [1e-3]
+)";
+  constexpr std::string_view before = R"(seed = 5
+[[integrand]]
+family = "genz_gaussian"
+dimension = 8
+[[method]]
+name = "sobol"
+label = "sobol_first"
+)";
+  constexpr std::string_view budget = R"(
+[budget]
+N = [512]
+)";
+  const run_output alone =
+      run_plan(make_plan(parse_scene(fmt::format("seed = 5{}{}", row, budget), "alone.toml")));
+  const run_output second =
+      run_plan(make_plan(parse_scene(fmt::format("{}{}{}", before, row, budget), "second.toml")));
+  ASSERT_EQ(alone.series.size(), 2u);
+  ASSERT_EQ(second.series.size(), 6u);  // three methods on each of the two integrands
+  const auto series_of = [](const run_output& out, std::string_view integrand,
+                            std::string_view method) -> const convergence_series& {
+    for (const auto& s : out.series) {
+      if (s.integrand == integrand && s.method == method) return s;
+    }
+    throw std::runtime_error(fmt::format("no series {} × {}", method, integrand));
+  };
+  for (const std::string_view method : {"plain_mc", "genz_malik"}) {
+    const auto& a = series_of(alone, "genz_product_peak_s8", method);
+    const auto& b = series_of(second, "genz_product_peak_s8", method);
+    EXPECT_EQ(a.reference, b.reference) << method;
+    ASSERT_EQ(a.cells.size(), b.cells.size()) << method;
+    for (std::size_t c = 0; c < a.cells.size(); ++c) {
+      ASSERT_EQ(a.cells[c].repetitions.size(), b.cells[c].repetitions.size()) << method;
+      for (std::size_t r = 0; r < a.cells[c].repetitions.size(); ++r) {
+        EXPECT_EQ(a.cells[c].repetitions[r].value, b.cells[c].repetitions[r].value) << method;
+        EXPECT_EQ(a.cells[c].repetitions[r].evaluations, b.cells[c].repetitions[r].evaluations)
+            << method;
+      }
+    }
+  }
+}
+
+// A tolerance the method cannot reach within its budget: genz_malik to 1e-300 stops at
+// max_evaluations with its own estimate far above the target, and the cell says so (reached 0),
+// while 1e-2 is reached; a sized cell has no `reached`.
+TEST(RunPlan, ToleranceCellsSayWhetherTheyReachedTheTarget) {
+  const plan p = make_plan(parse_scene(R"(seed = 1
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "genz_malik"
+control = "tolerance"
+tolerances = [1e-2, 1e-300]
+[[method]]
+name = "plain_mc"
+repetitions = 4
+[budget]
+N = [256]
+max_evaluations = 2000
+)",
+                                       "reach.toml"));
+  const run_output out = run_plan(p);
+  ASSERT_EQ(out.series.size(), 2u);
+  const auto& cells = out.series[0].cells;
+  ASSERT_EQ(cells.size(), 2u);
+  const cell_statistics easy =
+      compute_cell_statistics(cells[0].repetitions, out.series[0].reference);
+  const cell_statistics hard =
+      compute_cell_statistics(cells[1].repetitions, out.series[0].reference);
+  EXPECT_EQ(easy.reached, 1.0) << easy.error_estimate;
+  EXPECT_EQ(hard.reached, 0.0) << hard.error_estimate;
+  EXPECT_LE(hard.evaluations, 2000u);
+  EXPECT_GT(hard.error_estimate, 1e-300);
+  EXPECT_TRUE(std::isnan(
+      compute_cell_statistics(out.series[1].cells[0].repetitions, out.series[1].reference)
+          .reached));
+}
 
 TEST(RunPlan, AccumulatorReachesTheRuleAndProgressIsPerRepetition) {
   const plan p = make_plan(parse_scene(accumulators, "acc.toml"));

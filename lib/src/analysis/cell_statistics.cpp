@@ -42,6 +42,13 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
     require(std::isnan(rep.error_estimate) ||
                 (std::isfinite(rep.error_estimate) && rep.error_estimate >= 0.0),
             where + ".error_estimate", rep.error_estimate, "NaN (none) or a finite value >= 0");
+    require(std::isnan(rep.target) || (std::isfinite(rep.target) && rep.target >= 0.0),
+            where + ".target", rep.target, "NaN (a sized cell) or a finite value >= 0");
+    require(std::isnan(rep.target) == std::isnan(repetitions[0].target), where + ".target",
+            rep.target,
+            fmt::format("{} like repetitions[0]'s (a cell is run to a tolerance or sized, "
+                        "in every repetition)",
+                        std::isnan(repetitions[0].target) ? "NaN" : "a value"));
     require(std::isnan(rep.absolute_weight_sum) ||
                 (std::isfinite(rep.absolute_weight_sum) && rep.absolute_weight_sum >= 0.0),
             where + ".absolute_weight_sum", rep.absolute_weight_sum,
@@ -137,6 +144,13 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
     }
     out.estimate_covers = static_cast<double>(within) / count;
     out.estimate_covers_3x = static_cast<double>(within_3x) / count;
+  }
+  if (!std::isnan(repetitions[0].target)) {
+    // NaN ≤ target is false: a repetition without an estimate claims nothing, so reached nothing.
+    const auto reached = std::count_if(
+        repetitions.begin(), repetitions.end(),
+        [](const repetition_result& rep) { return rep.error_estimate <= rep.target; });
+    out.reached = static_cast<double>(reached) / count;
   }
   // Means of the iterations' consistency, over repetitions that all report one.
   neumaier_sum chi2_sum, q_sum;

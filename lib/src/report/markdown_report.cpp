@@ -72,6 +72,15 @@ std::string time_to_error_text(const time_to_error& t) {
   return "?";
 }
 
+// The tolerance table's "reached" column: ✅ when every repetition's own estimate got to the
+// target, else ❌ with how many did.
+std::string reached_text(const cell_statistics& c) {
+  if (std::isnan(c.reached)) return "—";
+  if (c.reached >= 1.0) return "✅";
+  const auto repetitions = static_cast<double>(c.repetitions);
+  return fmt::format("❌ {} of {}", std::llround(c.reached * repetitions), c.repetitions);
+}
+
 void append_method_table(std::string& out, const convergence_table& t) {
   out += fmt::format("### {}\n\n", cell(t.method));
   const bool deterministic = !t.rows.empty() && t.rows.front().stats.repetitions == 1;
@@ -113,20 +122,23 @@ void append_method_table(std::string& out, const convergence_table& t) {
         "too large to compute them (O(N²·s)).\n\n";
   }
   out += fmt::format(
-      "| {} | evaluations | {} |{}{}{}{} std error | coverage 95% | time (s) | s per estimate | "
+      "| {} | evaluations | {} |{}{}{}{}{} std error | coverage 95% | time (s) | s per estimate | "
       "evals/s | floor |\n",
       to_tolerance ? "tolerance" : "N", deterministic ? "\\|error\\|" : "RMSE",
+      to_tolerance ? " reached |" : "",
       discrepant ? " L2-star discrepancy | centered discrepancy | wrap-around discrepancy |" : "",
       predicted ? " predicted | measured/predicted |" : "", estimated ? " error estimate |" : "",
       enveloped ? " envelope |" : "");
-  out += fmt::format("|---:|---:|---:|{}{}{}{}---:|---:|---:|---:|---:|:---:|\n",
-                     discrepant ? "---:|---:|---:|" : "", predicted ? "---:|---:|" : "",
-                     estimated ? "---:|" : "", enveloped ? "---:|" : "");
+  out += fmt::format("|---:|---:|---:|{}{}{}{}{}---:|---:|---:|---:|---:|:---:|\n",
+                     to_tolerance ? ":---:|" : "", discrepant ? "---:|---:|---:|" : "",
+                     predicted ? "---:|---:|" : "", estimated ? "---:|" : "",
+                     enveloped ? "---:|" : "");
   for (const convergence_row& row : t.rows) {
     const cell_statistics& c = row.stats;
     out += fmt::format(
-        "| {} | {} | {} |{}{}{}{} {} | {} | {} | {} | {} | {} |\n",
+        "| {} | {} | {} |{}{}{}{}{} {} | {} | {} | {} | {} | {} |\n",
         to_tolerance ? sci(row.tolerance) : fmt::format("{}", row.n), c.evaluations, sci(c.rmse),
+        to_tolerance ? fmt::format(" {} |", reached_text(c)) : "",
         discrepant ? fmt::format(" {} | {} | {} |", sci(c.l2_star_discrepancy),
                                  sci(c.centered_discrepancy), sci(c.wraparound_discrepancy))
                    : "",
@@ -143,6 +155,43 @@ void append_method_table(std::string& out, const convergence_table& t) {
         row.floor ? "▼" : "");
   }
   out += '\n';
+}
+
+// Where a scene runs cells to a tolerance, one line says whether every one got there, and each
+// that did not (its own error estimate still above the target when its budget or level cap ran
+// out) is listed with what it spent: a row of the tolerance table alone would read as an answer.
+std::string targets_not_reached(std::span<const convergence_table> tables) {
+  bool any_tolerance = false;
+  std::string list;
+  std::size_t missed = 0;
+  for (const convergence_table& t : tables) {
+    for (const convergence_row& row : t.rows) {
+      if (std::isnan(row.stats.reached)) continue;
+      any_tolerance = true;
+      if (row.stats.reached >= 1.0) continue;
+      missed += 1;
+      const auto repetitions = static_cast<double>(row.stats.repetitions);
+      list += fmt::format(
+          "- {} (s = {}), {}, tolerance {}: {} of {} {} stopped with its error estimate above the "
+          "target ({} evaluations{}, error estimate {})\n",
+          cell(t.integrand), t.s, cell(t.method), sci(row.tolerance),
+          std::llround((1.0 - row.stats.reached) * repetitions), row.stats.repetitions,
+          row.stats.repetitions == 1 ? "repetition" : "repetitions", row.stats.evaluations,
+          row.stats.repetitions == 1 ? "" : " on average", sci(row.stats.error_estimate));
+    }
+  }
+  if (!any_tolerance) return "";
+  if (missed == 0) {
+    return "## Targets not reached\n\nNone: every cell run to a tolerance stopped with its own "
+           "error estimate at or below the target.\n\n";
+  }
+  return fmt::format(
+      "## Targets not reached\n\n{} {} run to a tolerance spent {} budget (or reached {} level "
+      "cap) with {} own error estimate still above the target; {} row in the tables below is "
+      "where it stopped, not an answer at that tolerance:\n\n{}\n",
+      missed, missed == 1 ? "cell" : "cells", missed == 1 ? "its" : "their",
+      missed == 1 ? "its" : "their", missed == 1 ? "its" : "their",
+      missed == 1 ? "its" : "each one's", list);
 }
 
 // The name of an integrand's family across dimensions: the name without the "_s<s>" that a
@@ -363,6 +412,7 @@ std::string render_results_markdown(const run_info& info,
   }
   out += finding ? "\n"
                  : "None: every verdict has a computed reason (the slope table's last column).\n\n";
+  out += targets_not_reached(tables);
 
   out += "## Slopes\n\n";
   out += "| integrand | s | method | slope ± 95% CI | theory | verdict | points (floor) | why |\n";

@@ -120,7 +120,8 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(row.rounding_level),
                                                number(row.timing.seconds_per_estimate),
                                                number(row.timing.spread),
-                                               fmt::format("{}", row.timing.estimates)};
+                                               fmt::format("{}", row.timing.estimates),
+                                               number(c.reached)};
       out += csv_line(fields);
     }
   }
@@ -214,6 +215,7 @@ std::vector<convergence_record> read_convergence_csv(const std::filesystem::path
     rec.seconds_per_estimate = optional_real(f, "seconds_per_estimate");
     rec.seconds_spread = optional_real(f, "seconds_spread");
     if (table.has_column("timed_estimates")) rec.timed_estimates = f.count("timed_estimates");
+    rec.reached = optional_real(f, "reached");
     out.push_back(std::move(rec));
   }
   return out;

@@ -124,6 +124,7 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
       throw run_error(fmt::format("{}: {}", where(), e.what()));
     }
     result.seconds = seconds_since(t0);
+    if (to_tolerance) result.target = tolerance;
     try {
       const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
       mspec.configured->measure_points(work, context, result);

@@ -85,6 +85,11 @@ struct repetition_result {
   double l2_star_discrepancy = std::numeric_limits<double>::quiet_NaN();
   double centered_discrepancy = std::numeric_limits<double>::quiet_NaN();
   double wraparound_discrepancy = std::numeric_limits<double>::quiet_NaN();
+  // A cell run to a tolerance: the absolute error the method was asked to reach (a relative
+  // tolerance times the instance's |I|). It reached it when its own error_estimate, what it
+  // stopped on, is at or below it; above it (or none), it stopped on its evaluation budget or
+  // level cap instead. NaN for a sized cell.
+  double target = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Where a cell's error bars come from: each repetition's own std_error and error_estimate, or
@@ -105,6 +110,10 @@ struct cell_statistics {
   double seconds = 0.0;
   double evals_per_second = std::numeric_limits<double>::quiet_NaN();
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
+  // A cell run to a tolerance: the fraction of its repetitions whose own error estimate reached
+  // the target (repetition_result::target); below 1, the method ran out of budget first. NaN
+  // for a sized cell.
+  double reached = std::numeric_limits<double>::quiet_NaN();
   // The largest Σ|w| of the repetitions (NaN when none reports one).
   double absolute_weight_sum = std::numeric_limits<double>::quiet_NaN();
   double estimate_covers = std::numeric_limits<double>::quiet_NaN();
@@ -123,7 +132,8 @@ struct cell_statistics {
 };
 
 // Throws invalid_argument for no repetitions, a non-finite reference or value, a negative or
-// non-finite time, a negative std_error or error_estimate, a negative χ²/dof or a Q outside [0, 1]
+// non-finite time, a negative std_error, error_estimate or target, targets on some repetitions
+// only, a negative χ²/dof or a Q outside [0, 1]
 // (NaN is allowed for each of these and means "none").
 cell_statistics compute_cell_statistics(std::span<const repetition_result> repetitions,
                                         double reference, error_bars bars = error_bars::own);

@@ -78,7 +78,7 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 20> convergence_csv_added_columns = {
+inline constexpr std::array<std::string_view, 21> convergence_csv_added_columns = {
     "floor",
     "smoothness",
     "envelope",
@@ -98,7 +98,8 @@ inline constexpr std::array<std::string_view, 20> convergence_csv_added_columns 
     "rounding_level",
     "seconds_per_estimate",
     "seconds_spread",
-    "timed_estimates"};
+    "timed_estimates",
+    "reached"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
@@ -145,6 +146,9 @@ struct convergence_record {
   double seconds_per_estimate = std::numeric_limits<double>::quiet_NaN();    // NaN: absent
   double seconds_spread = std::numeric_limits<double>::quiet_NaN();  // NaN: timed once, or absent
   std::uint64_t timed_estimates = 0;                                 // 0: absent
+  // A tolerance cell: the fraction of repetitions whose own error estimate reached the target
+  // (cell_statistics::reached). NaN: a sized cell, or absent.
+  double reached = std::numeric_limits<double>::quiet_NaN();
 
   // Seconds of one estimate: the stable timing where the file has it, else seconds/repetitions.
   double time_per_estimate() const noexcept {
