@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -175,6 +176,38 @@ TEST(Vegas, EvaluationsAreCountedAndWithinTheBudget) {
   EXPECT_FALSE(r.converged);  // 1e-12 is far out of reach of 3·10⁴ points
   EXPECT_EQ(r.evaluations, calls->load());
   EXPECT_LE(r.evaluations, 30'000u);
+}
+
+// Regression: an iteration whose points all missed a small support (Genz discontinuous with
+// u = (0.024, 0.087), 0.2 % of the square, at 102 points per iteration) has σ̂ = 0; it took a weight
+// near 1/DBL_MIN, so the combination was 0 with σ̂ ≈ 1e-154, and four such weights summed to inf,
+// inf − inf in the compensated sum: the estimate was NaN (the reliability scene stopped on it).
+// Now every run is finite with σ̂ > 0, and an iteration without spread counts as an average one.
+TEST(Vegas, IterationsThatMissASmallSupportDoNotDecideTheEstimate) {
+  const genz_discontinuous f({3.8597957913088141, 0.44020420869118571},
+                             {0.024175822748070175, 0.086771544175930027}, {1, 2});
+  std::size_t some_missed = 0;
+  for (std::uint64_t stream = 0; stream < 64; ++stream) {
+    const vegas_result r = vegas(f, {.max_evaluations = 1024}, 20261201, stream);
+    ASSERT_TRUE(std::isfinite(r.value)) << "stream " << stream;
+    ASSERT_TRUE(std::isfinite(r.std_error) && r.std_error > 0.0) << "stream " << stream;
+    if (r.value < f.info().exact / 4) ++some_missed;
+  }
+  std::cout << "[ measured ] runs far below I (most iterations missed the support): " << some_missed
+            << " of 64\n";
+
+  // Five iterations without spread (value 0) and two with: the mean weight of the two each.
+  detail::vegas_combination c;
+  for (int k = 0; k < 5; ++k) c.add({0.0, std::numeric_limits<double>::min(), 100, false});
+  c.add({3e-3, 1e-8, 100, true});
+  c.add({1e-3, 1e-8, 100, true});
+  EXPECT_DOUBLE_EQ(c.value(), 4e-3 / 7.0);
+  EXPECT_DOUBLE_EQ(c.std_error(), std::sqrt(1e-8 / 7.0));
+  // None with spread: the floored variances weigh, without overflow however many there are.
+  detail::vegas_combination flat;
+  for (int k = 0; k < 12; ++k) flat.add({2.0, std::numeric_limits<double>::min(), 100, false});
+  EXPECT_EQ(flat.value(), 2.0);
+  EXPECT_TRUE(std::isfinite(flat.std_error()));
 }
 
 // Tolerance control stops once σ̂ ≤ tolerance with at least two combined iterations, and the true

@@ -20,15 +20,17 @@
 //    increment; smoothed over neighbours (7,1)/8, (1,6,1)/8, normalised to r_i, damped to
 //    ((1 − r_i)/ln(1/r_i))^α, α = 0.5, and the increments redrawn to hold equal shares of it.
 // Iterations (Lepage 1978, §3): the first `training_iterations` only adapt; the rest are combined,
-// Ī = Σ(I_k/σ̂_k²)/Σ(1/σ̂_k²), σ̂² = 1/Σ(1/σ̂_k²), χ² = Σ(I_k − Ī)²/σ̂_k² on K − 1 degrees of
-// freedom, Q = P(χ²_{K−1} ≥ χ²) (the regularised upper incomplete gamma function, Boost.Math).
-// χ²/dof far above 1 (Q tiny) says the iterations disagree more than their σ̂ allow: the grid was
-// still moving or σ̂ is too small, so the error estimate is not to be trusted.
+// Ī = Σ(I_k/σ̂_k²)/Σ(1/σ̂_k²), σ̂² = 1/Σ(1/σ̂_k²) (an iteration with σ̂_k = 0, every point of each
+// hypercube alike, weighs as the mean of the others: vegas_combination), χ² = Σ(I_k − Ī)²/σ̂_k² on K
+// − 1 degrees of freedom, Q = P(χ²_{K−1} ≥ χ²) (the regularised upper incomplete gamma function,
+// Boost.Math). χ²/dof far above 1 (Q tiny) says the iterations disagree more than their σ̂ allow:
+// the grid was still moving or σ̂ is too small, so the error estimate is not to be trusted.
 //
 // Budget control: N = max_evaluations split into `iterations` equal iterations. Tolerance control:
 // training iterations of evaluations_per_iteration points each, then iterations of growing size
 // (the size that would reach the tolerance from the last σ̂, at least the previous size and at most
-// 4× it) until at least two are combined and σ̂ ≤ tolerance, within the budget.
+// 4× it) until at least two are combined, one of them with spread, and σ̂ ≤ tolerance, within the
+// budget.
 //
 // Reproducibility: sample g of a run (counted over all its iterations) draws its s uniforms from
 // Philox counters g·s … g·s + s − 1 of the run's stream; the points are cut into chunks of fixed
@@ -175,6 +177,10 @@ struct vegas_iteration {
   double value = 0.0;
   double variance = 0.0;
   std::uint64_t evaluations = 0;
+  // Whether J·f varied within some hypercube. An iteration whose every point of a hypercube gave
+  // the same value (all zero, where the points missed a small support) has σ̂ = 0: no evidence
+  // of its error, not a zero error (see vegas_combination).
+  bool spread = true;
 };
 
 // x on axis d of the unit cube ↦ the integrand's box; the box volume multiplies the Jacobian.
@@ -359,6 +365,7 @@ class vegas_state {
     // infinite weight; 4ε·Σ|V_h mean_h| is the rounding of the sum itself.
     const double floor = 4.0 * std::numeric_limits<double>::epsilon() * scale.value();
     out.variance = std::max({variance.value(), floor * floor, std::numeric_limits<double>::min()});
+    out.spread = variance.value() > 0.0;
     out.evaluations = points;
     return out;
   }
@@ -406,25 +413,82 @@ class vegas_state {
   std::uint64_t samples_ = 0;  // points drawn so far in the run: the counter base
 };
 
-// Inverse-variance combination of iterations (see the file comment).
+// Inverse-variance combination of iterations (see the file comment). An iteration without spread
+// (vegas_iteration::spread: σ̂ = 0, floored to the rounding of its sum) would otherwise take a
+// weight near 1/DBL_MIN and decide the combination alone: with its points all in the zero part of
+// a small support (Genz discontinuous with u = (0.024, 0.087) at 102 points per iteration) the
+// estimate became 0 with σ̂ ≈ 1e-154, and four such weights overflowed to NaN. As GSL's VEGAS
+// does, such an iteration takes the mean weight of the iterations with spread; only where none
+// has any (an integrand constant on every point drawn) do the floored variances weigh. The
+// weights are divided by the largest before they are summed, so that none overflows.
 struct vegas_combination {
-  neumaier_sum weighted;  // Σ I_k/σ_k²
-  neumaier_sum weights;   // Σ 1/σ_k²
   std::vector<vegas_iteration> parts;
 
-  void add(const vegas_iteration& it) {
-    parts.push_back(it);
-    weighted.add(it.value / it.variance);
-    weights.add(1.0 / it.variance);
+  void add(const vegas_iteration& it) { parts.push_back(it); }
+  bool has_spread() const {
+    return std::any_of(parts.begin(), parts.end(),
+                       [](const vegas_iteration& it) { return it.spread; });
   }
-  double value() const { return weighted.value() / weights.value(); }
-  double std_error() const { return std::sqrt(1.0 / weights.value()); }
+
+  // The weight of part k relative to the largest weight; `largest` is that largest weight.
+  struct weighting {
+    std::vector<double> relative;
+    double largest = 0.0;
+    double relative_sum = 0.0;
+  };
+  weighting weights() const {
+    weighting w;
+    double spread_sum = 0.0;
+    std::size_t spread_count = 0;
+    double largest_spread = 0.0;
+    for (const vegas_iteration& it : parts) {
+      if (!it.spread) continue;
+      largest_spread = std::max(largest_spread, 1.0 / it.variance);
+      ++spread_count;
+    }
+    for (const vegas_iteration& it : parts) {
+      if (it.spread) spread_sum += (1.0 / it.variance) / largest_spread;
+    }
+    // Without spread anywhere: the floored variances (equal where the floors are).
+    w.largest = spread_count > 0 ? largest_spread : 0.0;
+    if (spread_count == 0) {
+      for (const vegas_iteration& it : parts) w.largest = std::max(w.largest, 1.0 / it.variance);
+    }
+    const double mean_relative =
+        spread_count > 0 ? spread_sum / static_cast<double>(spread_count) : 0.0;
+    neumaier_sum sum;
+    for (const vegas_iteration& it : parts) {
+      const double r =
+          spread_count > 0 && !it.spread ? mean_relative : (1.0 / it.variance) / w.largest;
+      w.relative.push_back(r);
+      sum.add(r);
+    }
+    w.relative_sum = sum.value();
+    return w;
+  }
+  // Σ 1/σ_k² (inf where it overflows; only compared with 1/tolerance²).
+  double total_weight() const {
+    const weighting w = weights();
+    return w.largest * w.relative_sum;
+  }
+  double value() const {
+    const weighting w = weights();
+    neumaier_sum weighted;
+    for (std::size_t k = 0; k < parts.size(); ++k) weighted.add(w.relative[k] * parts[k].value);
+    return weighted.value() / w.relative_sum;
+  }
+  // 1/Σw = (1/largest)/Σ(w/largest): no overflow on the way.
+  double std_error() const {
+    const weighting w = weights();
+    return std::sqrt((1.0 / w.largest) / w.relative_sum);
+  }
   double chi2() const {
+    const weighting w = weights();
     const double mean = value();
     neumaier_sum out;
-    for (const vegas_iteration& it : parts) {
-      const double d = it.value - mean;
-      out.add(d * d / it.variance);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const double d = parts[k].value - mean;
+      out.add(d * d * w.relative[k] * w.largest);
     }
     return out.value();
   }
@@ -493,13 +557,17 @@ vegas_result vegas(const F& f, const vegas_options& options, std::uint64_t seed,
       n = std::min(n, options.max_evaluations - spent);
       const detail::vegas_iteration it = run(n);
       combined.add(it);
-      if (combined.parts.size() >= 2 && combined.std_error() <= tolerance) {
+      // An iteration with spread is the evidence: σ̂ from floored variances alone (every point
+      // gave one value, as on a constant f or where every point missed a small support) is not
+      // a claim to stop on.
+      if (combined.parts.size() >= 2 && combined.has_spread() &&
+          combined.std_error() <= tolerance) {
         out.converged = true;
         break;
       }
       // The size whose σ̂ would bring the combination to the tolerance, σ̂² ∝ 1/n, between the
       // last size and 4× it.
-      const double missing = 1.0 / (tolerance * tolerance) - combined.weights.value();
+      const double missing = 1.0 / (tolerance * tolerance) - combined.total_weight();
       const double needed = missing > 0.0
                                 ? static_cast<double>(it.evaluations) * it.variance * missing
                                 : static_cast<double>(it.evaluations);
