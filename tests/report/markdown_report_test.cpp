@@ -109,6 +109,27 @@ TEST(MarkdownReport, ToleranceCellsThatStoppedOnTheirBudgetAreListed) {
   EXPECT_NE(page.find("| 1.000e-03 | 153 | 1.000e-04 | ✅ |"), std::string::npos) << page;
   expect_rectangular_tables(page);
 
+  // A relative tolerance: the estimate is set beside it as a fraction of |I|; 2 of 3 repetitions
+  // short of the target are counted in the plural.
+  convergence_series relative = s;
+  relative.relative_tolerance = true;
+  relative.reference = 2.0;
+  for (auto& c : relative.cells) {
+    for (auto& r : c.repetitions) r.value += 1.0;
+    c.repetitions.push_back(c.repetitions.front());
+    c.repetitions.push_back(c.repetitions.front());
+    c.repetitions.back().error_estimate = 0.0;  // this one reached every target
+  }
+  const std::vector<convergence_table> relative_tables = {analyse_convergence(relative)};
+  const std::string relative_page = render_results_markdown(run_info{}, relative_tables);
+  EXPECT_NE(relative_page.find("genz_malik, relative tolerance 1.000e-300: 2 of 3 repetitions "
+                               "stopped with their error estimates above the target"),
+            std::string::npos)
+      << relative_page;
+  // The RMS of the estimates (3e-9, 3e-9, 0) is 2.449e-9, half of it relative to |I| = 2.
+  EXPECT_NE(relative_page.find("error estimate 2.449e-09 = 1.225e-09 of |I|)"), std::string::npos)
+      << relative_page;
+
   s.cells.pop_back();
   const std::vector<convergence_table> all_reached = {analyse_convergence(s)};
   const std::string reached = render_results_markdown(run_info{}, all_reached);

@@ -171,13 +171,20 @@ std::string targets_not_reached(std::span<const convergence_table> tables) {
       if (row.stats.reached >= 1.0) continue;
       missed += 1;
       const auto repetitions = static_cast<double>(row.stats.repetitions);
+      const bool one = row.stats.repetitions == 1;
+      const long long stopped = std::llround((1.0 - row.stats.reached) * repetitions);
+      // A relative tolerance is a fraction of |I|: the estimate is set beside it on that scale.
+      const std::string relative =
+          t.relative_tolerance && t.reference != 0.0
+              ? fmt::format(" = {} of |I|", sci(row.stats.error_estimate / std::abs(t.reference)))
+              : "";
       list += fmt::format(
-          "- {} (s = {}), {}, tolerance {}: {} of {} {} stopped with its error estimate above the "
-          "target ({} evaluations{}, error estimate {})\n",
-          cell(t.integrand), t.s, cell(t.method), sci(row.tolerance),
-          std::llround((1.0 - row.stats.reached) * repetitions), row.stats.repetitions,
-          row.stats.repetitions == 1 ? "repetition" : "repetitions", row.stats.evaluations,
-          row.stats.repetitions == 1 ? "" : " on average", sci(row.stats.error_estimate));
+          "- {} (s = {}), {}, {}tolerance {}: {} of {} {} stopped with {} above the target ({} "
+          "evaluations{}, error estimate {}{})\n",
+          cell(t.integrand), t.s, cell(t.method), t.relative_tolerance ? "relative " : "",
+          sci(row.tolerance), stopped, row.stats.repetitions, one ? "repetition" : "repetitions",
+          stopped == 1 ? "its error estimate" : "their error estimates", row.stats.evaluations,
+          one ? "" : " on average", sci(row.stats.error_estimate), relative);
     }
   }
   if (!any_tolerance) return "";
