@@ -13,7 +13,8 @@
 #   ./run.sh package    build the Debian package (cpack -G DEB) → build/package/deb/quadmc_*.deb
 #                       and check it extracted into a scratch root (tests/package/check_package.sh)
 #   ./run.sh deps       only install what is missing (idempotent: does nothing when all is present)
-#   ./run.sh packages   print every package of every install list, one per line (.ci/run uses it)
+#   ./run.sh packages [COMMAND]   print every package of every install list (or COMMAND's), one per
+#                       line (.ci/run uses it)
 #
 # Each command installs exactly the packages of its own list, so a machine that happens to have a
 # package already cannot hide a missing install step: .ci/run removes them all first (CI=true)
@@ -92,8 +93,21 @@ case "${1:-}" in
       "${PACKAGE_PACKAGES[@]}"
     ;;
   packages)
-    printf '%s\n' "${BENCH_PACKAGES[@]}" "${SANITIZE_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
-      "${FORMAT_PACKAGES[@]}" "${PACKAGE_PACKAGES[@]}" | sort -u
+    # With a command: that command's own list (tests/package/check_install_lists.py checks it
+    # against what the command's CMake configuration finds).
+    case "${2:-}" in
+      "") printf '%s\n' "${BENCH_PACKAGES[@]}" "${SANITIZE_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
+            "${FORMAT_PACKAGES[@]}" "${PACKAGE_PACKAGES[@]}" | sort -u ;;
+      bench | benchmarks) printf '%s\n' "${BENCH_PACKAGES[@]}" ;;
+      test) printf '%s\n' "${TEST_PACKAGES[@]}" ;;
+      sanitize) printf '%s\n' "${SANITIZE_PACKAGES[@]}" ;;
+      fuzz) printf '%s\n' "${FUZZ_PACKAGES[@]}" ;;
+      format) printf '%s\n' "${FORMAT_PACKAGES[@]}" ;;
+      consumer) printf '%s\n' "${LIB_PACKAGES[@]}" ;;
+      package) printf '%s\n' "${PACKAGE_PACKAGES[@]}" ;;
+      *) echo "run.sh packages: unknown command '$2'; expected bench, benchmarks, test, sanitize, fuzz, format, consumer or package" >&2
+         exit 2 ;;
+    esac
     ;;
   bench)
     install_missing "${BENCH_PACKAGES[@]}"
