@@ -479,19 +479,20 @@ std::vector<quoted_number> numbers_in(std::string cell) {
   return out;
 }
 
-// The verdicts of a cell: the words before any "(", split at " / "; "agree" is "agrees".
+// The verdicts of a cell: its text outside parentheses split at "/"; "agree" is "agrees".
 std::vector<std::string> verdicts_in(const std::string& cell) {
+  std::string bare;
+  int depth = 0;
+  for (const char c : cell) {
+    if (c == '(') ++depth;
+    if (depth == 0) bare += c;
+    if (c == ')') --depth;
+  }
   std::vector<std::string> out;
-  std::string rest = cell;
-  for (std::size_t start = 0;;) {
-    const std::size_t slash = rest.find(" / ", start);
-    std::string part = rest.substr(start, slash == std::string::npos ? std::string::npos
-                                                                     : slash - start);
-    part = trimmed(part.substr(0, part.find('(')));
-    if (part == "agree") part = "agrees";
-    out.push_back(part);
-    if (slash == std::string::npos) break;
-    start = slash + 3;
+  std::istringstream parts(bare);
+  for (std::string part; std::getline(parts, part, '/');) {
+    part = trimmed(part);
+    out.push_back(part == "agree" ? "agrees" : part);
   }
   return out;
 }
