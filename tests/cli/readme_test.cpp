@@ -280,14 +280,13 @@ TEST(Readme, SceneKeyTableDocumentsEveryKeyTheParserAccepts) {
   }
 }
 
-
 // The README's section of text between `from` and `to` (both must be there).
 std::string readme_between(std::string_view from, std::string_view to) {
   const std::string text = read_text(fs::path(QUADMC_SOURCE_DIR) / "README.md");
   const std::size_t start = text.find(from);
   const std::size_t end = start == std::string::npos ? start : text.find(to, start);
-  EXPECT_NE(end, std::string::npos) << "README.md should have \"" << from << "\" … \"" << to
-                                    << "\"";
+  EXPECT_NE(end, std::string::npos)
+      << "README.md should have \"" << from << "\" … \"" << to << "\"";
   return end == std::string::npos ? std::string() : text.substr(start, end - start);
 }
 
@@ -345,8 +344,7 @@ TEST(Readme, EveryUntestedLibraryFileIsAnException) {
                        exceptions.find("`" + layer + "/" + base + "`") != std::string::npos ||
                        exceptions.find("`" + base + ".cpp`") != std::string::npos ||
                        exceptions.find("/" + base + ".cpp`") != std::string::npos;
-    EXPECT_TRUE(named) << layer << "/" << base
-                       << " has no tests/" << layer << "/" << base
+    EXPECT_TRUE(named) << layer << "/" << base << " has no tests/" << layer << "/" << base
                        << "_test.cpp and is not among README's test-file exceptions";
   }
 }
@@ -356,8 +354,8 @@ TEST(Readme, EveryUntestedLibraryFileIsAnException) {
 // a cell of the committed convergence.csv, so a figure left over from an older run fails here.
 TEST(Readme, DefaultSceneProseQuotesTheCommittedPage) {
   const fs::path results = fs::path(QUADMC_SOURCE_DIR) / "results/default";
-  std::string section = readme_between("### What the default scene shows",
-                                       "### The stress and reliability scenes");
+  std::string section =
+      readme_between("### What the default scene shows", "### The stress and reliability scenes");
   for (std::size_t at; (at = section.find("−")) != std::string::npos;) section.replace(at, 3, "-");
   const auto cells = quadmc::read_convergence_csv(results / "convergence.csv");
   const std::string page = read_text(results / "README.md");
@@ -399,12 +397,12 @@ TEST(Readme, PeerPointRatesAreTheCommittedPages) {
     std::string_view after;  // what follows "a× / b×" in the README
     std::string_view quadmc, peer;
   };
-  for (const quote& q : {quote{"Boost's rate", "quadmc sobol none", "Boost.Random sobol_engine"},
-                         quote{"GSL's Sobol'", "quadmc sobol none", "GSL sobol"},
-                         quote{"scipy's", "quadmc sobol none", "scipy Sobol"},
-                         quote{"GSL's,", "quadmc halton none", "GSL halton"},
-                         quote{"GSL's reversehalton", "quadmc halton permutation",
-                               "GSL reversehalton"}}) {
+  for (const quote& q :
+       {quote{"Boost's rate", "quadmc sobol none", "Boost.Random sobol_engine"},
+        quote{"GSL's Sobol'", "quadmc sobol none", "GSL sobol"},
+        quote{"scipy's", "quadmc sobol none", "scipy Sobol"},
+        quote{"GSL's,", "quadmc halton none", "GSL halton"},
+        quote{"GSL's reversehalton", "quadmc halton permutation", "GSL reversehalton"}}) {
     std::smatch in_readme, on_page;
     ASSERT_TRUE(std::regex_search(
         readme, in_readme,
@@ -422,8 +420,9 @@ TEST(Readme, PeerPointRatesAreTheCommittedPages) {
   }
   // "In the last committed run (M of T ratios met": the page's own count.
   std::smatch count_in_readme, count_on_page;
-  ASSERT_TRUE(std::regex_search(readme, count_in_readme,
-                                std::regex(R"(last committed run \(([0-9]+) of ([0-9]+) ratios met)")));
+  ASSERT_TRUE(
+      std::regex_search(readme, count_in_readme,
+                        std::regex(R"(last committed run \(([0-9]+) of ([0-9]+) ratios met)")));
   ASSERT_TRUE(std::regex_search(page, count_on_page,
                                 std::regex(R"(\*\*([0-9]+) of ([0-9]+) measured ratios met\*\*)")));
   EXPECT_EQ(count_in_readme[1].str() + " of " + count_in_readme[2].str(),
@@ -458,9 +457,9 @@ std::vector<quoted_number> numbers_in(std::string cell) {
     const char c = cell[i];
     if (c == '(') ++depth;
     if (c == ')') --depth;
-    const bool starts = std::isdigit(static_cast<unsigned char>(c)) ||
-                        (c == '-' && i + 1 < cell.size() &&
-                         std::isdigit(static_cast<unsigned char>(cell[i + 1])));
+    const bool starts =
+        std::isdigit(static_cast<unsigned char>(c)) ||
+        (c == '-' && i + 1 < cell.size() && std::isdigit(static_cast<unsigned char>(cell[i + 1])));
     if (depth > 0 || !starts) {
       ++i;
       continue;
