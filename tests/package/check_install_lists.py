@@ -1,28 +1,20 @@
-#!/ usr / bin / python3
-""
-    "Every package a ./run.sh command's CMake configuration needs is on that command's install list.
+#!/usr/bin/python3
+"""Every package a ./run.sh command's CMake configuration needs is on that command's install list.
 
-    A command installs exactly its own list(run.sh),
-    so a library that CMake requires but that only another
-            command's list brings is found on a machine that ran the other command first and missed on
-            a fresh one
-    : `./ run.sh package` once lacked libquadrule
-        - dev and libquantlib0 - dev,
-    and CI hid it because the test stage had installed them
-            .Here each command's preset is configured into a scratch folder with
-        CMake's JSON trace; every REQUIRED find_package, find_path and find_library of this repository's CMake files, and the C++ compiler, is mapped to the Debian package owning what it found(
-            dpkg - S),
-    and that package must be on the command's list or among the installed dependencies of a package
-        on
-        it(Depends and Pre - Depends, alternatives and Provides resolved against what is installed)
-            .
+A command installs exactly its own list (run.sh), so a library that CMake requires but that only
+another command's list brings is found on a machine that ran the other command first and missed
+on a fresh one: `./run.sh package` once lacked libquadrule-dev and libquantlib0-dev, and CI hid it
+because the test stage had installed them. Here each command's preset is configured into a scratch
+folder with CMake's JSON trace; every REQUIRED find_package, find_path and find_library of this
+repository's CMake files, and the C++ compiler, is mapped to the Debian package owning what it
+found (dpkg -S), and that package must be on the command's list or among the installed
+dependencies of a package on it (Depends and Pre-Depends, alternatives and Provides resolved
+against what is installed).
 
-        usage : check_install_lists.py SOURCE_DIR SCRATCH_DIR Exit
-                0 when every configured command is covered,
-    1 naming each miss.A preset whose compiler is
-        not installed(clang++ before `./ run.sh sanitize` installed it) cannot be configured
-        and is skipped,
-    said on stdout; it is checked by the stage that installs it, which runs this test too.
+usage: check_install_lists.py SOURCE_DIR SCRATCH_DIR
+Exit 0 when every configured command is covered, 1 naming each miss. A preset whose compiler is not
+installed (clang++ before `./run.sh sanitize` installed it) cannot be configured and is skipped,
+said on stdout; it is checked by the stage that installs it, which runs this test too.
 """
 import json
 import os
@@ -30,7 +22,8 @@ import re
 import shutil
 import subprocess
 import sys
-#The commands of run.sh that configure a CMake preset : command->preset.
+
+# The commands of run.sh that configure a CMake preset: command -> preset.
 COMMANDS = {"bench": "release", "benchmarks": "release", "test": "test", "sanitize": "sanitize",
             "fuzz": "sanitize", "package": "package"}
 FINDS = {"find_package", "find_path", "find_library", "find_program"}
@@ -56,8 +49,8 @@ def required_finds(trace_file, source_dir):
             name = args[0]
             command = event["cmd"].lower()
             variable = f"{name}_DIR" if command == "find_package" else name
-#find_path's result is a directory many packages share (/usr/include): what it
-#looked for inside it is the file that names the package.
+            # find_path's result is a directory many packages share (/usr/include): what it
+            # looked for inside it is the file that names the package.
             inside = None
             if command == "find_path":
                 inside = args[2] if args[1] == "NAMES" else args[1]
@@ -175,7 +168,7 @@ def main():
             if inside:
                 path = os.path.join(path, inside)
             elif os.path.isdir(path):
-#A package's CMake folder: its config file, owned by that package alone.
+                # A package's CMake folder: its config file, owned by that package alone.
                 configs = sorted(f for f in os.listdir(path) if f.lower().endswith("config.cmake"))
                 path = os.path.join(path, configs[0]) if configs else path
             package = owner(path)
