@@ -129,8 +129,15 @@ def draw(ax, x_of, points, color, name):
 
 def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=False,
            predicted_seen=False):
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    # Only positive values are drawn (draw()); where none is left, every error was exactly 0
+    # (a rule exact to the last bit, e.g. on a 1e-10-wide interval) and log axes have nothing
+    # to show: the plot says so instead of matplotlib refusing to scale an empty axis.
+    if any(len(line.get_xdata()) for line in ax.get_lines()):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    else:
+        ax.text(0.5, 0.5, "every error is exactly 0: nothing to draw on log axes",
+                ha="center", va="center", transform=ax.transAxes, fontsize=9)
     ax.set_xlabel(xlabel)
     ax.set_ylabel("RMSE over repetitions (|error| for rules)")
     ax.set_title(title, fontsize=10)

@@ -46,4 +46,14 @@ inline CLI::Validator finite_number(double low, double high, std::string range) 
       range);
 }
 
+// A path option given explicitly: not empty. `--out ""` read as "not given" and wrote the default
+// folder, which the user had not asked for.
+inline CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.empty() ? std::string("expected a path, got an empty one") : std::string();
+      },
+      "PATH");
+}
+
 }  // namespace quadmc_cli

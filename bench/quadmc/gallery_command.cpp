@@ -349,7 +349,8 @@ CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request) {
       "gallery",
       "Draw every point set in 2D (scatter, strata, projections, power spectrum, discrepancies) "
       "into results/gallery/");
-  gallery->add_option("--out", request.out, "Output folder (default: results/gallery)");
+  gallery->add_option("--out", request.out, "Output folder (default: results/gallery)")
+      ->check(quadmc_cli::non_empty_path());
   gallery
       ->add_option("--realizations", request.realizations,
                    "Independent realizations averaged in each power spectrum, 2 to 100000 "

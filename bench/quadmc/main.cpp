@@ -423,7 +423,8 @@ int main(int argc, char** argv) {
   auto* run =
       app.add_subcommand("run", "Run a scene and write results/<name>/ (CSV, Markdown, plots)");
   run->add_option("scene", request.scene_file, "Scene file (TOML)")->required();
-  run->add_option("--out", request.out_dir, "Output folder (default: results/<scene name>)");
+  run->add_option("--out", request.out_dir, "Output folder (default: results/<scene name>)")
+      ->check(quadmc_cli::non_empty_path());
   auto* threads_option =
       run->add_option("--threads", threads,
                       "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
@@ -443,7 +444,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "all", "none"}));
   run->add_option("--cells-csv", request.cells_csv,
                   "Write each cell's method's chunk sharing and the rank it ran on (\"split\": "
-                  "all ranks) to this CSV file (bench/scaling.py reads it)");
+                  "all ranks) to this CSV file (bench/scaling.py reads it)")
+      ->check(quadmc_cli::non_empty_path());
 
   std::string plan_file;
   auto* plan = app.add_subcommand("plan", "Print the cells a scene would run and what it skips");

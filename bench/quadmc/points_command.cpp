@@ -40,7 +40,8 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
   points->add_option("--periodization", request.periodization, "lattice: none|baker");
   points->add_flag("--allow-any-n", request.allow_any_n, "sobol: take N as it is (no net)");
   points->add_flag("--drop-first-point", request.drop_first_point, "sobol: start at point 1");
-  points->add_option("--out", request.out, "Output file (default: stdout)");
+  points->add_option("--out", request.out, "Output file (default: stdout)")
+      ->check(quadmc_cli::non_empty_path());
   return points;
 }
 

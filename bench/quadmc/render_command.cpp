@@ -266,7 +266,8 @@ CLI::App* add_render_subcommand(CLI::App& app, render_request& request) {
       "Render the plane under the area light with every estimator, point set and spp of a render "
       "scene, against the exact image, into results/<scene name>/");
   render->add_option("scene", request.scene_file, "Render scene file (TOML)")->required();
-  render->add_option("--out", request.out, "Output folder (default: results/<scene name>)");
+  render->add_option("--out", request.out, "Output folder (default: results/<scene name>)")
+      ->check(quadmc_cli::non_empty_path());
   render->add_option("--seed", request.seed, "Seed K ≥ 0 (default: the scene's `seed`)")
       ->check(non_negative_integer());
   render

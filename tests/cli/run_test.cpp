@@ -309,6 +309,40 @@ N = [16, 64, 256]
   }
 }
 
+// Regression: a rule exact to the last bit (Simpson on eˣ over [700, 700 + 1e-10]) has every
+// error 0, and bench/plot.py stopped the run on log axes with no positive value. The plots are
+// written, saying there is nothing to draw.
+TEST(RunTest, PlotsOfErrorsThatAreAllZeroAreWritten) {
+  const std::string scene = R"(name = "exact"
+[[integrand]]
+family = "exp"
+lower = 700.0
+upper = 700.0000000001
+[[method]]
+name = "simpson"
+[budget]
+N = [16, 64]
+)";
+  scratch_folder dir;
+  write_text(dir / "exact.toml", scene);
+  const command_result r = run_quadmc(dir, {"run", (dir / "exact.toml").string(), "--out", "o"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_NE(read_text(dir / "o" / quadmc::convergence_plot_file("exp", 1)).find("every error is"),
+            std::string::npos);
+}
+
+// An explicit empty --out (or --cells-csv) is a usage error, not the default folder.
+TEST(RunTest, EmptyOutIsRefused) {
+  scratch_folder dir;
+  write_text(dir / "e2e.toml", convergence_scene);
+  for (const char* option : {"--out", "--cells-csv"}) {
+    const command_result r = run_quadmc(dir, {"run", (dir / "e2e.toml").string(), option, ""});
+    EXPECT_EQ(r.exit_status, 2) << describe(r);
+    EXPECT_NE(r.err.find("expected a path, got an empty one"), std::string::npos) << describe(r);
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"e2e.toml"})) << describe(r);
+  }
+}
+
 TEST(RunTest, TrailingSlashInOutNamesTheSameFolder) {
   // Regression: with "--out dir/" the staging folder became "dir/.partial", inside the target,
   // and was deleted with it; the run then failed on the rename after doing all its work.
