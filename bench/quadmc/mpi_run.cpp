@@ -52,10 +52,6 @@ split_policy parse_split_policy(std::string_view text) {
       fmt::format("invalid --split-cells = '{}': expected auto, all or none", text));
 }
 
-bool cell_shares_chunks(const quadmc::plan& p, std::size_t index) {
-  return p.source.methods[p.cells[index].method].configured->shares_chunks();
-}
-
 std::string cells_csv(const quadmc::plan& p, const std::vector<cell_placement>& placement) {
   std::string out =
       "integrand,instance,s,method,N,tolerance,evaluations,repetitions,shares_chunks,placement\n";
@@ -273,47 +269,14 @@ rank_outcome deserialise(const char* data, std::size_t size) {
   return o;
 }
 
-// The cost model of each (integrand, method) series: seconds per repetition ≈ fixed +
-// per_evaluation × evaluations. Rank 0 times one repetition of the series' smallest cell (the
-// fixed part: set-up, thread hand-off) and of its largest cell of at most probe_evaluations (the
-// slope), and sends the figures to every rank, so that all ranks cost cells alike. One timing of
-// the smallest cell alone would not do: a series starting at N = 1 spends microseconds of set-up
-// on one evaluation, and that figure times 10⁹ evaluations made a stress-scene cell look 10⁴
-// times its cost (LPT then gave it a rank of its own and every other cell to the other rank).
-// A cell that fails here gets a nominal cost: the run proper reports its error.
-struct series_cost {
-  double fixed = 0.0;
-  double per_evaluation = 1e-8;  // seconds, when a timing is not to be had
-};
-
-std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_context& context,
-                                      const world& w, std::vector<std::size_t>& series_of) {
-  constexpr std::uint64_t probe_evaluations = std::uint64_t{1} << 16;
-  std::vector<std::pair<std::size_t, std::size_t> > keys;
-  std::vector<std::size_t> smallest;
-  std::vector<std::size_t> probe;
-  series_of.assign(p.cells.size(), 0);
-  for (std::size_t i = 0; i < p.cells.size(); ++i) {
-    const std::pair key{p.cells[i].integrand, p.cells[i].method};
-    auto it = std::find(keys.begin(), keys.end(), key);
-    if (it == keys.end()) {
-      keys.push_back(key);
-      smallest.push_back(i);
-      probe.push_back(i);
-      it = std::prev(keys.end());
-    }
-    const std::size_t s = static_cast<std::size_t>(it - keys.begin());
-    series_of[i] = s;
-    const std::uint64_t n = p.cells[i].evaluations;
-    if (n < p.cells[smallest[s]].evaluations) smallest[s] = i;
-    // The probe: the largest cell of at most probe_evaluations, else the smallest cell.
-    const std::uint64_t probe_n = p.cells[probe[s]].evaluations;
-    const bool probe_fits = probe_n <= probe_evaluations;
-    if (n <= probe_evaluations ? (!probe_fits || n > probe_n) : (!probe_fits && n < probe_n)) {
-      probe[s] = i;
-    }
-  }
-  std::vector<double> figures(2 * keys.size());
+// Each series' cost (scene/schedule.hpp): rank 0 times the probes the scheduler chooses and
+// sends the figures to every rank, so that all ranks cost cells alike and make one assignment.
+// A series whose probe fails here gets the nominal cost: the run proper reports its error.
+std::vector<quadmc::series_cost> series_costs(const quadmc::plan& p,
+                                              const quadmc::cost_probes& probes,
+                                              const quadmc::run_context& context, const world& w) {
+  const std::size_t series = probes.smallest.size();
+  std::vector<double> figures(2 * series);
   if (w.rank == 0) {
     // The fastest of three timings of a cell of at most probe_evaluations: timed once, a cell of
     // microseconds is at the mercy of one preemption (the other ranks spin in MPI_Bcast
@@ -321,7 +284,7 @@ std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_c
     // series hundreds of times too high. A larger cell (a series that starts above the probe
     // size) is timed once.
     const auto seconds_of = [&](std::size_t i) {
-      const int timings = p.cells[i].evaluations <= probe_evaluations ? 3 : 1;
+      const int timings = p.cells[i].evaluations <= quadmc::probe_evaluations ? 3 : 1;
       double best = std::numeric_limits<double>::infinity();
       for (int k = 0; k < timings; ++k) {
         const auto t0 = clock::now();
@@ -330,20 +293,16 @@ std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_c
       }
       return best;
     };
-    for (std::size_t s = 0; s < keys.size(); ++s) {
-      series_cost c;
+    for (std::size_t s = 0; s < series; ++s) {
+      quadmc::series_cost c;
       try {
-        const double n0 =
-            static_cast<double>(std::max<std::uint64_t>(p.cells[smallest[s]].evaluations, 1));
-        const double n1 =
-            static_cast<double>(std::max<std::uint64_t>(p.cells[probe[s]].evaluations, 1));
-        const double t0 = seconds_of(smallest[s]);
-        const double t1 = probe[s] == smallest[s] ? t0 : seconds_of(probe[s]);
-        c.fixed = n1 > n0 ? t0 : 0.0;
-        // A slope lost in the noise (t1 ≤ t0) falls back to the probe's mean per evaluation.
-        c.per_evaluation = std::max(n1 > n0 && t1 > t0 ? (t1 - t0) / (n1 - n0) : t1 / n1, 1e-12);
+        const std::size_t small = probes.smallest[s];
+        const std::size_t probe = probes.probe[s];
+        const double t0 = seconds_of(small);
+        const double t1 = probe == small ? t0 : seconds_of(probe);
+        c = quadmc::fit_series_cost(p.cells[small].evaluations, t0, p.cells[probe].evaluations, t1);
       } catch (const std::exception&) {
-        c = series_cost{};
+        c = quadmc::series_cost{};
       }
       figures[2 * s] = c.fixed;
       figures[2 * s + 1] = c.per_evaluation;
@@ -351,8 +310,8 @@ std::vector<series_cost> series_costs(const quadmc::plan& p, const quadmc::run_c
   }
   MPI_Bcast(figures.data(), as_count(figures.size(), "the cost table"), MPI_DOUBLE, 0,
             MPI_COMM_WORLD);
-  std::vector<series_cost> cost(keys.size());
-  for (std::size_t s = 0; s < keys.size(); ++s) cost[s] = {figures[2 * s], figures[2 * s + 1]};
+  std::vector<quadmc::series_cost> cost(series);
+  for (std::size_t s = 0; s < series; ++s) cost[s] = {figures[2 * s], figures[2 * s + 1]};
   return cost;
 }
 
@@ -362,40 +321,20 @@ struct assignment {
   std::vector<cell_placement> placement;  // every cell's, on every rank
 };
 
-assignment assign_cells(const quadmc::plan& p, const std::vector<series_cost>& series,
-                        const std::vector<std::size_t>& series_of, const world& w,
+assignment assign_cells(const quadmc::plan& p, const quadmc::cost_probes& probes,
+                        const std::vector<quadmc::series_cost>& series, const world& w,
                         split_policy policy) {
-  std::vector<double> cost(p.cells.size());
-  for (std::size_t i = 0; i < p.cells.size(); ++i) {
-    const series_cost& c = series[series_of[i]];
-    cost[i] = static_cast<double>(p.cells[i].repetitions) *
-              (c.fixed + static_cast<double>(p.cells[i].evaluations) * c.per_evaluation);
-  }
-  const double total = std::accumulate(cost.begin(), cost.end(), 0.0);
-  // LPT's makespan is at most total/K + the largest cell: with no unsplit cell above a quarter
-  // of total/K, the efficiency is at least 1/1.25 = 80 %.
-  const double split_above = total / (4.0 * w.size);
+  std::vector<bool> shares(p.cells.size());
+  for (std::size_t i = 0; i < p.cells.size(); ++i) shares[i] = cell_shares_chunks(p, i);
   assignment a;
-  a.placement.resize(p.cells.size());
-  std::vector<std::size_t> rest;
+  a.placement = quadmc::assign_cells(quadmc::cell_costs(p, probes, series), shares, w.size, policy);
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
-    const bool split =
-        policy == split_policy::all ||
-        (policy == split_policy::automatic && cost[i] > split_above && cell_shares_chunks(p, i));
-    (split ? a.split : rest).push_back(i);
-    a.placement[i].split = split;
+    if (a.placement[i].split) {
+      a.split.push_back(i);
+    } else if (a.placement[i].rank == w.rank) {
+      a.own.push_back(i);
+    }
   }
-  std::stable_sort(rest.begin(), rest.end(),
-                   [&](std::size_t x, std::size_t y) { return cost[x] > cost[y]; });
-  std::vector<double> load(w.size, 0.0);
-  for (const std::size_t i : rest) {
-    const auto least =
-        static_cast<unsigned>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[least] += cost[i];
-    a.placement[i].rank = least;
-    if (least == w.rank) a.own.push_back(i);
-  }
-  std::sort(a.own.begin(), a.own.end());
   return a;
 }
 
@@ -453,9 +392,9 @@ quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run
   const quadmc::run_context context{p.source.seed, threads_allowed};
   quadmc::parallel_reduce_peak_threads() = 0;
 
-  std::vector<std::size_t> series_of;
-  const std::vector<series_cost> cost = series_costs(p, context, w, series_of);
-  const assignment work = assign_cells(p, cost, series_of, w, policy);
+  const quadmc::cost_probes probes = quadmc::choose_cost_probes(p);
+  const std::vector<quadmc::series_cost> cost = series_costs(p, probes, context, w);
+  const assignment work = assign_cells(p, probes, cost, w, policy);
   if (placement != nullptr) *placement = work.placement;
 
   quadmc::run_progress progress;

@@ -1,8 +1,8 @@
 // `mpirun -np K quadmc run SCENE.toml`: the scene runner on K processes, bitwise equal to one.
 //
 // Every rank parses the scene and makes the plan itself (both are deterministic). Cells then go
-// to ranks by planned cost, largest first, each to the least-loaded rank (the LPT rule: the
-// makespan is at most the total cost / K plus the largest cell); a cell costing more than a
+// to ranks by planned cost as the library's scheduler assigns them (scene/schedule.hpp: LPT, the
+// makespan at most the total cost / K plus the largest cell); a cell costing more than a
 // quarter of a rank's fair share is *split* when its method shares chunks: all ranks run it
 // together, each computing its share of every parallel_reduce window and exchanging chunk
 // results, so every rank folds all chunks in chunk order (core/chunk_exchange.hpp), or, for a
@@ -28,6 +28,7 @@
 
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
+#include "quadmc/scene/schedule.hpp"
 
 #include <cstddef>
 #include <string>
@@ -42,19 +43,14 @@ struct world {
   unsigned rank = 0;
 };
 
-// Which cells all ranks run together: `automatic` splits the cells above the threshold above
-// whose method shares chunks (cell_shares_chunks); `all` splits every cell, those whose method
-// does not share chunks too — each rank then computes such a cell whole, which is exact and not
-// faster: it is for tests (a split cell must equal the unsplit one whatever its kernel) — and
-// `none` splits none. The results do not depend on the policy.
-enum class split_policy { automatic, all, none };
+// Which cells all ranks run together, and where a cell ran (scene/schedule.hpp). `--split-cells
+// all` splits the cells whose method does not share chunks too: each rank then computes such a
+// cell whole, exact and not faster, so that tests see a split cell equal the unsplit one whatever
+// its kernel.
+using quadmc::cell_placement;
+using quadmc::cell_shares_chunks;
+using quadmc::split_policy;
 split_policy parse_split_policy(std::string_view text);
-
-// Whether cell `index` of `p` is worth splitting: its configured method's kernels share chunk
-// results between processes (method::shares_chunks, methods/method.hpp), so each of K ranks does
-// about 1/K of its work. A cell that does not share is computed whole by every rank that runs
-// it, so `auto` gives it to one rank (LPT) whatever its cost.
-bool cell_shares_chunks(const quadmc::plan& p, std::size_t index);
 
 // MPI_Init when built with MPI and started by mpirun. Without the MPI build, a process started
 // by mpirun throws (one line: mpirun needs the MPI build). Call once, first thing in main.
@@ -74,10 +70,6 @@ bool agree_to_proceed(const world& w, bool rank0_ok);
 // runs itself and the split cells.
 //
 // `placement`, when given, receives where each plan cell ran (one entry per cell, on every rank).
-struct cell_placement {
-  bool split = false;  // run by all ranks together
-  unsigned rank = 0;   // else the rank that ran it whole
-};
 quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
                                         const world& w, split_policy policy,
                                         std::vector<cell_placement>* placement = nullptr);

@@ -20,11 +20,12 @@
 //    increment; smoothed over neighbours (7,1)/8, (1,6,1)/8, normalised to r_i, damped to
 //    ((1 − r_i)/ln(1/r_i))^α, α = 0.5, and the increments redrawn to hold equal shares of it.
 // Iterations (Lepage 1978, §3): the first `training_iterations` only adapt; the rest are combined,
-// Ī = Σ(I_k/σ̂_k²)/Σ(1/σ̂_k²), σ̂² = 1/Σ(1/σ̂_k²) (an iteration with σ̂_k = 0, every point of each
-// hypercube alike, weighs as the mean of the others: vegas_combination), χ² = Σ(I_k − Ī)²/σ̂_k² on K
-// − 1 degrees of freedom, Q = P(χ²_{K−1} ≥ χ²) (the regularised upper incomplete gamma function,
-// Boost.Math). χ²/dof far above 1 (Q tiny) says the iterations disagree more than their σ̂ allow:
-// the grid was still moving or σ̂ is too small, so the error estimate is not to be trusted.
+// Ī = Σ(I_k/σ̂_k²)/Σ(1/σ̂_k²) and σ̂² = 1/Σ(1/σ̂_k²) (an iteration with σ̂_k = 0, every point of
+// each hypercube alike, weighs as the mean of the others: vegas_combination), and
+// χ² = Σ(I_k − Ī)²/σ̂_k² on K − 1 degrees of freedom, Q = P(χ²_{K−1} ≥ χ²) (the regularised upper
+// incomplete gamma function, Boost.Math). χ²/dof far above 1 (Q tiny) says the iterations disagree
+// more than their σ̂ allow: the grid was still moving or σ̂ is too small, so the error estimate is
+// not to be trusted.
 //
 // Budget control: N = max_evaluations split into `iterations` equal iterations. Tolerance control:
 // training iterations of evaluations_per_iteration points each, then iterations of growing size

@@ -1,10 +1,11 @@
 // Runs a plan: every cell, every repetition, timed, into one convergence series per
 // (integrand, method) — the input of analysis/convergence_table.hpp.
 //
-// Dispatch happens once per repetition (a switch on the method name, then templates below);
-// the integrand is type-erased per batch only. Randomness: repetition r of a cell uses the
-// Philox stream stream_id({cell.stream_parts…, r}) keyed by the scene seed, so a result
-// depends on neither thread count nor run order (docs/design.md#hot-path-contract).
+// Dispatch happens once per repetition (one virtual call on the configured method the plan holds,
+// methods/method.hpp, then templates below); the integrand is type-erased per batch only.
+// Randomness: repetition r of a cell uses the Philox stream stream_id({cell.stream_parts…, r})
+// keyed by the scene seed, so a result depends on neither thread count nor run order
+// (docs/design.md#hot-path-contract).
 //
 // Timing (analysis/cell_timing.hpp): the repetitions are timed one clock reading each (their
 // total is cell_statistics::seconds); apart from them, each cell's stable time per estimate
