@@ -82,8 +82,8 @@ TEST(Schedule, OneHugeCellIsSplitOnlyWhenItsMethodSharesChunks) {
   EXPECT_EQ(whole[0].rank, 0u);
   for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(whole[i].rank, 1u) << i;
 
-  for (const cell_placement& p : assign_cells(cost, {false, false, false, false}, 2,
-                                              split_policy::all)) {
+  for (const cell_placement& p :
+       assign_cells(cost, {false, false, false, false}, 2, split_policy::all)) {
     EXPECT_TRUE(p.split);
   }
   for (const cell_placement& p :
@@ -152,9 +152,9 @@ N = [16, 1024, 1048576]
   const std::vector<double> cost = cell_costs(p, probes, series);
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
     const series_cost& c = series[probes.series_of[i]];
-    EXPECT_DOUBLE_EQ(cost[i], static_cast<double>(p.cells[i].repetitions) *
-                                  (c.fixed + static_cast<double>(p.cells[i].evaluations) *
-                                                 c.per_evaluation));
+    EXPECT_DOUBLE_EQ(
+        cost[i], static_cast<double>(p.cells[i].repetitions) *
+                     (c.fixed + static_cast<double>(p.cells[i].evaluations) * c.per_evaluation));
   }
   EXPECT_TRUE(cell_shares_chunks(p, 0));
   EXPECT_THROW(cell_shares_chunks(p, p.cells.size()), invalid_argument);

@@ -64,8 +64,9 @@ std::vector<double> cell_costs(const plan& p, const cost_probes& probes,
   std::vector<double> cost(p.cells.size());
   for (std::size_t i = 0; i < p.cells.size(); ++i) {
     if (probes.series_of[i] >= series.size()) {
-      throw invalid_argument("series", fmt::format("{} costs", series.size()),
-                             fmt::format("a cost for series {} of cell {}", probes.series_of[i], i));
+      throw invalid_argument(
+          "series", fmt::format("{} costs", series.size()),
+          fmt::format("a cost for series {} of cell {}", probes.series_of[i], i));
     }
     const series_cost& c = series[probes.series_of[i]];
     cost[i] = static_cast<double>(p.cells[i].repetitions) *
@@ -75,8 +76,8 @@ std::vector<double> cell_costs(const plan& p, const cost_probes& probes,
 }
 
 std::vector<cell_placement> assign_cells(std::span<const double> cost,
-                                         const std::vector<bool>& shares_chunks,
-                                         unsigned processes, split_policy policy) {
+                                         const std::vector<bool>& shares_chunks, unsigned processes,
+                                         split_policy policy) {
   require(processes >= 1, "processes", processes, "at least 1");
   require(shares_chunks.size() == cost.size(), "shares_chunks", shares_chunks.size(),
           fmt::format("one flag per cell ({})", cost.size()));
@@ -91,9 +92,8 @@ std::vector<cell_placement> assign_cells(std::span<const double> cost,
   std::vector<cell_placement> placement(cost.size());
   std::vector<std::size_t> whole;
   for (std::size_t i = 0; i < cost.size(); ++i) {
-    const bool split = policy == split_policy::all ||
-                       (policy == split_policy::automatic && cost[i] > split_above &&
-                        shares_chunks[i]);
+    const bool split = policy == split_policy::all || (policy == split_policy::automatic &&
+                                                       cost[i] > split_above && shares_chunks[i]);
     placement[i].split = split;
     if (!split) whole.push_back(i);
   }

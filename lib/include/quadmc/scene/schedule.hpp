@@ -76,7 +76,7 @@ struct cell_placement {
 // in cost keep plan order, and ties in load go to the lowest rank, so every process computes the
 // same assignment from the same costs.
 std::vector<cell_placement> assign_cells(std::span<const double> cost,
-                                         const std::vector<bool>& shares_chunks,
-                                         unsigned processes, split_policy policy);
+                                         const std::vector<bool>& shares_chunks, unsigned processes,
+                                         split_policy policy);
 
 }  // namespace quadmc
