@@ -46,9 +46,11 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
             where + ".target", rep.target, "NaN (a sized cell) or a finite value >= 0");
     require(std::isnan(rep.target) == std::isnan(repetitions[0].target), where + ".target",
             rep.target,
-            fmt::format("{} like repetitions[0]'s (a cell is run to a tolerance or sized, "
-                        "in every repetition)",
-                        std::isnan(repetitions[0].target) ? "NaN" : "a value"));
+            std::isnan(repetitions[0].target)
+                ? "NaN like repetitions[0]'s (a cell is run to a tolerance or sized, in every "
+                  "repetition)"
+                : "a value like repetitions[0]'s (a cell is run to a tolerance or sized, in "
+                  "every repetition)");
     require(std::isnan(rep.absolute_weight_sum) ||
                 (std::isfinite(rep.absolute_weight_sum) && rep.absolute_weight_sum >= 0.0),
             where + ".absolute_weight_sum", rep.absolute_weight_sum,
