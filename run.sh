@@ -87,30 +87,47 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# The install list of each command: what it installs, and what `./run.sh packages COMMAND`
+# prints, from this one table.
+packages_of() {
+  case "$1" in
+    bench | benchmarks) printf '%s\n' "${BENCH_PACKAGES[@]}" ;;
+    test) printf '%s\n' "${TEST_PACKAGES[@]}" ;;
+    sanitize) printf '%s\n' "${SANITIZE_PACKAGES[@]}" ;;
+    fuzz) printf '%s\n' "${FUZZ_PACKAGES[@]}" ;;
+    format) printf '%s\n' "${FORMAT_PACKAGES[@]}" ;;
+    consumer) printf '%s\n' "${LIB_PACKAGES[@]}" ;;
+    package) printf '%s\n' "${PACKAGE_PACKAGES[@]}" ;;
+    *) echo "run.sh packages: unknown command '$1'; expected bench, benchmarks, test, sanitize, fuzz, format, consumer or package" >&2
+       exit 2 ;;
+  esac
+}
+
+# Installs the list of command $1 (package names hold no spaces: one word each).
+install_for() {
+  local list
+  list=$(packages_of "$1")
+  # shellcheck disable=SC2086
+  install_missing $list
+}
+
 case "${1:-}" in
   deps)
     install_missing "${BENCH_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" "${FORMAT_PACKAGES[@]}" \
       "${PACKAGE_PACKAGES[@]}"
     ;;
   packages)
-    # With a command: that command's own list (tests/package/check_install_lists.py checks it
-    # against what the command's CMake configuration finds).
-    case "${2:-}" in
-      "") printf '%s\n' "${BENCH_PACKAGES[@]}" "${SANITIZE_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
-            "${FORMAT_PACKAGES[@]}" "${PACKAGE_PACKAGES[@]}" | sort -u ;;
-      bench | benchmarks) printf '%s\n' "${BENCH_PACKAGES[@]}" ;;
-      test) printf '%s\n' "${TEST_PACKAGES[@]}" ;;
-      sanitize) printf '%s\n' "${SANITIZE_PACKAGES[@]}" ;;
-      fuzz) printf '%s\n' "${FUZZ_PACKAGES[@]}" ;;
-      format) printf '%s\n' "${FORMAT_PACKAGES[@]}" ;;
-      consumer) printf '%s\n' "${LIB_PACKAGES[@]}" ;;
-      package) printf '%s\n' "${PACKAGE_PACKAGES[@]}" ;;
-      *) echo "run.sh packages: unknown command '$2'; expected bench, benchmarks, test, sanitize, fuzz, format, consumer or package" >&2
-         exit 2 ;;
-    esac
+    # With a command: that command's own list, the one it installs (tests/package/
+    # check_install_lists.py checks it against what the command's CMake configuration finds).
+    if [ -z "${2:-}" ]; then
+      printf '%s\n' "${BENCH_PACKAGES[@]}" "${SANITIZE_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}" \
+        "${FORMAT_PACKAGES[@]}" "${PACKAGE_PACKAGES[@]}" | sort -u
+    else
+      packages_of "$2"
+    fi
     ;;
   bench)
-    install_missing "${BENCH_PACKAGES[@]}"
+    install_for bench
     cmake --preset release >/dev/null
     # Only what the scene runs: the command. The Google Benchmark binaries and bench/peers are
     # `./run.sh benchmarks` (README, Benchmarks).
@@ -119,12 +136,12 @@ case "${1:-}" in
     ./build/release/bench/quadmc run bench/scenes/default.toml "$@"
     ;;
   benchmarks)
-    install_missing "${BENCH_PACKAGES[@]}"
+    install_for benchmarks
     cmake --preset release >/dev/null
     cmake --build --preset release
     ;;
   test)
-    install_missing "${TEST_PACKAGES[@]}"
+    install_for test
     cmake --preset test >/dev/null
     cmake --build --preset test
     # One test process per core: the suites share nothing but the machine (each end-to-end run
@@ -132,24 +149,24 @@ case "${1:-}" in
     ctest --preset test -j "$(nproc)"
     ;;
   sanitize)
-    install_missing "${SANITIZE_PACKAGES[@]}"
+    install_for sanitize
     cmake --preset sanitize >/dev/null
     cmake --build --preset sanitize
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --preset sanitize -j "$(nproc)"
     ;;
   format)
-    install_missing "${FORMAT_PACKAGES[@]}"
+    install_for format
     find lib bench tests \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
       xargs -0 clang-format --dry-run --Werror
     ;;
   fuzz)
-    install_missing "${FUZZ_PACKAGES[@]}"
+    install_for fuzz
     tests/fuzz/run.sh "${2:-60}" build/fuzz/corpus
     ;;
   consumer)
     # Installs what the test preset built (run `./run.sh test` first).
-    install_missing "${LIB_PACKAGES[@]}"
+    install_for consumer
     rm -rf build/install build/consumer
     cmake --install build/test --prefix build/install >/dev/null
     cmake -S tests/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" \
@@ -158,7 +175,7 @@ case "${1:-}" in
     ./build/consumer/consumer
     ;;
   package)
-    install_missing "${PACKAGE_PACKAGES[@]}"
+    install_for package
     cmake --preset package >/dev/null
     cmake --build --preset package
     rm -rf build/package/deb
