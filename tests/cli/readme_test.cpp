@@ -88,19 +88,33 @@ std::vector<row> readme_table(std::string_view first) {
   return body;
 }
 
+// The code spans of a cell (`…`), in order.
+std::vector<std::string> code_spans(const std::string& cell) {
+  std::vector<std::string> out;
+  for (std::size_t open = cell.find('`'); open != std::string::npos;) {
+    const std::size_t close = cell.find('`', open + 1);
+    if (close == std::string::npos) break;
+    out.push_back(cell.substr(open + 1, close - open - 1));
+    open = cell.find('`', close + 1);
+  }
+  return out;
+}
+
+// U+2212 minus signs, as the README writes them, as ASCII '-'.
+std::string with_ascii_minus(std::string text) {
+  for (std::size_t at; (at = text.find("−")) != std::string::npos;) text.replace(at, 3, "-");
+  return text;
+}
+
 // The `identifier`s of a cell (backticked words of letters, digits and '_'; other code spans,
 // such as `{ name = … }`, are text).
 names identifiers(const std::string& cell) {
   names out;
-  for (std::size_t open = cell.find('`'); open != std::string::npos;) {
-    const std::size_t close = cell.find('`', open + 1);
-    if (close == std::string::npos) break;
-    const std::string word = cell.substr(open + 1, close - open - 1);
+  for (const std::string& word : code_spans(cell)) {
     const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char c) {
       return std::isalnum(c) || c == '_';
     });
     if (plain) out.insert(word);
-    open = cell.find('`', close + 1);
   }
   return out;
 }
@@ -354,9 +368,8 @@ TEST(Readme, EveryUntestedLibraryFileIsAnException) {
 // a cell of the committed convergence.csv, so a figure left over from an older run fails here.
 TEST(Readme, DefaultSceneProseQuotesTheCommittedPage) {
   const fs::path results = fs::path(QUADMC_SOURCE_DIR) / "results/default";
-  std::string section =
-      readme_between("### What the default scene shows", "### The stress and reliability scenes");
-  for (std::size_t at; (at = section.find("−")) != std::string::npos;) section.replace(at, 3, "-");
+  const std::string section = with_ascii_minus(
+      readme_between("### What the default scene shows", "### The stress and reliability scenes"));
   const auto cells = quadmc::read_convergence_csv(results / "convergence.csv");
   const std::string page = read_text(results / "README.md");
   std::smatch m;
@@ -429,18 +442,6 @@ TEST(Readme, PeerPointRatesAreTheCommittedPages) {
             count_on_page[1].str() + " of " + count_on_page[2].str());
 }
 
-// The backticked identifiers of a cell, in order.
-std::vector<std::string> identifiers_in_order(const std::string& cell) {
-  std::vector<std::string> out;
-  for (std::size_t open = cell.find('`'); open != std::string::npos;) {
-    const std::size_t close = cell.find('`', open + 1);
-    if (close == std::string::npos) break;
-    out.push_back(cell.substr(open + 1, close - open - 1));
-    open = cell.find('`', close + 1);
-  }
-  return out;
-}
-
 // A number as the README quotes it ("−0.724", "-2", "0.5") and how many decimals it has.
 struct quoted_number {
   double value;
@@ -449,8 +450,8 @@ struct quoted_number {
 };
 
 // The numbers of a cell outside parentheses, in order; U+2212 minus is a minus.
-std::vector<quoted_number> numbers_in(std::string cell) {
-  for (std::size_t at; (at = cell.find("−")) != std::string::npos;) cell.replace(at, 3, "-");
+std::vector<quoted_number> numbers_in(const std::string& quoted) {
+  const std::string cell = with_ascii_minus(quoted);
   std::vector<quoted_number> out;
   int depth = 0;
   for (std::size_t i = 0; i < cell.size();) {
@@ -516,8 +517,8 @@ TEST(Readme, DefaultSceneFiguresAreTheCommittedPages) {
   ASSERT_FALSE(table.empty());
   for (const row& r : table) {
     ASSERT_EQ(r.size(), 5u) << r[0];
-    const auto integrands = identifiers_in_order(r[0]);
-    const auto methods = identifiers_in_order(r[1]);
+    const auto integrands = code_spans(r[0]);
+    const auto methods = code_spans(r[1]);
     ASSERT_TRUE(!integrands.empty() && !methods.empty()) << r[0] << " | " << r[1];
     ASSERT_TRUE(integrands.size() == 1 || methods.size() == 1)
         << "a row quotes one integrand with several methods or several integrands with one: "
