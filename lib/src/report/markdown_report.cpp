@@ -192,13 +192,13 @@ std::string targets_not_reached(std::span<const convergence_table> tables) {
     return "## Targets not reached\n\nNone: every cell run to a tolerance stopped with its own "
            "error estimate at or below the target.\n\n";
   }
+  const bool one = missed == 1;
+  const char* its = one ? "its" : "their";
   return fmt::format(
       "## Targets not reached\n\n{} {} run to a tolerance spent {} budget (or reached {} level "
       "cap) with {} own error estimate still above the target; {} row in the tables below is "
       "where it stopped, not an answer at that tolerance:\n\n{}\n",
-      missed, missed == 1 ? "cell" : "cells", missed == 1 ? "its" : "their",
-      missed == 1 ? "its" : "their", missed == 1 ? "its" : "their",
-      missed == 1 ? "its" : "each one's", list);
+      missed, one ? "cell" : "cells", its, its, its, one ? "its" : "each one's", list);
 }
 
 // The name of an integrand's family across dimensions: the name without the "_s<s>" that a

@@ -472,12 +472,7 @@ struct vegas_combination {
     const weighting w = weights();
     return w.largest * w.relative_sum;
   }
-  double value() const {
-    const weighting w = weights();
-    neumaier_sum weighted;
-    for (std::size_t k = 0; k < parts.size(); ++k) weighted.add(w.relative[k] * parts[k].value);
-    return weighted.value() / w.relative_sum;
-  }
+  double value() const { return value(weights()); }
   // 1/Σw = (1/largest)/Σ(w/largest): no overflow on the way.
   double std_error() const {
     const weighting w = weights();
@@ -485,13 +480,20 @@ struct vegas_combination {
   }
   double chi2() const {
     const weighting w = weights();
-    const double mean = value();
+    const double mean = value(w);
     neumaier_sum out;
     for (std::size_t k = 0; k < parts.size(); ++k) {
       const double d = parts[k].value - mean;
       out.add(d * d * w.relative[k] * w.largest);
     }
     return out.value();
+  }
+
+ private:
+  double value(const weighting& w) const {
+    neumaier_sum weighted;
+    for (std::size_t k = 0; k < parts.size(); ++k) weighted.add(w.relative[k] * parts[k].value);
+    return weighted.value() / w.relative_sum;
   }
 };
 
