@@ -5,18 +5,17 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/report/csv.hpp"
+#include "quadmc/report/interruption.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/report/staged_output.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
 #include "quadmc/sampling/periodogram.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
-#include "interruption.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
-#include "results_staging.hpp"
-#include "subprocess.hpp"
 
 #include <fmt/format.h>
 
@@ -37,6 +36,8 @@
 #include <vector>
 
 namespace quadmc_cli {
+
+namespace interruption = quadmc::interruption;
 
 namespace fs = std::filesystem;
 
@@ -387,28 +388,11 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
   }
 
   const bool given = !r.out.empty();
-  const fs::path folder = results_folder_path(r.out, "gallery");
+  const fs::path folder = quadmc::results_folder_path(r.out, "gallery");
   const std::vector<std::string> files(gallery_files.begin(), gallery_files.end());
-  std::unique_ptr<results_staging> staging;
-  {
-    const auto held = interruption::hold();
-    staging = std::make_unique<results_staging>(given ? "--out" : "results folder",
-                                                given ? r.out : std::string("results/gallery"),
-                                                folder, files, &is_gallery_file_name);
-    interruption::set_cleanup([s = staging.get()] {
-      s->finish();
-      return fmt::format("removed this gallery's unfinished results; {} is untouched",
-                         s->folder().string());
-    });
-  }
-  struct cleanup {
-    std::unique_ptr<results_staging>& staging;
-    ~cleanup() {
-      const auto held = interruption::hold();
-      interruption::set_cleanup({});
-      staging.reset();
-    }
-  } cleanup_at_exit{staging};
+  quadmc::staged_output staged("gallery", given ? "--out" : "results folder",
+                               given ? r.out : std::string("results/gallery"), folder, files,
+                               &is_gallery_file_name);
   check_plotting(gallery_script_path(), "to draw the gallery");
 
   const unsigned cores = r.threads == 0 ? std::thread::hardware_concurrency() : r.threads;
@@ -462,30 +446,19 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const fs::path dir = staging->staging();
-  {
-    const auto held = interruption::hold();
+  staged.write([&](const fs::path& dir) {
     write_file(dir / "scatter.csv", scatter_csv(results));
     write_file(dir / "strata.csv", strata_csv(results));
     write_file(dir / "discrepancy.csv", discrepancy_csv(results));
     write_file(dir / "spectrum.csv", spectrum_csv(results, r.realizations));
     write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
     write_file(dir / "README.md", readme(results, r, build, seconds, threads));
-  }
-  run_subprocess(quadmc::plot_command_line(gallery_script_path(), dir));
-  std::string written;
-  std::string warning;
-  {
-    const auto held = interruption::hold();
-    warning = staging->commit();
-    staging->finish();
-    written = "wrote " + staging->folder().string();
-    if (!staging->link().empty()) written += " (through the link " + staging->link().string() + ")";
-    interruption::set_cleanup([written] { return "the gallery had already " + written; });
-  }
+  });
+  staged.run_child(quadmc::plot_command_line(gallery_script_path(), staged.staging()));
+  const quadmc::staged_output::committed done = staged.commit();
   print(fmt::format("gallery: {} point sets in {:.1f} s on {} threads; {}\n", sets.size(), seconds,
-                    threads, written));
-  if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
+                    threads, done.written));
+  if (!done.warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", done.warning);
 }
 
 }  // namespace quadmc_cli

@@ -20,7 +20,7 @@
 //    realizations, at N = 16, 64, 256, 1024;
 //  - README.md (the page), meta.csv (what built the command), gallery.png and spectra.png.
 // Same (K, R) → the same numbers, bit for bit, for any T (each set is computed by one thread). The
-// folder is replaced by the rules of results_staging.hpp (a folder holding anything else is
+// folder is replaced by the rules of report/results_staging.hpp (a folder holding anything else is
 // refused). Errors are one line.
 #pragma once
 
@@ -43,7 +43,7 @@ struct gallery_request {
 // Adds the `gallery` subcommand to `app`, filling `request` when it is parsed.
 CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request);
 
-// Whether `name` is a file the gallery writes (results_staging.hpp's predicate).
+// Whether `name` is a file the gallery writes (report/results_staging.hpp's predicate).
 bool is_gallery_file_name(std::string_view name);
 
 // Prints the plan, computes with a progress bar on a terminal, writes the folder and prints where.

@@ -12,40 +12,43 @@
 //   3        `compare` only: the folders are incomparable (B lacks a series or a fit of A, or
 //            no series is fitted in both), report/compare.hpp
 //   130/143  interrupted by SIGINT/SIGTERM: the plot process killed, this run's staging folder
-//            removed, the old results untouched (interruption.hpp)
+//            removed, the old results untouched (report/interruption.hpp)
 // Every failure is one line on stderr, "quadmc: …".
 //
 // Environment: QUADMC_SIMD pins the SIMD level (core/simd_level.hpp). Plots are drawn by
 // Debian's /usr/bin/python3 with python3-matplotlib (report/results_folder.hpp).
 //
-// `run` writes its folder by the rules of results_staging.hpp (own staging folder, lock, atomic
-// replace, never deleting what it did not create), checks before computing anything what would
-// make the write fail (folder name lengths, writability, a concurrent run, matplotlib when plots
-// are on), and touches no folder when every [output] is off. When stdout cannot be written (a
+// `run` writes its folder by the rules of report/results_staging.hpp (own staging folder, lock,
+// atomic replace, never deleting what it did not create), checks before computing anything what
+// would make the write fail (folder name lengths, writability, a concurrent run, matplotlib when
+// plots are on), and touches no folder when every [output] is off. When stdout cannot be written (a
 // full disk, /dev/full, a closed pipe) the run still writes its folder, which is the product
 // (stdout only repeats the plan and the summary), and then exits 1 saying so.
 #include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/simd_level.hpp"
 #include "quadmc/report/compare.hpp"
+#include "quadmc/report/interruption.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/report/staged_output.hpp"
+#include "quadmc/report/write_results.hpp"
+#include "quadmc/scene/cell_scheduler.hpp"
 #include "quadmc/scene/parse.hpp"
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
+#include "quadmc/scene/run_scene.hpp"
+#include "quadmc/scene/schedule.hpp"
 
 #include "build_provenance.hpp"
 #include "catalogue_listing.hpp"
 #include "cli_validators.hpp"
 #include "gallery_command.hpp"
-#include "interruption.hpp"
 #include "mpi_run.hpp"
 #include "plot_script.hpp"
 #include "points_command.hpp"
 #include "progress_bar.hpp"
 #include "render_command.hpp"
-#include "results_staging.hpp"
-#include "subprocess.hpp"
 #include "version.hpp"
 
 #include <fmt/format.h>
@@ -73,8 +76,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using quadmc_cli::results_staging;
-namespace interruption = quadmc_cli::interruption;
+namespace interruption = quadmc::interruption;
 
 constexpr int exit_failure = 1;
 constexpr int exit_usage = 2;
@@ -106,48 +108,6 @@ class standard_output {
 
  private:
   int error_ = 0;
-};
-
-// The SIMD level is part of what fixes the last bits of exp/cos (core/simd_level.hpp), so the
-// results page names it beside the thread count.
-std::string machine_description() {
-  return fmt::format("{} hardware threads, SIMD level {} (QUADMC_SIMD to choose)",
-                     std::thread::hardware_concurrency(),
-                     quadmc::to_string(quadmc::active_simd_level()));
-}
-
-// The names the run will write into its folder, for the name-length checks made before it.
-std::vector<std::string> result_file_names(const quadmc::plan& p) {
-  std::vector<std::string> files = {std::string(quadmc::meta_csv_file)};
-  const quadmc::output_spec& output = p.source.output;
-  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
-  if (output.markdown) files.emplace_back("README.md");
-  if (output.plots) {
-    std::set<std::pair<std::string, std::size_t>> groups;
-    for (const quadmc::plan_cell& cell : p.cells) {
-      groups.emplace(p.source.integrands[cell.integrand].name, cell.dimension);
-    }
-    for (const auto& [integrand, s] : groups) {
-      files.push_back(quadmc::convergence_plot_file(integrand, s));
-      files.push_back(quadmc::work_precision_plot_file(integrand, s));
-    }
-  }
-  return files;
-}
-
-// Owns the staging folder during a run. Whatever ends the run (success, an exception, a signal),
-// the staging is finished under the interruption mutex, so the signal thread and the main thread
-// never both clean up.
-struct staged_results {
-  std::unique_ptr<results_staging> staging;
-  staged_results() = default;
-  staged_results(const staged_results&) = delete;
-  staged_results& operator=(const staged_results&) = delete;
-  ~staged_results() {
-    const auto held = interruption::hold();
-    interruption::set_cleanup({});
-    staging.reset();
-  }
 };
 
 struct run_request {
@@ -203,150 +163,116 @@ void check_writable_file(const std::string& option, const std::string& file) {
   }
 }
 
-int run_command(const run_request& request, standard_output& out,
-                const quadmc_cli::mpi::world& world) {
-  const quadmc_cli::mpi::split_policy split =
-      quadmc_cli::mpi::parse_split_policy(request.split_cells);
-  quadmc::scene scene = quadmc::parse_scene_file(request.scene_file);
-  // The command line's overrides go into the scene before it is planned, so that the plan's
-  // header shows the thread count and timing minimum the run uses, not the scene's.
-  if (request.threads) scene.threads = *request.threads;
-  if (request.timing_min_seconds) scene.budget.timing_min_seconds = *request.timing_min_seconds;
-  const quadmc::plan p = quadmc::make_plan(scene);
-  // Under mpirun every rank parses and plans (deterministically, so all fail alike on bad
-  // input); only rank 0 prints, stages and writes, and the others follow its verdict.
-  if (world.rank != 0) {
-    if (p.cells.empty() || !quadmc_cli::mpi::agree_to_proceed(world, true)) return exit_failure;
-    quadmc::run_options options;
-    options.threads = request.threads;
-    options.timing_min_seconds = request.timing_min_seconds;
-    (void)quadmc_cli::mpi::run_plan_distributed(p, options, world, split);
-    return 0;
-  }
-  if (p.cells.empty()) {
-    out.print(quadmc::format_plan(p) + "\n");
-    throw std::runtime_error(fmt::format(
-        "{}: no cell to run: the plan skips every cell (reasons in the plan); nothing written",
-        request.scene_file));
-  }
-  const quadmc::output_spec& outputs = scene.output;
-  const bool writes = outputs.csv || outputs.markdown || outputs.plots;
+quadmc::run_options run_options_of(const run_request& request) {
+  quadmc::run_options options;
+  options.threads = request.threads;
+  options.timing_min_seconds = request.timing_min_seconds;
+  return options;
+}
 
-  staged_results staged;
+// Under mpirun, a rank other than 0 follows rank 0: it runs its share of the cells, prints and
+// writes nothing, and gives up when rank 0 refused to start (mpi_run.hpp).
+int follow_rank0(const quadmc::plan& p, const quadmc::run_options& options,
+                 const quadmc_cli::mpi::world& world, quadmc::split_policy split) {
+  if (p.cells.empty() || !quadmc_cli::mpi::agree_to_proceed(world, true)) return exit_failure;
+  quadmc_cli::mpi::mpi_scheduler scheduler(world, split);
+  (void)quadmc::run_plan(p, options, scheduler);
+  return 0;
+}
+
+// Everything checked before any work, so that a refusal costs nothing (found after the run, an
+// unwritable --cells-csv or a missing matplotlib cost every cell's computing): the --cells-csv
+// file, the results folder (staged here), the plotting stack. The other ranks learn the verdict.
+std::unique_ptr<quadmc::staged_output> stage(const run_request& request, const quadmc::plan& p,
+                                             const quadmc::results_options& results,
+                                             const quadmc_cli::mpi::world& world) {
+  std::unique_ptr<quadmc::staged_output> staged;
   try {
-    // Checked with the other outputs, before any work: found after the run, an unwritable
-    // --cells-csv cost every cell's computing.
     if (!request.cells_csv.empty()) check_writable_file("--cells-csv", request.cells_csv);
-    if (writes) {
-      const fs::path folder = quadmc_cli::results_folder_path(request.out_dir, scene.name);
-      const bool given = !request.out_dir.empty();
-      {
-        const auto held = interruption::hold();
-        staged.staging = std::make_unique<results_staging>(
-            given ? "--out" : "results folder",
-            given ? request.out_dir : (fs::path("results") / scene.name).string(), folder,
-            result_file_names(p));
-        interruption::set_cleanup([s = staged.staging.get()] {
-          s->finish();
-          return fmt::format("removed this run's unfinished results; {} is untouched",
-                             s->folder().string());
-        });
-      }
-      if (outputs.plots) {
-        quadmc_cli::check_plotting(quadmc_cli::plot_script_path(),
-                                   "or set plots = false in [output]");
-      }
+    staged = quadmc::stage_results(p, request.out_dir, results);
+    if (staged && p.source.output.plots) {
+      quadmc_cli::check_plotting(results.plot_script, "or set plots = false in [output]");
     }
   } catch (...) {
     (void)quadmc_cli::mpi::agree_to_proceed(world, false);
     throw;
   }
   (void)quadmc_cli::mpi::agree_to_proceed(world, true);
+  return staged;
+}
 
+// The cells' scheduler: every cell here in one process (the MPI file is then not involved), placed
+// on ranks under mpirun.
+class cells_scheduler {
+ public:
+  cells_scheduler(const quadmc_cli::mpi::world& world, quadmc::split_policy split) {
+    if (world.size > 1) many_.emplace(world, split);
+  }
+  quadmc::cell_scheduler& get() noexcept {
+    if (many_) return *many_;
+    return here_;
+  }
+  // Where each cell ran: all on rank 0 in one process.
+  std::vector<quadmc::cell_placement> placement(std::size_t cells) const {
+    return many_ ? many_->placement() : std::vector<quadmc::cell_placement>(cells);
+  }
+
+ private:
+  quadmc::local_scheduler here_;
+  std::optional<quadmc_cli::mpi::mpi_scheduler> many_;
+};
+
+// `run --cells-csv FILE`: each cell's placement (schedule.hpp, cells_csv); nothing when empty.
+void write_cells_csv(const std::string& file, const quadmc::plan& p,
+                     const cells_scheduler& scheduler) {
+  if (file.empty()) return;
+  const std::string text = quadmc::cells_csv(p, scheduler.placement(p.cells.size()));
+  std::FILE* stream = std::fopen(file.c_str(), "w");
+  const bool ok =
+      stream != nullptr && std::fwrite(text.data(), 1, text.size(), stream) == text.size();
+  const int error = errno;
+  if (stream == nullptr || std::fclose(stream) != 0 || !ok) {
+    throw std::runtime_error(
+        fmt::format("cannot write --cells-csv {}: {}", file, std::strerror(error)));
+  }
+}
+
+int run_command(const run_request& request, standard_output& out,
+                const quadmc_cli::mpi::world& world) {
+  const quadmc::split_policy split = quadmc::parse_split_policy(request.split_cells);
+  quadmc::run_options options = run_options_of(request);
+  quadmc::plan p = quadmc::plan_scene(request.scene_file, options);
+  if (world.rank != 0) return follow_rank0(p, options, world, split);
+  if (p.cells.empty()) out.print(quadmc::format_plan(p) + "\n");
+  quadmc::require_cells(p, request.scene_file);
+  const quadmc::results_options results{quadmc::bench::build_provenance(), world.size,
+                                        quadmc_cli::plot_script_path()};
+  const std::unique_ptr<quadmc::staged_output> staged = stage(request, p, results, world);
   out.print(quadmc::format_plan(p) + "\n");
+
   quadmc_cli::progress_bar bar;
-  quadmc::run_options options;
-  options.threads = request.threads;
-  options.timing_min_seconds = request.timing_min_seconds;
   options.on_progress = [&bar](const quadmc::run_progress& progress) {
     const auto held = interruption::hold();
     bar.update(progress);
   };
-  std::vector<quadmc_cli::mpi::cell_placement> placement;
-  const quadmc::run_output result =
-      quadmc_cli::mpi::run_plan_distributed(p, options, world, split, &placement);
-  if (!request.cells_csv.empty()) {
-    std::FILE* file = std::fopen(request.cells_csv.c_str(), "w");
-    const std::string text = quadmc_cli::mpi::cells_csv(p, placement);
-    const bool ok =
-        file != nullptr && std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    const int error = errno;
-    if (file == nullptr || std::fclose(file) != 0 || !ok) {
-      throw std::runtime_error(
-          fmt::format("cannot write --cells-csv {}: {}", request.cells_csv, std::strerror(error)));
-    }
-  }
+  cells_scheduler scheduler(world, split);
+  const quadmc::scene_results r = quadmc::run_scene(std::move(p), options, scheduler.get());
+  write_cells_csv(request.cells_csv, r.plan, scheduler);
   {
     const auto held = interruption::hold();
     bar.finish();
   }
-  const std::size_t ran = p.cells.size() - result.skips.size();
-  if (ran == 0) {
-    throw std::runtime_error(fmt::format(
-        "no cell ran: budget.max_seconds = {} s was spent before the first cell; nothing written",
-        p.source.budget.max_seconds.value_or(0.0)));
-  }
-
-  std::vector<quadmc::convergence_table> tables;
-  tables.reserve(result.series.size());
-  for (const auto& series : result.series) tables.push_back(quadmc::analyse_convergence(series));
-
-  std::string written = "wrote nothing: [output] turns csv, markdown and plots off";
   std::string warning;
-  if (writes) {
-    results_staging& staging = *staged.staging;
-    quadmc::run_info info;
-    info.scene = p.source.name;
-    info.description = p.source.description;
-    info.seed = p.source.seed;
-    info.threads = result.threads;
-    info.threads_allowed = result.threads_allowed;
-    info.ranks = world.size;
-    info.machine = machine_description();
-    info.build = quadmc::bench::build_provenance();
-    info.run_seconds = result.seconds;
-    for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
-    for (const auto& skip : result.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
-    info.csv = outputs.csv;
-    info.plots = outputs.plots;
-    quadmc::results_outputs files;
-    files.csv = outputs.csv;
-    files.markdown = outputs.markdown;
-    {
-      const auto held = interruption::hold();
-      quadmc::write_results_folder(staging.staging(), info, tables, files);
-    }
-    if (outputs.plots) {
-      quadmc_cli::run_subprocess(
-          quadmc::plot_command_line(quadmc_cli::plot_script_path(), staging.staging()));
-    }
-    {
-      const auto held = interruption::hold();
-      warning = staging.commit();
-      staging.finish();
-      written = "wrote " + staging.folder().string();
-      if (!staging.link().empty()) written += " (through the link " + staging.link().string() + ")";
-      interruption::set_cleanup([written] { return "the run had already " + written; });
-    }
-  }
-
-  out.print(quadmc_cli::slope_summary(tables) + "\n");
-  out.print(fmt::format("{} {}; {}\n", cells_ran_text(ran, p.cells.size(), result.seconds),
-                        threads_text(result, world.size), written));
+  const std::string written = staged ? quadmc::write_results(*staged, r, results, &warning)
+                                     : std::string(quadmc::nothing_written);
+  out.print(quadmc_cli::slope_summary(r.tables) + "\n");
+  out.print(fmt::format("{} {}; {}\n",
+                        cells_ran_text(r.cells_ran(), r.plan.cells.size(), r.run.seconds),
+                        threads_text(r.run, world.size), written));
   if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
   if (out.failed()) {
     throw std::runtime_error(
-        out.message() + (writes ? "; the run itself succeeded and " + written : std::string()));
+        out.message() + (staged ? "; the run itself succeeded and " + written : std::string()));
   }
   return 0;
 }

@@ -44,32 +44,6 @@ bool launched_by_mpirun() {
 
 }  // namespace
 
-split_policy parse_split_policy(std::string_view text) {
-  if (text == "auto") return split_policy::automatic;
-  if (text == "all") return split_policy::all;
-  if (text == "none") return split_policy::none;
-  throw std::invalid_argument(
-      fmt::format("invalid --split-cells = '{}': expected auto, all or none", text));
-}
-
-std::string cells_csv(const quadmc::plan& p, const std::vector<cell_placement>& placement) {
-  std::string out =
-      "integrand,instance,s,method,N,tolerance,evaluations,repetitions,shares_chunks,placement\n";
-  for (std::size_t i = 0; i < p.cells.size(); ++i) {
-    const quadmc::plan_cell& cell = p.cells[i];
-    const bool to_tolerance = !std::isnan(cell.tolerance);
-    const cell_placement where = i < placement.size() ? placement[i] : cell_placement{};
-    // Scene names are identifiers (scene/parse.hpp), so no field needs quoting.
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.source.integrands[cell.integrand].name,
-                       cell.instance, cell.dimension, p.source.methods[cell.method].label,
-                       to_tolerance ? std::string() : std::to_string(cell.nominal_N),
-                       to_tolerance ? fmt::format("{}", cell.tolerance) : std::string(),
-                       cell.evaluations, cell.repetitions, cell_shares_chunks(p, i) ? 1 : 0,
-                       where.split ? std::string("split") : fmt::format("rank {}", where.rank));
-  }
-  return out;
-}
-
 bool built_with_mpi() noexcept {
   return QUADMC_HAVE_MPI != 0;
 }
@@ -92,11 +66,10 @@ bool agree_to_proceed(const world&, bool rank0_ok) {
   return rank0_ok;
 }
 
-quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world&, split_policy,
-                                        std::vector<cell_placement>* placement) {
-  if (placement != nullptr) placement->assign(p.cells.size(), cell_placement{});
-  return quadmc::run_plan(p, options);
+mpi_scheduler::mpi_scheduler(world w, split_policy policy) : world_(w), policy_(policy) {}
+
+void mpi_scheduler::run_cells(quadmc::run_session&, quadmc::run_assembly&) {
+  throw std::logic_error("the MPI scheduler needs the MPI build (QUADMC_MPI)");
 }
 
 #else
@@ -221,7 +194,7 @@ struct rank_outcome {
   std::optional<std::size_t> failed_cell;  // the first cell that failed here (plan index)
   std::string failure;
   std::vector<std::pair<std::size_t, quadmc::cell_run> > ran;
-  std::vector<std::pair<std::size_t, std::string> > skipped;
+  std::vector<std::pair<std::size_t, quadmc::plan_skip> > skipped;
 };
 
 std::vector<char> serialise(const rank_outcome& o) {
@@ -237,10 +210,11 @@ std::vector<char> serialise(const rank_outcome& o) {
     w.u64(run.repetitions.size());
     w.raw(run.repetitions.data(), run.repetitions.size() * sizeof(quadmc::repetition_result));
   }
-  for (const auto& [index, reason] : o.skipped) {
+  for (const auto& [index, skip] : o.skipped) {
     w.u64(index);
     w.u64(skipped);
-    w.text(reason);
+    w.text(skip.what);
+    w.text(skip.reason);
   }
   return std::move(w.bytes());
 }
@@ -262,7 +236,10 @@ rank_outcome deserialise(const char* data, std::size_t size) {
       r.raw(run.repetitions.data(), run.repetitions.size() * sizeof(quadmc::repetition_result));
       o.ran.emplace_back(index, std::move(run));
     } else {
-      o.skipped.emplace_back(index, r.text());
+      quadmc::plan_skip skip;
+      skip.what = r.text();
+      skip.reason = r.text();
+      o.skipped.emplace_back(index, std::move(skip));
     }
   }
   if (!r.done()) throw std::runtime_error("a rank's gathered results have trailing bytes");
@@ -338,14 +315,112 @@ assignment assign_cells(const quadmc::plan& p, const quadmc::cost_probes& probes
   return a;
 }
 
-std::string max_seconds_reason(double max_seconds, double elapsed) {
-  return fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)", max_seconds, elapsed);
+// Runs the cells all ranks share (in plan order, every rank taking part in each) into `together`,
+// recording the budget skips or the first failure in `mine`. Every rank has the same results of
+// them, so they stay here and are not sent to rank 0. Whether to skip a split cell is rank
+// 0's clock's decision, sent to all ranks: they must all run it or none. A split cell is timed
+// once, by its own call: repeating it until a minimum time has passed would make each rank decide
+// by its own clock how often to take part in its collectives.
+void run_split_cells(quadmc::run_session& session, const std::vector<std::size_t>& split,
+                     const world& w, rank_outcome& mine,
+                     std::vector<std::pair<std::size_t, quadmc::cell_run> >& together) {
+  mpi_chunk_exchange exchange(w);
+  for (const std::size_t index : split) {
+    const double elapsed = session.elapsed();
+    int skip = session.budget_spent(elapsed) ? 1 : 0;
+    MPI_Bcast(&skip, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (skip != 0) {
+      mine.skipped.emplace_back(index, session.budget_skip(index, elapsed));
+      continue;
+    }
+    try {
+      const quadmc::chunk_exchange_scope shared(&exchange);
+      together.emplace_back(index, session.run_cell(index, 0.0));
+    } catch (const std::exception& e) {
+      // Every rank fails here alike: the exchange agreed on the failing chunk, and what a rank
+      // computes outside chunks is the same on all of them.
+      mine.failed_cell = index;
+      mine.failure = e.what();
+      return;
+    }
+  }
 }
 
-std::string skip_what(const quadmc::plan& p, std::size_t index) {
-  const quadmc::plan_cell& cell = p.cells[index];
-  return fmt::format("{} × {}, N = {}", p.source.methods[cell.method].label,
-                     p.source.integrands[cell.integrand].name, cell.nominal_N);
+// Runs this rank's own cells whole, by its own clock's budget.
+void run_own_cells(quadmc::run_session& session, const std::vector<std::size_t>& own,
+                   rank_outcome& mine) {
+  for (const std::size_t index : own) {
+    const double elapsed = session.elapsed();
+    if (session.budget_spent(elapsed)) {
+      mine.skipped.emplace_back(index, session.budget_skip(index, elapsed));
+      continue;
+    }
+    try {
+      mine.ran.emplace_back(index, session.run_cell(index, session.timing_min_seconds()));
+    } catch (const std::exception& e) {
+      mine.failed_cell = index;
+      mine.failure = e.what();
+      return;
+    }
+  }
+}
+
+// Every rank's outcome, on rank 0 (in rank order; rank 0's own first); empty on the others.
+std::vector<rank_outcome> gather_outcomes(rank_outcome mine, const world& w) {
+  const std::vector<char> bytes = serialise(mine);
+  const int my_count = as_count(bytes.size(), "a rank's results");
+  std::vector<int> counts(w.rank == 0 ? w.size : 0);
+  MPI_Gather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<int> displacements(counts.size());
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    displacements[r] = as_count(total, "the gathered results");
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<char> gathered(total);
+  MPI_Gatherv(bytes.data(), my_count, MPI_BYTE, gathered.data(), counts.data(),
+              displacements.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
+  std::vector<rank_outcome> all;
+  if (w.rank != 0) return all;
+  all.push_back(std::move(mine));
+  for (unsigned r = 1; r < w.size; ++r) {
+    all.push_back(
+        deserialise(gathered.data() + displacements[r], static_cast<std::size_t>(counts[r])));
+  }
+  return all;
+}
+
+// Rank 0: the failure of the failing cell with the lowest plan index (empty when none failed),
+// else every cell filed into `assembly` in plan order.
+std::string file_in_plan_order(const quadmc::plan& p, std::vector<rank_outcome>& all,
+                               quadmc::run_assembly& assembly) {
+  std::optional<std::size_t> first_failed;
+  std::string failure;
+  for (std::size_t r = 0; r < all.size(); ++r) {
+    const rank_outcome& o = all[r];
+    if (o.failed_cell && (!first_failed || *o.failed_cell < *first_failed)) {
+      first_failed = o.failed_cell;
+      failure = fmt::format("{} (on MPI rank {} of {})", o.failure, r, all.size());
+    }
+  }
+  if (!failure.empty()) return failure;
+  std::vector<std::optional<quadmc::cell_run> > by_cell(p.cells.size());
+  std::vector<std::optional<quadmc::plan_skip> > skip(p.cells.size());
+  for (rank_outcome& o : all) {
+    for (auto& [index, run] : o.ran) by_cell[index] = std::move(run);
+    // A split cell skipped is in every rank's outcome, with the same cell and rank 0's verdict.
+    for (auto& [index, skipped] : o.skipped) {
+      if (!skip[index]) skip[index] = std::move(skipped);
+    }
+  }
+  for (std::size_t index = 0; index < p.cells.size(); ++index) {
+    if (skip[index]) {
+      assembly.skip(std::move(*skip[index]));
+    } else if (by_cell[index]) {
+      assembly.add(index, std::move(*by_cell[index]));
+    }
+  }
+  return {};
 }
 
 }  // namespace
@@ -380,151 +455,45 @@ bool agree_to_proceed(const world& w, bool rank0_ok) {
   return ok != 0;
 }
 
-quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world& w, split_policy policy,
-                                        std::vector<cell_placement>* placement) {
-  if (placement != nullptr) placement->assign(p.cells.size(), cell_placement{});
-  if (w.size <= 1) return quadmc::run_plan(p, options);
-  const auto run_start = clock::now();
-  const unsigned threads_allowed =
-      quadmc::resolve_threads(options.threads.value_or(p.source.threads));
-  const double timing_min_seconds = quadmc::resolved_timing_min_seconds(p, options);
-  const quadmc::run_context context{p.source.seed, threads_allowed};
-  quadmc::parallel_reduce_peak_threads() = 0;
+mpi_scheduler::mpi_scheduler(world w, split_policy policy) : world_(w), policy_(policy) {}
 
+void mpi_scheduler::run_cells(quadmc::run_session& session, quadmc::run_assembly& assembly) {
+  const quadmc::plan& p = session.source();
+  const world& w = world_;
   const quadmc::cost_probes probes = quadmc::choose_cost_probes(p);
-  const std::vector<quadmc::series_cost> cost = series_costs(p, probes, context, w);
-  const assignment work = assign_cells(p, probes, cost, w, policy);
-  if (placement != nullptr) *placement = work.placement;
+  const std::vector<quadmc::series_cost> cost = series_costs(p, probes, session.context(), w);
+  const assignment work = assign_cells(p, probes, cost, w, policy_);
+  placement_ = work.placement;
 
-  quadmc::run_progress progress;
-  progress.cells_total = work.split.size() + (w.rank == 0 ? work.own.size() : 0);
+  // Rank 0 speaks for the run: it reports the split cells and its own.
+  std::size_t cells = work.split.size();
+  std::uint64_t evaluations = 0;
   for (const std::size_t i : work.split) {
-    progress.evaluations_total += p.cells[i].evaluations * p.cells[i].repetitions;
+    evaluations += p.cells[i].evaluations * p.cells[i].repetitions;
   }
   if (w.rank == 0) {
+    cells += work.own.size();
     for (const std::size_t i : work.own) {
-      progress.evaluations_total += p.cells[i].evaluations * p.cells[i].repetitions;
+      evaluations += p.cells[i].evaluations * p.cells[i].repetitions;
     }
   }
-  const bool report = w.rank == 0 && static_cast<bool>(options.on_progress);
-  // A split cell is timed once, by its own call: repeating it until a minimum time has passed
-  // would make each rank decide by its own clock how often to take part in its collectives.
-  auto run_one = [&](std::size_t index, double min_seconds) {
-    std::uint64_t done = 0;
-    const std::uint64_t reps = p.cells[index].repetitions;
-    auto on_done = [&](const quadmc::repetition_result& result) {
-      progress.evaluations_done += result.evaluations;
-      if (report && ++done < reps) options.on_progress(progress);
-    };
-    auto results = quadmc::run_cell_repetitions(p, index, 0, reps, context, min_seconds, on_done);
-    ++progress.cells_done;
-    if (report) options.on_progress(progress);
-    return results;
-  };
+  session.count_progress_of(cells, evaluations, w.rank == 0);
 
-  const std::optional<double> max_seconds = p.source.budget.max_seconds;
   rank_outcome mine;
-  std::vector<std::optional<quadmc::cell_run> > split_results(p.cells.size());
-  {
-    mpi_chunk_exchange exchange(w);
-    for (const std::size_t index : work.split) {
-      // Whether to skip a split cell is rank 0's clock's decision, sent to all ranks: they must
-      // all run it or none.
-      const double elapsed = seconds_since(run_start);
-      int skip = max_seconds && elapsed > *max_seconds ? 1 : 0;
-      MPI_Bcast(&skip, 1, MPI_INT, 0, MPI_COMM_WORLD);
-      if (skip != 0) {
-        mine.skipped.emplace_back(index, max_seconds_reason(max_seconds.value_or(0.0), elapsed));
-        continue;
-      }
-      try {
-        const quadmc::chunk_exchange_scope shared(&exchange);
-        split_results[index] = run_one(index, 0.0);
-      } catch (const std::exception& e) {
-        // Every rank fails here alike: the exchange agreed on the failing chunk, and what a
-        // rank computes outside chunks is the same on all of them.
-        mine.failed_cell = index;
-        mine.failure = e.what();
-        break;
-      }
-    }
-  }
-  if (!mine.failed_cell) {
-    for (const std::size_t index : work.own) {
-      const double elapsed = seconds_since(run_start);
-      if (max_seconds && elapsed > *max_seconds) {
-        mine.skipped.emplace_back(index, max_seconds_reason(*max_seconds, elapsed));
-        continue;
-      }
-      try {
-        mine.ran.emplace_back(index, run_one(index, timing_min_seconds));
-      } catch (const std::exception& e) {
-        mine.failed_cell = index;
-        mine.failure = e.what();
-        break;
-      }
-    }
-  }
-
-  // Gather every rank's outcome on rank 0.
-  const std::vector<char> bytes = serialise(mine);
-  const int my_count = as_count(bytes.size(), "a rank's results");
-  std::vector<int> counts(w.rank == 0 ? w.size : 0);
-  MPI_Gather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::vector<int> displacements(counts.size());
-  std::size_t total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    displacements[r] = as_count(total, "the gathered results");
-    total += static_cast<std::size_t>(counts[r]);
-  }
-  std::vector<char> gathered(total);
-  MPI_Gatherv(bytes.data(), my_count, MPI_BYTE, gathered.data(), counts.data(),
-              displacements.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
-
-  // Rank 0 files the cells in plan order, or finds the failure; all ranks learn the outcome.
-  std::string failure;
-  quadmc::run_output out;
+  std::vector<std::pair<std::size_t, quadmc::cell_run> > shared;
+  run_split_cells(session, work.split, w, mine, shared);
+  if (!mine.failed_cell) run_own_cells(session, work.own, mine);
+  std::vector<rank_outcome> all = gather_outcomes(std::move(mine), w);
   if (w.rank == 0) {
-    std::vector<std::optional<quadmc::cell_run> > by_cell(p.cells.size());
-    std::vector<std::optional<std::string> > skip_reason(p.cells.size());
-    std::optional<std::size_t> first_failed;
-    for (unsigned r = 0; r < w.size; ++r) {
-      rank_outcome o = r == 0 ? mine
-                              : deserialise(gathered.data() + displacements[r],
-                                            static_cast<std::size_t>(counts[r]));
-      if (o.failed_cell && (!first_failed || *o.failed_cell < *first_failed)) {
-        first_failed = o.failed_cell;
-        failure = fmt::format("{} (on MPI rank {} of {})", o.failure, r, w.size);
-      }
-      for (auto& [index, run] : o.ran) by_cell[index] = std::move(run);
-      for (auto& [index, reason] : o.skipped) skip_reason[index] = std::move(reason);
-    }
-    for (const std::size_t index : work.split) {
-      if (split_results[index]) by_cell[index] = std::move(split_results[index]);
-    }
-    if (failure.empty()) {
-      quadmc::run_assembly assembly(p);
-      for (std::size_t index = 0; index < p.cells.size(); ++index) {
-        if (skip_reason[index]) {
-          assembly.skip(quadmc::plan_skip{skip_what(p, index), *skip_reason[index]});
-        } else if (by_cell[index]) {
-          assembly.add(index, std::move(*by_cell[index]));
-        }
-      }
-      out = std::move(assembly).finish();
-      out.threads_allowed = threads_allowed;
-      out.threads = std::max(1u, quadmc::parallel_reduce_peak_threads());
-    }
+    for (auto& cell : shared) all.front().ran.push_back(std::move(cell));
   }
+  const std::string failure = w.rank == 0 ? file_in_plan_order(p, all, assembly) : std::string();
   int failed = failure.empty() ? 0 : 1;
   MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
   if (failed != 0) {
     throw quadmc::run_error(w.rank == 0 ? failure
                                         : std::string("a cell failed (rank 0 says which)"));
   }
-  out.seconds = seconds_since(run_start);
-  return out;
 }
 
 #endif

@@ -26,6 +26,7 @@
 // mpirun says that it needs the MPI build.
 #pragma once
 
+#include "quadmc/scene/cell_scheduler.hpp"
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
 #include "quadmc/scene/schedule.hpp"
@@ -48,9 +49,7 @@ struct world {
 // cell whole, exact and not faster, so that tests see a split cell equal the unsplit one whatever
 // its kernel.
 using quadmc::cell_placement;
-using quadmc::cell_shares_chunks;
 using quadmc::split_policy;
-split_policy parse_split_policy(std::string_view text);
 
 // MPI_Init when built with MPI and started by mpirun. Without the MPI build, a process started
 // by mpirun throws (one line: mpirun needs the MPI build). Call once, first thing in main.
@@ -64,21 +63,23 @@ bool built_with_mpi() noexcept;
 // every rank; returns it. Ranks other than 0 pass `true`.
 bool agree_to_proceed(const world& w, bool rank0_ok);
 
-// Runs the plan on every rank of `w` (collective). Rank 0 returns the whole run (series in plan
-// order); other ranks return an empty run_output. A failed cell anywhere throws run_error on
-// every rank (its message on rank 0). options.on_progress is called on rank 0 for the cells it
-// runs itself and the split cells.
-//
-// `placement`, when given, receives where each plan cell ran (one entry per cell, on every rank).
-quadmc::run_output run_plan_distributed(const quadmc::plan& p, const quadmc::run_options& options,
-                                        const world& w, split_policy policy,
-                                        std::vector<cell_placement>* placement = nullptr);
+// The scheduler of a run on every rank of `w` (scene/cell_scheduler.hpp): run_plan(plan, options,
+// scheduler) is then collective. On rank 0 it files every cell (the whole run); the other ranks
+// file nothing and their run_plan returns an empty run_output. A failed cell anywhere throws
+// run_error on every rank (its message on rank 0). options.on_progress is called on rank 0 for
+// the cells it runs itself and the split cells. Only for a run of more than one rank: a run of
+// one process uses quadmc::local_scheduler and never reaches this file.
+class mpi_scheduler final : public quadmc::cell_scheduler {
+ public:
+  mpi_scheduler(world w, split_policy policy);
+  void run_cells(quadmc::run_session& session, quadmc::run_assembly& assembly) override;
+  // Where each plan cell ran (one entry per cell, on every rank), once run_cells has returned.
+  const std::vector<cell_placement>& placement() const noexcept { return placement_; }
 
-// The plan's cells with their method's shares_chunks and their placement, as CSV (`run
-// --cells-csv FILE`): integrand, instance, s, method (the label), N (empty for a tolerance
-// cell), tolerance, evaluations, repetitions, shares_chunks (1 or 0), placement ("split" or
-// "rank R"). bench/scaling.py's model reads shares_chunks from it, so the model splits only the
-// cells the planner would.
-std::string cells_csv(const quadmc::plan& p, const std::vector<cell_placement>& placement);
+ private:
+  world world_;
+  split_policy policy_;
+  std::vector<cell_placement> placement_;
+};
 
 }  // namespace quadmc_cli::mpi

@@ -3,7 +3,7 @@
 
 #include "quadmc/report/results_folder.hpp"
 
-#include "subprocess.hpp"
+#include "quadmc/report/subprocess.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -17,6 +17,8 @@
 namespace quadmc_cli {
 
 namespace fs = std::filesystem;
+using quadmc::child_output;
+using quadmc::subprocess_status;
 
 fs::path plot_script_path() {
   std::error_code ec;

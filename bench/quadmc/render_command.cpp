@@ -10,17 +10,17 @@
 #include "quadmc/core/summation.hpp"
 #include "quadmc/estimators/irradiance_image.hpp"
 #include "quadmc/report/csv.hpp"
+#include "quadmc/report/interruption.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/report/results_staging.hpp"
+#include "quadmc/report/subprocess.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
-#include "interruption.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
 #include "render_scene.hpp"
-#include "results_staging.hpp"
-#include "subprocess.hpp"
 
 #include <fmt/format.h>
 
@@ -42,6 +42,9 @@
 namespace quadmc_cli {
 
 namespace fs = std::filesystem;
+namespace interruption = quadmc::interruption;
+using quadmc::results_staging;
+using quadmc::run_subprocess;
 
 namespace {
 
@@ -294,7 +297,7 @@ void run_render(const render_request& request, const std::function<void(std::str
   const quadmc::irradiance_plane plane = sc.plane();
 
   const bool given = !request.out.empty();
-  const fs::path folder = results_folder_path(request.out, sc.name);
+  const fs::path folder = quadmc::results_folder_path(request.out, sc.name);
   std::unique_ptr<results_staging> staging;
   {
     const auto held = interruption::hold();

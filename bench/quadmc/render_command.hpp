@@ -20,7 +20,7 @@
 //    errors_<estimator>.png and light_sampling.png.
 // Same (scene, seed) → the same bits for any thread count: each pixel is a pure function of its
 // stream and the statistics are summed in pixel order after all images are done. The folder is
-// replaced by the rules of results_staging.hpp. Errors are one line.
+// replaced by the rules of report/results_staging.hpp. Errors are one line.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -43,7 +43,7 @@ struct render_request {
 // Adds the `render` subcommand to `app`, filling `request` when it is parsed.
 CLI::App* add_render_subcommand(CLI::App& app, render_request& request);
 
-// Whether `name` is a file a render writes (results_staging.hpp's predicate).
+// Whether `name` is a file a render writes (report/results_staging.hpp's predicate).
 bool is_render_file_name(std::string_view name);
 
 // Parses the scene, prints the plan, computes with a progress bar on a terminal, writes the

@@ -1,6 +1,7 @@
-// End-to-end tests of SIGINT and SIGTERM during `quadmc run` (bench/quadmc/interruption.hpp):
-// the plot process must not outlive the command, this run's staging folder and lock must go,
-// the old results must stay as they were, and the exit status must be 128 + signal.
+// End-to-end tests of SIGINT and SIGTERM during `quadmc run`
+// (lib/include/quadmc/report/interruption.hpp): the plot process must not outlive the command, this
+// run's staging folder and lock must go, the old results must stay as they were, and the exit
+// status must be 128 + signal.
 //
 // Use these for the command's behaviour under a signal. The moment of the signal is fixed by a
 // stand-in matplotlib that announces the plot step and then sleeps (quadmc_process.hpp), so the

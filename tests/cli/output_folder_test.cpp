@@ -1,6 +1,6 @@
-// End-to-end tests of the results folder's rules (bench/quadmc/results_staging.hpp): a run never
-// deletes what it did not create, never reports results that are not there, and keeps the old
-// results whole until the new ones are in place.
+// End-to-end tests of the results folder's rules (lib/include/quadmc/report/results_staging.hpp): a
+// run never deletes what it did not create, never reports results that are not there, and keeps the
+// old results whole until the new ones are in place.
 //
 // Use these for what happens on the file system around `quadmc run`; the plot step is made to
 // wait or to change the folder at a known moment by a stand-in matplotlib (quadmc_process.hpp),

@@ -156,8 +156,8 @@ TEST(VersionTest, ResultsFolderRecordsWhatVersionPrints) {
 
 TEST(VersionTest, AFolderWithMetaCsvIsReplacedByTheNextRun) {
   // Regression guard: meta.csv is a file a run writes (report/results_folder.hpp), so the folder
-  // rules (bench/quadmc/results_staging.hpp) must accept it in an old folder and remove it with
-  // the old results, not refuse the folder as someone else's.
+  // rules (lib/include/quadmc/report/results_staging.hpp) must accept it in an old folder and
+  // remove it with the old results, not refuse the folder as someone else's.
   scratch_folder dir;
   write_text(dir / "old.toml", tiny_scene("s", "old results", false));
   write_text(dir / "new.toml", tiny_scene("s", "new results", false));

@@ -132,36 +132,6 @@ command_result run_ranks(const scratch_folder& dir, unsigned ranks,
   return run_command(dir, argv);
 }
 
-// Every column of the file but those that hold run time (as bench/same_results.py compares):
-// seconds, evals_per_second, and the stable timing's columns.
-bool is_timing(const std::string& column) {
-  return column.find("second") != std::string::npos || column.rfind("timed_", 0) == 0;
-}
-
-std::vector<std::vector<std::string>> columns_but_timing(const fs::path& file) {
-  const std::string text = read_text(file);
-  std::istringstream header_line(text.substr(0, text.find('\n')));
-  std::vector<std::vector<std::string>> columns;
-  std::string name;
-  while (std::getline(header_line, name, ',')) {
-    if (is_timing(name)) continue;
-    columns.push_back(csv_column_text(file, name));
-    columns.back().insert(columns.back().begin(), name);
-  }
-  return columns;
-}
-
-void expect_same_results(const fs::path& a, const fs::path& b, const std::string& what) {
-  for (const char* file : {"convergence.csv", "slopes.csv"}) {
-    const auto ca = columns_but_timing(a / file);
-    const auto cb = columns_but_timing(b / file);
-    ASSERT_EQ(ca.size(), cb.size()) << what << ": " << file;
-    for (std::size_t k = 0; k < ca.size(); ++k) {
-      EXPECT_EQ(ca[k], cb[k]) << what << ": " << file << ", column " << ca[k].front();
-    }
-  }
-}
-
 TEST(MpiRun, TwoAndThreeRanksWriteWhatOneProcessWrites) {
   scratch_folder dir;
   write_text(dir / "scene.toml", every_kind_of_method);

@@ -1,13 +1,15 @@
 // The MPI runner (bench/quadmc/mpi_run.hpp) as a function, on the ranks mpirun starts this test
 // with (tests/mpi/CMakeLists.txt: 2 and 3 ranks): every repetition of every cell is bitwise what
 // run_plan gives on one process, for every split policy; a cell that fails on one rank makes
-// run_plan_distributed throw on every rank, and rank 0's message names the cell, the cause and
+// the MPI scheduler throw on every rank, and rank 0's message names the cell, the cause and
 // the rank. Here, unlike through the command, the plan can hold integrands that fail mid-run.
 #include "mpi_run.hpp"
 
+#include "quadmc/scene/cell_scheduler.hpp"
 #include "quadmc/scene/parse.hpp"
 #include "quadmc/scene/plan.hpp"
 #include "quadmc/scene/run.hpp"
+#include "quadmc/scene/schedule.hpp"
 
 #include <gtest/gtest.h>
 
@@ -86,7 +88,8 @@ N = { from = 256, to = 262144, factor = 8 }
   const quadmc::run_output one = quadmc::run_plan(p);
   for (const split_policy policy :
        {split_policy::automatic, split_policy::all, split_policy::none}) {
-    const quadmc::run_output many = quadmc_cli::mpi::run_plan_distributed(p, {}, the_world, policy);
+    quadmc_cli::mpi::mpi_scheduler scheduler(the_world, policy);
+    const quadmc::run_output many = quadmc::run_plan(p, {}, scheduler);
     if (the_world.rank != 0) {
       EXPECT_TRUE(many.series.empty());
       continue;
@@ -144,11 +147,12 @@ N = [1024, 4194304]
   ASSERT_EQ(p.cells.size(), 6u);
   for (const split_policy policy :
        {split_policy::automatic, split_policy::all, split_policy::none}) {
-    std::vector<quadmc_cli::mpi::cell_placement> placement;
-    (void)quadmc_cli::mpi::run_plan_distributed(p, {}, the_world, policy, &placement);
+    quadmc_cli::mpi::mpi_scheduler scheduler(the_world, policy);
+    (void)quadmc::run_plan(p, {}, scheduler);
+    const std::vector<quadmc_cli::mpi::cell_placement>& placement = scheduler.placement();
     ASSERT_EQ(placement.size(), p.cells.size());
     for (std::size_t i = 0; i < p.cells.size(); ++i) {
-      const bool shares = quadmc_cli::mpi::cell_shares_chunks(p, i);
+      const bool shares = quadmc::cell_shares_chunks(p, i);
       EXPECT_EQ(shares, p.source.methods[p.cells[i].method].label != "romberg");
       const bool large = p.cells[i].evaluations > (std::uint64_t{1} << 20);
       const bool expected =
@@ -160,7 +164,7 @@ N = [1024, 4194304]
         EXPECT_LT(placement[i].rank, the_world.size);
       }
     }
-    const std::string csv = quadmc_cli::mpi::cells_csv(p, placement);
+    const std::string csv = quadmc::cells_csv(p, placement);
     EXPECT_EQ(csv.rfind("integrand,instance,s,method,N,tolerance,evaluations,repetitions,"
                         "shares_chunks,placement\n",
                         0),
@@ -194,7 +198,8 @@ N = [1025, 131073]
   for (const split_policy policy : {split_policy::all, split_policy::none}) {
     std::string message;
     try {
-      (void)quadmc_cli::mpi::run_plan_distributed(p, {}, the_world, policy);
+      quadmc_cli::mpi::mpi_scheduler scheduler(the_world, policy);
+      (void)quadmc::run_plan(p, {}, scheduler);
     } catch (const quadmc::run_error& e) {
       message = e.what();
     }

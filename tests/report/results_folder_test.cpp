@@ -117,7 +117,7 @@ TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
   EXPECT_FALSE(fs::exists(dir.path / "convergence.csv"));
   EXPECT_FALSE(fs::exists(dir.path / "slopes.csv"));
   // meta.csv is written with any output: it is what a later run checks before it replaces the
-  // folder (bench/quadmc/results_staging.hpp).
+  // folder (lib/include/quadmc/report/results_staging.hpp).
   EXPECT_TRUE(fs::exists(dir.path / "meta.csv"));
 }
 

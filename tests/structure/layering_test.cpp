@@ -27,8 +27,9 @@ namespace fs = std::filesystem;
 using layer_graph = std::map<std::string, std::set<std::string>>;
 
 // Direct dependencies, lowest layers first: core < functions < rules, sampling < estimators;
-// core < analysis < report; methods on rules, estimators and analysis; scene on methods (and so
-// on everything below it). `methods` may not exist yet; an entry for a missing folder is harmless.
+// core < analysis; methods on rules, estimators and analysis; scene on methods (and so on
+// everything below it); report on analysis and scene (it writes what a scene's run computed).
+// `methods` may not exist yet; an entry for a missing folder is harmless.
 const layer_graph direct_dependencies = {
     {"core", {}},
     {"functions", {"core"}},
@@ -38,7 +39,7 @@ const layer_graph direct_dependencies = {
     {"analysis", {"core"}},
     {"methods", {"rules", "estimators", "analysis"}},
     {"scene", {"methods", "rules", "estimators", "analysis"}},
-    {"report", {"analysis"}},
+    {"report", {"analysis", "scene"}},
 };
 
 layer_graph transitive_closure(const layer_graph& direct) {

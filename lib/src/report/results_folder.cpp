@@ -27,7 +27,7 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
   if (ec)
     throw invalid_argument("folder", folder.string(), "a creatable directory: " + ec.message());
   // meta.csv with any output: it says what wrote the folder, and it is what a later run checks
-  // before it replaces the folder (bench/quadmc/results_staging.hpp).
+  // before it replaces the folder (report/results_staging.hpp).
   write_text(folder / meta_csv_file, meta_csv_text(info.build));
   if (outputs.csv) {
     write_text(folder / "convergence.csv", convergence_csv_text(info.scene, tables));

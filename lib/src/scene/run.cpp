@@ -244,46 +244,4 @@ run_output run_assembly::finish() && {
   return std::move(output_);
 }
 
-run_output run_plan(const plan& p, const run_options& options) {
-  const auto run_start = clock::now();
-  const unsigned threads_allowed = resolve_threads(options.threads.value_or(p.source.threads));
-  const double timing_min_seconds = resolved_timing_min_seconds(p, options);
-  const run_context context{p.source.seed, threads_allowed};
-  parallel_reduce_peak_threads() = 0;
-
-  run_assembly assembly(p);
-  run_progress progress;
-  progress.cells_total = p.cells.size();
-  progress.evaluations_total = p.total_evaluations;
-  const std::optional<double> max_seconds = p.source.budget.max_seconds;
-
-  for (std::size_t index = 0; index < p.cells.size(); ++index) {
-    const plan_cell& cell = p.cells[index];
-    const double elapsed = seconds_since(run_start);
-    if (max_seconds && elapsed > *max_seconds) {
-      assembly.skip(plan_skip{fmt::format("{} × {}, N = {}", p.source.methods[cell.method].label,
-                                          p.source.integrands[cell.integrand].name, cell.nominal_N),
-                              fmt::format("budget.max_seconds = {} s spent ({:.1f} s elapsed)",
-                                          *max_seconds, elapsed)});
-      continue;
-    }
-    std::uint64_t done = 0;
-    // Reported per repetition, so a cell of 2^32 evaluations × 4 moves the bar while it runs.
-    auto on_done = [&](const repetition_result& result) {
-      progress.evaluations_done += result.evaluations;
-      if (options.on_progress && ++done < cell.repetitions) options.on_progress(progress);
-    };
-    assembly.add(index, run_cell_repetitions(p, index, 0, cell.repetitions, context,
-                                             timing_min_seconds, on_done));
-    ++progress.cells_done;
-    if (options.on_progress) options.on_progress(progress);
-  }
-  run_output out = std::move(assembly).finish();
-  out.threads_allowed = threads_allowed;
-  out.seconds = seconds_since(run_start);
-  // A rule evaluated inline (one chunk, or a path without parallel_reduce) used this thread.
-  out.threads = std::max(1u, parallel_reduce_peak_threads());
-  return out;
-}
-
 }  // namespace quadmc

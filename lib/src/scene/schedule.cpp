@@ -8,9 +8,37 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace quadmc {
+
+split_policy parse_split_policy(std::string_view text) {
+  if (text == "auto") return split_policy::automatic;
+  if (text == "all") return split_policy::all;
+  if (text == "none") return split_policy::none;
+  throw std::invalid_argument(
+      fmt::format("invalid --split-cells = '{}': expected auto, all or none", text));
+}
+
+std::string cells_csv(const plan& p, std::span<const cell_placement> placement) {
+  std::string out =
+      "integrand,instance,s,method,N,tolerance,evaluations,repetitions,shares_chunks,placement\n";
+  for (std::size_t i = 0; i < p.cells.size(); ++i) {
+    const plan_cell& cell = p.cells[i];
+    const bool to_tolerance = !std::isnan(cell.tolerance);
+    const cell_placement where = i < placement.size() ? placement[i] : cell_placement{};
+    // Scene names are identifiers (scene/parse.hpp), so no field needs quoting.
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.source.integrands[cell.integrand].name,
+                       cell.instance, cell.dimension, p.source.methods[cell.method].label,
+                       to_tolerance ? std::string() : std::to_string(cell.nominal_N),
+                       to_tolerance ? fmt::format("{}", cell.tolerance) : std::string(),
+                       cell.evaluations, cell.repetitions, cell_shares_chunks(p, i) ? 1 : 0,
+                       where.split ? std::string("split") : fmt::format("rank {}", where.rank));
+  }
+  return out;
+}
 
 bool cell_shares_chunks(const plan& p, std::size_t index) {
   require(index < p.cells.size(), "cell index", index,

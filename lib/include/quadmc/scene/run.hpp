@@ -71,12 +71,15 @@ struct run_output {
   unsigned threads_allowed = 1;
 };
 
+// Every cell in this process, in plan order (local_scheduler). Another placement of the cells (the
+// MPI runner's) goes through run_plan(plan, options, scheduler) of scene/cell_scheduler.hpp, which
+// gives the same series.
 run_output run_plan(const plan& p, const run_options& options = {});
 
-// The two halves of run_plan, for a run whose cells do not all run on this process (the MPI
-// runner of the quadmc command): a repetition's result is a pure function of (plan, cell,
-// repetition, seed), so cells may run anywhere, in any order, and filed here in plan order give
-// the series a one-process run gives.
+// The two halves of run_plan, for a scheduler whose cells do not all run on this process (the MPI
+// runner of the quadmc command, scene/cell_scheduler.hpp): a repetition's result is a pure function
+// of (plan, cell, repetition, seed), so cells may run anywhere, in any order, and filed here in
+// plan order give the series a one-process run gives.
 //
 // One cell's repetitions, and its stable timing where it was timed.
 struct cell_run {

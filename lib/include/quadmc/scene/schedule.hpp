@@ -22,6 +22,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc {
@@ -31,6 +33,8 @@ namespace quadmc {
 // whose method does not share chunks too (each process then computes such a cell whole, which is
 // exact and not faster: it is for tests); `none` splits none. Results do not depend on it.
 enum class split_policy { automatic, all, none };
+// "auto", "all" or "none" (`quadmc run --split-cells`); throws std::invalid_argument otherwise.
+split_policy parse_split_policy(std::string_view text);
 
 // Whether cell `index` of `p` is worth splitting: its configured method's kernels share chunk
 // results between processes (method::shares_chunks, methods/method.hpp), so each of K processes
@@ -78,5 +82,12 @@ struct cell_placement {
 std::vector<cell_placement> assign_cells(std::span<const double> cost,
                                          const std::vector<bool>& shares_chunks, unsigned processes,
                                          split_policy policy);
+
+// The plan's cells with their method's shares_chunks and their placement, as CSV (`quadmc run
+// --cells-csv FILE`): integrand, instance, s, method (the label), N (empty for a tolerance
+// cell), tolerance, evaluations, repetitions, shares_chunks (1 or 0), placement ("split" or
+// "rank R"; a cell without an entry in `placement` ran on rank 0). bench/scaling.py's model reads
+// shares_chunks from it, so the model splits only the cells the planner would.
+std::string cells_csv(const plan& p, std::span<const cell_placement> placement);
 
 }  // namespace quadmc

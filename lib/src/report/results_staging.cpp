@@ -1,5 +1,5 @@
-// The results folder of `quadmc run`; the rules are in results_staging.hpp.
-#include "results_staging.hpp"
+// The results folder of a run; the rules are in results_staging.hpp.
+#include "quadmc/report/results_staging.hpp"
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/provenance.hpp"
@@ -21,7 +21,7 @@
 #include <system_error>
 #include <utility>
 
-namespace quadmc_cli {
+namespace quadmc {
 
 namespace fs = std::filesystem;
 
@@ -403,4 +403,4 @@ void results_staging::finish() noexcept {
   created_parents_.clear();
 }
 
-}  // namespace quadmc_cli
+}  // namespace quadmc

@@ -1,6 +1,7 @@
-// The results folder of `quadmc run`: which folder it is, whether this run may replace it, and
-// how the new results take the place of the old ones without ever losing either, and without
-// deleting anything this run did not create.
+// The results folder of a run (`quadmc run`, `gallery`, `render`, write_results; through
+// staged_output.hpp): which folder it is, whether this run may replace it, and how the new results
+// take the place of the old ones without ever losing either, and without deleting anything this
+// run did not create.
 //
 // Use it once per run that writes files: construct it before the run (every refusal then costs
 // nothing), write into staging(), commit(), finish(). Not for runs that write nothing (every
@@ -50,7 +51,7 @@
 #include <string_view>
 #include <vector>
 
-namespace quadmc_cli {
+namespace quadmc {
 
 // Which names a folder of this command's results may hold (only those are replaced or removed):
 // quadmc::is_results_file_name for `run`, the gallery's own names for `gallery`.
@@ -109,4 +110,4 @@ class results_staging {
   bool staging_owned_ = false;  // staging_ exists and is this run's to remove
 };
 
-}  // namespace quadmc_cli
+}  // namespace quadmc

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace quadmc_cli {
+namespace quadmc {
 
 // Where the child's output goes; its stdin is always /dev/null.
 enum class child_output {
@@ -26,4 +26,4 @@ int subprocess_status(const std::vector<std::string>& argv, child_output output)
 // exits non-zero.
 void run_subprocess(const std::vector<std::string>& argv);
 
-}  // namespace quadmc_cli
+}  // namespace quadmc

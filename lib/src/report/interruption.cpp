@@ -1,5 +1,6 @@
-// SIGINT/SIGTERM handling of the `quadmc` command; the design is in interruption.hpp.
-#include "interruption.hpp"
+// SIGINT/SIGTERM handling of a program that writes results (the `quadmc` command); the design is
+// in interruption.hpp.
+#include "quadmc/report/interruption.hpp"
 
 #include <fmt/format.h>
 #include <pthread.h>
@@ -13,7 +14,7 @@
 #include <thread>
 #include <utility>
 
-namespace quadmc_cli::interruption {
+namespace quadmc::interruption {
 namespace {
 
 // Allocated once and never freed: the waiting thread may still use it while the process exits.
@@ -106,4 +107,4 @@ void set_child_process(pid_t pid) {
   state().child.store(pid);
 }
 
-}  // namespace quadmc_cli::interruption
+}  // namespace quadmc::interruption

@@ -1,6 +1,6 @@
-#include "subprocess.hpp"
+#include "quadmc/report/subprocess.hpp"
 
-#include "interruption.hpp"
+#include "quadmc/report/interruption.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -16,7 +16,7 @@
 
 extern char** environ;
 
-namespace quadmc_cli {
+namespace quadmc {
 
 namespace {
 
@@ -102,4 +102,4 @@ void run_subprocess(const std::vector<std::string>& argv) {
   }
 }
 
-}  // namespace quadmc_cli
+}  // namespace quadmc

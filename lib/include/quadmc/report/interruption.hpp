@@ -24,7 +24,7 @@
 #include <mutex>
 #include <string>
 
-namespace quadmc_cli::interruption {
+namespace quadmc::interruption {
 
 // Blocks SIGINT and SIGTERM, ignores SIGPIPE (a closed stdout is then a write error the command
 // reports, not a silent death half-way through writing results), and starts the waiting thread.
@@ -48,4 +48,4 @@ void set_quiet(bool quiet);
 // the command exits, so no plot process outlives it. 0: none.
 void set_child_process(pid_t pid);
 
-}  // namespace quadmc_cli::interruption
+}  // namespace quadmc::interruption

@@ -1,0 +1,108 @@
+// A scene's results folder (report/write_results.hpp).
+#include "quadmc/report/write_results.hpp"
+
+#include "quadmc/core/simd_level.hpp"
+#include "quadmc/report/markdown_report.hpp"
+#include "quadmc/report/results_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+#include <thread>
+#include <utility>
+
+namespace quadmc {
+
+namespace {
+
+bool draws_plots(const plan& p, const results_options& options) {
+  return p.source.output.plots && !options.plot_script.empty();
+}
+
+// The SIMD level is part of what fixes the last bits of exp/cos (core/simd_level.hpp), so the
+// results page names it beside the thread count.
+std::string machine_description() {
+  return fmt::format("{} hardware threads, SIMD level {} (QUADMC_SIMD to choose)",
+                     std::thread::hardware_concurrency(), to_string(active_simd_level()));
+}
+
+run_info info_of(const scene_results& results, const results_options& options) {
+  const plan& p = results.plan;
+  run_info info;
+  info.scene = p.source.name;
+  info.description = p.source.description;
+  info.seed = p.source.seed;
+  info.threads = results.run.threads;
+  info.threads_allowed = results.run.threads_allowed;
+  info.ranks = options.ranks;
+  info.machine = machine_description();
+  info.build = options.build;
+  info.run_seconds = results.run.seconds;
+  for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+  for (const auto& skip : results.run.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+  info.csv = p.source.output.csv;
+  info.plots = draws_plots(p, options);
+  return info;
+}
+
+}  // namespace
+
+bool writes_results(const plan& p, const results_options& options) {
+  const output_spec& output = p.source.output;
+  return output.csv || output.markdown || draws_plots(p, options);
+}
+
+std::vector<std::string> result_file_names(const plan& p, const results_options& options) {
+  std::vector<std::string> files = {std::string(meta_csv_file)};
+  const output_spec& output = p.source.output;
+  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
+  if (output.markdown) files.emplace_back("README.md");
+  if (draws_plots(p, options)) {
+    std::set<std::pair<std::string, std::size_t>> groups;
+    for (const plan_cell& cell : p.cells) {
+      groups.emplace(p.source.integrands[cell.integrand].name, cell.dimension);
+    }
+    for (const auto& [integrand, s] : groups) {
+      files.push_back(convergence_plot_file(integrand, s));
+      files.push_back(work_precision_plot_file(integrand, s));
+    }
+  }
+  return files;
+}
+
+std::unique_ptr<staged_output> stage_results(const plan& p, const std::string& out,
+                                             const results_options& options) {
+  if (!writes_results(p, options)) return nullptr;
+  const bool given = !out.empty();
+  return std::make_unique<staged_output>(
+      "run", given ? "--out" : "results folder",
+      given ? out : (std::filesystem::path("results") / p.source.name).string(),
+      results_folder_path(out, p.source.name), result_file_names(p, options));
+}
+
+std::string write_results(staged_output& staged, const scene_results& results,
+                          const results_options& options, std::string* warning) {
+  const output_spec& output = results.plan.source.output;
+  results_outputs files;
+  files.csv = output.csv;
+  files.markdown = output.markdown;
+  staged.write([&](const std::filesystem::path& folder) {
+    write_results_folder(folder, info_of(results, options), results.tables, files);
+  });
+  if (draws_plots(results.plan, options)) {
+    staged.run_child(plot_command_line(options.plot_script, staged.staging()));
+  }
+  staged_output::committed done = staged.commit();
+  if (warning != nullptr) *warning = std::move(done.warning);
+  return done.written;
+}
+
+std::string write_results(const std::filesystem::path& folder, const scene_results& results,
+                          const results_options& options, std::string* warning) {
+  const std::unique_ptr<staged_output> staged =
+      stage_results(results.plan, folder.string(), options);
+  if (!staged) return std::string(nothing_written);
+  return write_results(*staged, results, options, warning);
+}
+
+}  // namespace quadmc
