@@ -12,13 +12,13 @@
 #include "quadmc/report/csv.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/scene/render_scene.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
 #include "interruption.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
-#include "render_scene.hpp"
 #include "results_staging.hpp"
 #include "subprocess.hpp"
 
@@ -42,6 +42,8 @@
 namespace quadmc_cli {
 
 namespace fs = std::filesystem;
+using quadmc::parse_render_scene_file;
+using quadmc::render_scene;
 
 namespace {
 

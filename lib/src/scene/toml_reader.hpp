@@ -2,8 +2,8 @@
 // located (file:line:column of its key), every failure one scene_error line "file:line:column:
 // key 'path': expected …, got …", unknown keys refused, text through toml_text.hpp's stand-ins.
 //
-// Use it for every TOML file the scene layer reads (scene files in parse.cpp), so that all of
-// them report mistakes the same way. Private to lib/src/scene/: what a
+// Use it for every TOML file the scene layer reads (scene files in parse.cpp, render scenes in
+// render_scene.cpp), so that both report mistakes the same way. Private to lib/src/scene/: what a
 // key means, its default and its bounds stay with the parser of that file; this only reads and
 // refuses. Not for the library's C++ API, whose errors are plain quadmc::invalid_argument.
 #pragma once
