@@ -13,14 +13,13 @@
 #include "quadmc/report/interruption.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
-#include "quadmc/report/results_staging.hpp"
-#include "quadmc/report/subprocess.hpp"
+#include "quadmc/report/staged_output.hpp"
+#include "quadmc/scene/render_scene.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
 #include "plot_script.hpp"
 #include "progress_bar.hpp"
-#include "render_scene.hpp"
 
 #include <fmt/format.h>
 
@@ -43,8 +42,8 @@ namespace quadmc_cli {
 
 namespace fs = std::filesystem;
 namespace interruption = quadmc::interruption;
-using quadmc::results_staging;
-using quadmc::run_subprocess;
+using quadmc::parse_render_scene_file;
+using quadmc::render_scene;
 
 namespace {
 
@@ -261,66 +260,25 @@ struct fit_row {
   quadmc::power_law_fit fit;
 };
 
-}  // namespace
+// ---------------------------------------------------------------------------------------------
+// Computing: the images, block by block over the threads, then their statistics and fits.
 
-CLI::App* add_render_subcommand(CLI::App& app, render_request& request) {
-  auto* render = app.add_subcommand(
-      "render",
-      "Render the plane under the area light with every estimator, point set and spp of a render "
-      "scene, against the exact image, into results/<scene name>/");
-  render->add_option("scene", request.scene_file, "Render scene file (TOML)")->required();
-  render->add_option("--out", request.out, "Output folder (default: results/<scene name>)")
-      ->check(quadmc_cli::non_empty_path());
-  render->add_option("--seed", request.seed, "Seed K ≥ 0 (default: the scene's `seed`)")
-      ->check(non_negative_integer());
-  render
-      ->add_option("--threads", request.threads,
-                   "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
-      ->check(CLI::Range(0u, 4096u));
-  return render;
-}
+// The images of a render and what was measured on them: everything the report writes.
+struct render_result {
+  std::vector<image> images;  // in the order of the CSV files: exact, [exact_mean], estimates, …
+  unsigned threads = 1;
+  double seconds = 0.0;
+  std::vector<quadmc::light_visibility> visibility;  // per pixel
+  std::array<std::size_t, 3> visibility_count{};     // full, penumbra, umbra
+  std::vector<error_stats> stats;                    // per image; zero for the exact ones
+  double exact_max = 0.0;
+  double exact_average = 0.0;
+  double centre_vs_mean = 0.0;  // largest |centre − pixel mean|; 0 without [light_sampling]
+  std::vector<fit_row> fits;    // per (estimator, point set), in the scene's order
+};
 
-bool is_render_file_name(std::string_view name) {
-  if (std::find(fixed_files.begin(), fixed_files.end(), name) != fixed_files.end()) return true;
-  if (name == pixels_file) return true;
-  for (const std::string_view t : {"uniform_hemisphere", "cosine_hemisphere", "light_area"}) {
-    if (name == fmt::format("errors_{}.png", t)) return true;
-  }
-  return false;
-}
-
-void run_render(const render_request& request, const std::function<void(std::string_view)>& print) {
-  render_scene sc = parse_render_scene_file(request.scene_file);
-  if (request.seed) sc.seed = *request.seed;
-  if (request.threads) sc.threads = *request.threads;
-  const quadmc::provenance build = quadmc::bench::build_provenance();
-  const quadmc::irradiance_plane plane = sc.plane();
-
-  const bool given = !request.out.empty();
-  const fs::path folder = quadmc::results_folder_path(request.out, sc.name);
-  std::unique_ptr<results_staging> staging;
-  {
-    const auto held = interruption::hold();
-    staging = std::make_unique<results_staging>(given ? "--out" : "results folder",
-                                                given ? request.out : "results/" + sc.name, folder,
-                                                output_files(sc), &is_render_file_name);
-    interruption::set_cleanup([s = staging.get()] {
-      s->finish();
-      return fmt::format("removed this render's unfinished results; {} is untouched",
-                         s->folder().string());
-    });
-  }
-  struct cleanup {
-    std::unique_ptr<results_staging>& staging;
-    ~cleanup() {
-      const auto held = interruption::hold();
-      interruption::set_cleanup({});
-      staging.reset();
-    }
-  } cleanup_at_exit{staging};
-  if (sc.images) check_plotting(render_script_path(), "to draw the images, or set images = false");
-
-  // The images, in the order of the CSV files.
+// The images, in the order of the CSV files, each with its pixels allocated.
+std::vector<image> render_images(const render_scene& sc, std::size_t pixels) {
   std::vector<image> images;
   images.push_back({.kind = image_kind::exact});
   if (sc.light_sampling) images.push_back({.kind = image_kind::exact_mean});
@@ -350,16 +308,25 @@ void run_render(const render_request& request, const std::function<void(std::str
       }
     }
   }
-  for (image& im : images) im.pixels.resize(plane.pixels());
+  for (image& im : images) im.pixels.resize(pixels);
+  return images;
+}
 
+std::size_t blocks_per_image(const quadmc::irradiance_plane& plane) {
+  return (plane.height + rows_per_block - 1) / rows_per_block;
+}
+
+// The scene's thread count, no more than there are blocks to share.
+unsigned render_threads(const render_scene& sc, const quadmc::irradiance_plane& plane,
+                        std::size_t images) {
   const unsigned cores = quadmc::resolve_threads(sc.threads);
-  const std::size_t blocks_per_image = (plane.height + rows_per_block - 1) / rows_per_block;
-  const std::size_t work_items = blocks_per_image * images.size();
-  const unsigned threads =
-      std::max(1u, static_cast<unsigned>(std::min<std::size_t>(cores, work_items)));
-  std::uint64_t total_samples = 0;
-  for (const image& im : images) total_samples += cost_per_pixel(im) * plane.pixels();
+  const std::size_t work_items = blocks_per_image(plane) * images;
+  return std::max(1u, static_cast<unsigned>(std::min<std::size_t>(cores, work_items)));
+}
 
+// What the render will do, printed before it starts.
+std::string plan_text(const render_scene& sc, const quadmc::irradiance_plane& plane,
+                      unsigned threads, const fs::path& folder) {
   std::string spp_list;
   for (const auto n : sc.spp) spp_list += fmt::format("{}{}", spp_list.empty() ? "" : ", ", n);
   const double light_low =
@@ -395,12 +362,22 @@ void run_render(const render_request& request, const std::function<void(std::str
   }
   plan +=
       fmt::format("  images: {}\n", sc.images ? "PNG (bench/render.py)" : "off (images = false)");
-  print(plan);
+  return plan;
+}
+
+// Every block of every image, taken in turn by `threads` workers, with a progress bar; the
+// first failure stops the others and is rethrown. Returns the seconds it took.
+double compute_blocks(const quadmc::irradiance_plane& plane, std::uint64_t seed,
+                      std::vector<image>& images, unsigned threads) {
+  const std::size_t per_image = blocks_per_image(plane);
+  const std::size_t work_items = per_image * images.size();
+  std::uint64_t total_samples = 0;
+  for (const image& im : images) total_samples += cost_per_pixel(im) * plane.pixels();
 
   const auto start = std::chrono::steady_clock::now();
   render_progress progress(total_samples, images.size());
   std::vector<std::atomic<std::size_t>> blocks_left(images.size());
-  for (auto& b : blocks_left) b = blocks_per_image;
+  for (auto& b : blocks_left) b = per_image;
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors(threads);
   {
@@ -409,9 +386,9 @@ void run_render(const render_request& request, const std::function<void(std::str
       workers.emplace_back([&, w] {
         try {
           for (std::size_t i = next++; i < work_items; i = next++) {
-            const std::size_t k = i / blocks_per_image;
-            const std::size_t row = (i % blocks_per_image) * rows_per_block;
-            compute_block(plane, sc.seed, images[k], row);
+            const std::size_t k = i / per_image;
+            const std::size_t row = (i % per_image) * rows_per_block;
+            compute_block(plane, seed, images[k], row);
             const std::size_t rows = std::min(rows_per_block, plane.height - row);
             progress.add(cost_per_pixel(images[k]) * rows * plane.width, --blocks_left[k] == 0);
           }
@@ -426,86 +403,119 @@ void run_render(const render_request& request, const std::function<void(std::str
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-  // Statistics, in pixel order.
-  std::vector<quadmc::light_visibility> vis(plane.pixels());
-  std::array<std::size_t, 3> vis_count{};
+// The statistics of the computed images, in pixel order (so independent of the thread count),
+// and the fit of RMSE against spp per (estimator, point set).
+void measure(const render_scene& sc, const quadmc::irradiance_plane& plane, render_result& r) {
+  r.visibility.resize(plane.pixels());
   for (std::size_t p = 0; p < plane.pixels(); ++p) {
-    vis[p] = quadmc::visibility_at(plane, plane.centre(p));
-    ++vis_count[static_cast<std::size_t>(vis[p])];
+    r.visibility[p] = quadmc::visibility_at(plane, plane.centre(p));
+    ++r.visibility_count[static_cast<std::size_t>(r.visibility[p])];
   }
-  const std::vector<double>& exact = images[0].pixels;
-  const std::vector<double>* exact_mean = sc.light_sampling ? &images[1].pixels : nullptr;
-  std::vector<error_stats> stats(images.size());
-  for (std::size_t k = 0; k < images.size(); ++k) {
-    const image& im = images[k];
-    if (im.kind == image_kind::estimate) stats[k] = compare(im.pixels, exact, vis, plane.width);
+  const std::vector<double>& exact = r.images[0].pixels;
+  const std::vector<double>* exact_mean = sc.light_sampling ? &r.images[1].pixels : nullptr;
+  r.stats.resize(r.images.size());
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind == image_kind::estimate) {
+      r.stats[k] = compare(im.pixels, exact, r.visibility, plane.width);
+    }
     if (im.kind == image_kind::light_sampling) {
-      stats[k] = compare(im.pixels, *exact_mean, vis, plane.width);
+      r.stats[k] = compare(im.pixels, *exact_mean, r.visibility, plane.width);
     }
   }
   quadmc::neumaier_sum exact_sum;
-  double exact_max = 0.0;
   for (const double e : exact) {
     exact_sum += e;
-    exact_max = std::max(exact_max, e);
+    r.exact_max = std::max(r.exact_max, e);
   }
-  const double exact_average = exact_sum.value() / static_cast<double>(plane.pixels());
-  double centre_vs_mean = 0.0;
+  r.exact_average = exact_sum.value() / static_cast<double>(plane.pixels());
   if (exact_mean != nullptr) {
     for (std::size_t p = 0; p < plane.pixels(); ++p) {
-      centre_vs_mean = std::max(centre_vs_mean, std::abs(exact[p] - (*exact_mean)[p]));
+      r.centre_vs_mean = std::max(r.centre_vs_mean, std::abs(exact[p] - (*exact_mean)[p]));
     }
   }
-
-  // rmse.csv and the fits.
-  std::string rmse_csv =
-      line({"estimator", "point_set", "spp", "rmse", "rmse_full_light", "rmse_penumbra",
-            "rmse_umbra", "mean_error", "max_abs_error", "fingerprint"});
-  std::vector<fit_row> fits;
   for (const auto t : sc.estimators) {
     for (const auto* set : sc.point_sets) {
       std::vector<double> n, err;
-      for (std::size_t k = 0; k < images.size(); ++k) {
-        const image& im = images[k];
+      for (std::size_t k = 0; k < r.images.size(); ++k) {
+        const image& im = r.images[k];
         if (im.kind != image_kind::estimate || im.technique != t || im.set != set) continue;
-        const error_stats& s = stats[k];
-        rmse_csv += line({std::string(to_string(t)), std::string(set->name), std::to_string(im.spp),
-                          number(s.rmse), number(s.rmse_by_visibility[0]),
-                          number(s.rmse_by_visibility[1]), number(s.rmse_by_visibility[2]),
-                          number(s.mean_error), number(s.max_abs_error), fingerprint(im.pixels)});
-        if (s.rmse > 0.0) {
+        if (r.stats[k].rmse > 0.0) {
           n.push_back(static_cast<double>(im.spp));
-          err.push_back(s.rmse);
+          err.push_back(r.stats[k].rmse);
         }
       }
-      fits.push_back({t, set, quadmc::fit_power_law(n, err)});
+      r.fits.push_back({t, set, quadmc::fit_power_law(n, err)});
     }
   }
-  std::string slopes_csv =
-      line({"estimator", "point_set", "points", "slope", "ci_low", "ci_high", "status"});
-  for (const fit_row& f : fits) {
-    slopes_csv += line({std::string(to_string(f.technique)), std::string(f.set->name),
-                        std::to_string(f.fit.points), number(f.fit.slope), number(f.fit.ci_low),
-                        number(f.fit.ci_high), quadmc::to_string(f.fit.status)});
+}
+
+render_result compute_render(const render_scene& sc, const quadmc::irradiance_plane& plane,
+                             std::vector<image> images, unsigned threads) {
+  render_result r;
+  r.images = std::move(images);
+  r.threads = threads;
+  r.seconds = compute_blocks(plane, sc.seed, r.images, threads);
+  measure(sc, plane, r);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reporting: the CSV files, the README and the images' binary copy for render.py.
+
+std::string rmse_csv(const render_scene& sc, const render_result& r) {
+  std::string csv =
+      line({"estimator", "point_set", "spp", "rmse", "rmse_full_light", "rmse_penumbra",
+            "rmse_umbra", "mean_error", "max_abs_error", "fingerprint"});
+  for (const auto t : sc.estimators) {
+    for (const auto* set : sc.point_sets) {
+      for (std::size_t k = 0; k < r.images.size(); ++k) {
+        const image& im = r.images[k];
+        if (im.kind != image_kind::estimate || im.technique != t || im.set != set) continue;
+        const error_stats& s = r.stats[k];
+        csv += line({std::string(to_string(t)), std::string(set->name), std::to_string(im.spp),
+                     number(s.rmse), number(s.rmse_by_visibility[0]),
+                     number(s.rmse_by_visibility[1]), number(s.rmse_by_visibility[2]),
+                     number(s.mean_error), number(s.max_abs_error), fingerprint(im.pixels)});
+      }
+    }
   }
-  std::string light_csv =
+  return csv;
+}
+
+std::string slopes_csv(const render_result& r) {
+  std::string csv =
+      line({"estimator", "point_set", "points", "slope", "ci_low", "ci_high", "status"});
+  for (const fit_row& f : r.fits) {
+    csv += line({std::string(to_string(f.technique)), std::string(f.set->name),
+                 std::to_string(f.fit.points), number(f.fit.slope), number(f.fit.ci_low),
+                 number(f.fit.ci_high), quadmc::to_string(f.fit.status)});
+  }
+  return csv;
+}
+
+std::string light_sampling_csv(const render_result& r) {
+  std::string csv =
       line({"point_set", "pixel_samples", "light_samples", "correlation", "rmse", "rmse_penumbra",
             "mean_error", "max_abs_error", "neighbour_correlation", "fingerprint"});
-  for (std::size_t k = 0; k < images.size(); ++k) {
-    const image& im = images[k];
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
     if (im.kind != image_kind::light_sampling) continue;
-    const error_stats& s = stats[k];
-    light_csv +=
-        line({std::string(im.set->name), std::to_string(im.pixel_samples),
-              std::to_string(im.light_samples), std::string(quadmc::to_string(im.correlation)),
-              number(s.rmse), number(s.rmse_by_visibility[1]), number(s.mean_error),
-              number(s.max_abs_error), number(s.neighbour_correlation), fingerprint(im.pixels)});
+    const error_stats& s = r.stats[k];
+    csv += line({std::string(im.set->name), std::to_string(im.pixel_samples),
+                 std::to_string(im.light_samples), std::string(quadmc::to_string(im.correlation)),
+                 number(s.rmse), number(s.rmse_by_visibility[1]), number(s.mean_error),
+                 number(s.max_abs_error), number(s.neighbour_correlation), fingerprint(im.pixels)});
   }
+  return csv;
+}
 
-  // README.md
+// The README's title, what was rendered and how, and the exact image.
+std::string readme_intro(const render_scene& sc, const quadmc::irradiance_plane& plane,
+                         const quadmc::provenance& build, const render_result& r) {
   const double pixels = static_cast<double>(plane.pixels());
   std::string t;
   t += fmt::format("# {}\n\n", sc.name);
@@ -516,19 +526,25 @@ void run_render(const render_request& request, const std::function<void(std::str
       "centre. Made by `quadmc render {}` (seed {}) in {:.1f} s on {} threads; quadmc {} (commit "
       "{}, {}).\n\n",
       plane.width, plane.height, plane.region[0], plane.region[2], plane.region[1], plane.region[3],
-      sc.file, sc.seed, seconds, threads, build.version, build.commit, build.compiler);
+      sc.file, sc.seed, r.seconds, r.threads, build.version, build.commit, build.compiler);
   t += fmt::format(
       "Exact image: Lambert's polygon formula minus the occluder's shadow clipped to the light "
       "(functions/irradiance.hpp); E ranges up to {:.4g}, mean {:.4g}. Pixels in full light {:.1f} "
       "%, penumbra {:.1f} %, umbra {:.1f} %.\n\n",
-      exact_max, exact_average, 100.0 * static_cast<double>(vis_count[0]) / pixels,
-      100.0 * static_cast<double>(vis_count[1]) / pixels,
-      100.0 * static_cast<double>(vis_count[2]) / pixels);
+      r.exact_max, r.exact_average, 100.0 * static_cast<double>(r.visibility_count[0]) / pixels,
+      100.0 * static_cast<double>(r.visibility_count[1]) / pixels,
+      100.0 * static_cast<double>(r.visibility_count[2]) / pixels);
   if (sc.images) {
     t += "![Exact irradiance and where the light is fully visible, partly hidden, "
          "hidden](exact.png)\n\n";
     t += "![Estimates and signed errors of the three estimators](comparison.png)\n\n";
   }
+  return t;
+}
+
+// The RMSE tables: over all pixels with the fitted slopes, then over the penumbra.
+std::string readme_rmse(const render_scene& sc, const render_result& r) {
+  std::string t;
   t += "## Image RMSE against samples per pixel\n\n";
   t += "RMSE over all pixels of (estimate − exact); slope of log RMSE on log spp with its 95% "
        "interval (Student t, analysis/power_law_fit.hpp).\n\n";
@@ -541,13 +557,13 @@ void run_render(const render_request& request, const std::function<void(std::str
   for (const auto tech : sc.estimators) {
     for (const auto* set : sc.point_sets) {
       t += fmt::format("| {} | {} |", to_string(tech), set->name);
-      for (std::size_t k = 0; k < images.size(); ++k) {
-        const image& im = images[k];
+      for (std::size_t k = 0; k < r.images.size(); ++k) {
+        const image& im = r.images[k];
         if (im.kind == image_kind::estimate && im.technique == tech && im.set == set) {
-          t += fmt::format(" {} |", fixed(stats[k].rmse));
+          t += fmt::format(" {} |", fixed(r.stats[k].rmse));
         }
       }
-      const auto& fit = fits[f++].fit;
+      const auto& fit = r.fits[f++].fit;
       t += fit.ok()
                ? fmt::format(" {:.3f} [{:.3f}, {:.3f}] |\n", fit.slope, fit.ci_low, fit.ci_high)
                : fmt::format(" {} |\n", quadmc::to_string(fit.status));
@@ -562,10 +578,10 @@ void run_render(const render_request& request, const std::function<void(std::str
   for (const auto tech : sc.estimators) {
     for (const auto* set : sc.point_sets) {
       t += fmt::format("| {} | {} |", to_string(tech), set->name);
-      for (std::size_t k = 0; k < images.size(); ++k) {
-        const image& im = images[k];
+      for (std::size_t k = 0; k < r.images.size(); ++k) {
+        const image& im = r.images[k];
         if (im.kind == image_kind::estimate && im.technique == tech && im.set == set) {
-          t += fmt::format(" {} |", fixed(stats[k].rmse_by_visibility[1]));
+          t += fmt::format(" {} |", fixed(r.stats[k].rmse_by_visibility[1]));
         }
       }
       t += "\n";
@@ -578,156 +594,231 @@ void run_render(const render_request& request, const std::function<void(std::str
                        to_string(tech));
     }
   }
-  t += "\n## How to read it\n\n";
-  t += "- **Exact image**: irradiance at each pixel centre. Under the occluder the light is "
-       "fully hidden (umbra), around it partly (penumbra); elsewhere the whole light is seen and "
-       "E falls off with the distance and angle to the light.\n"
-       "- **Signed error** (estimate − exact) in a diverging colour map centred on 0: blue below, "
-       "red above the exact value; each column of `errors_<estimator>.png` shares one symmetric "
-       "scale (stated above it) so the point sets are compared at equal spp.\n"
-       "- **uniform_hemisphere** samples directions uniformly (Y = 2π·L·V·cosθ), "
-       "**cosine_hemisphere** by cosθ/π (Y = π·L·V), **light_area** points on the light "
-       "(Y = A·L·V·cosθ·cosθ′/r²): every light_area sample hits the light, so its error comes "
-       "only from the occluder's outline and the smooth cosθ·cosθ′/r², and vanishes in full light "
-       "for a stratified set (docs/theory.md#irradiance-images).\n"
-       "- **Slopes**: independent points give −1/2 exactly in expectation (each pixel is a mean of "
-       "spp independent samples); stratified sets are steeper where the integrand is smooth "
-       "(light_area in full light: −1 for jittered points) and −3/4 across a visibility edge in "
-       "2D; an image mixes these regions, and its ladder starts at 1 spp where every set is one "
-       "random point, so its fitted slope lies between them (docs/theory.md#irradiance-images).\n";
-  if (sc.light_sampling) {
-    t += fmt::format("\n## Light sampling: 1 × {0} against {0} × 1\n\n", sc.light_samples);
-    t += fmt::format(
-        "light_area with {1} points, {0} light samples per pixel in both layouts: one pixel "
-        "sample (a random point of the pixel's square) with {0} light samples, or {0} pixel "
-        "samples (a {1} pattern over the pixel) with one light sample each. **Correlated**: every "
-        "pixel reuses one realization of the light pattern, paired with its pixel samples in "
-        "order. **Decorrelated**: each pixel draws its own light pattern and (with {0} pixel "
-        "samples) shuffles it against the pixel samples by a random permutation (padding). "
-        "Reference: the exact mean over each pixel's square (4 × 4 Gauss–Legendre; it differs "
-        "from the centre value by at most {2:.2g} here). *Neighbour correlation* is "
-        "Σ e(c, r)·e(c+1, r) / Σ ½(e(c, r)² + e(c+1, r)²): 1 when horizontally neighbouring "
-        "errors are equal, 0 when they are independent.\n\n",
-        sc.light_samples, sc.light_sampling_set->name, centre_vs_mean);
-    t += "| pixel × light samples | light samples of neighbouring pixels | RMSE | RMSE in the "
-         "penumbra | mean error | neighbour correlation |\n|---|---|---|---|---|---|\n";
-    for (std::size_t k = 0; k < images.size(); ++k) {
-      const image& im = images[k];
-      if (im.kind != image_kind::light_sampling) continue;
-      t += fmt::format("| {} × {} | {} | {} | {} | {} | {:.3f} |\n", im.pixel_samples,
-                       im.light_samples, quadmc::to_string(im.correlation), fixed(stats[k].rmse),
-                       fixed(stats[k].rmse_by_visibility[1]), fixed(stats[k].mean_error, 2),
-                       stats[k].neighbour_correlation);
-    }
-    t += "\nCorrelated or not, the RMSE is of the same order; what changes is its structure. With "
-         "one light pattern for every pixel the error is one smooth function of the position: "
-         "the penumbra shows the pattern's copies of the occluder's outline as bands, neighbouring "
-         "errors are nearly equal, and the pattern's own error is a mean error shared by the "
-         "whole image that no averaging over pixels removes. Decorrelated, the error is noise "
-         "(neighbour correlation ≈ 0, mean ≈ 0). That is why a sampler shuffles: the error is "
-         "not smaller, but it has no structure for the eye to find "
-         "([Pharr et al. 2016, §7.3]; docs/theory.md#irradiance-images).\n";
-    if (sc.images) {
-      t += "\n![Light sampling: correlated against decorrelated, 1 × L against L × "
-           "1](light_sampling.png)\n";
-    }
-  }
-  t += "\n## Files\n\n";
-  t += "`rmse.csv` (estimator, point_set, spp, rmse, rmse_full_light, rmse_penumbra, rmse_umbra, "
-       "mean_error, max_abs_error, fingerprint: FNV-1a of the image's bits), `slopes.csv` "
-       "(estimator, point_set, points, slope, ci_low, ci_high, status), `light_sampling.csv` "
-       "(point_set, pixel_samples, light_samples, correlation, rmse, rmse_penumbra, mean_error, "
-       "max_abs_error, neighbour_correlation, fingerprint), `meta.csv` (what built the command). "
-       "Per-pixel randomness is counter-based: pixel p of an image uses the Philox stream "
-       "stream_id({image, p}), the image named by (estimator, point set, spp), so the files are "
-       "the same bits for any thread count. Regenerate with `build/release/bench/quadmc render " +
-       sc.file + "`.\n";
+  return t;
+}
 
-  const fs::path dir = staging->staging();
-  {
-    const auto held = interruption::hold();
-    write_file(dir / "rmse.csv", rmse_csv);
-    write_file(dir / "slopes.csv", slopes_csv);
-    if (sc.light_sampling) write_file(dir / "light_sampling.csv", light_csv);
-    write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
-    write_file(dir / "README.md", t);
+std::string readme_how_to_read() {
+  return "\n## How to read it\n\n"
+         "- **Exact image**: irradiance at each pixel centre. Under the occluder the light is "
+         "fully hidden (umbra), around it partly (penumbra); elsewhere the whole light is seen and "
+         "E falls off with the distance and angle to the light.\n"
+         "- **Signed error** (estimate − exact) in a diverging colour map centred on 0: blue "
+         "below, red above the exact value; each column of `errors_<estimator>.png` shares one "
+         "symmetric scale (stated above it) so the point sets are compared at equal spp.\n"
+         "- **uniform_hemisphere** samples directions uniformly (Y = 2π·L·V·cosθ), "
+         "**cosine_hemisphere** by cosθ/π (Y = π·L·V), **light_area** points on the light "
+         "(Y = A·L·V·cosθ·cosθ′/r²): every light_area sample hits the light, so its error comes "
+         "only from the occluder's outline and the smooth cosθ·cosθ′/r², and vanishes in full "
+         "light for a stratified set (docs/theory.md#irradiance-images).\n"
+         "- **Slopes**: independent points give −1/2 exactly in expectation (each pixel is a mean "
+         "of spp independent samples); stratified sets are steeper where the integrand is smooth "
+         "(light_area in full light: −1 for jittered points) and −3/4 across a visibility edge in "
+         "2D; an image mixes these regions, and its ladder starts at 1 spp where every set is one "
+         "random point, so its fitted slope lies between them "
+         "(docs/theory.md#irradiance-images).\n";
+}
+
+// The [light_sampling] experiment's section; empty without it.
+std::string readme_light_sampling(const render_scene& sc, const render_result& r) {
+  if (!sc.light_sampling) return {};
+  std::string t;
+  t += fmt::format("\n## Light sampling: 1 × {0} against {0} × 1\n\n", sc.light_samples);
+  t += fmt::format(
+      "light_area with {1} points, {0} light samples per pixel in both layouts: one pixel "
+      "sample (a random point of the pixel's square) with {0} light samples, or {0} pixel "
+      "samples (a {1} pattern over the pixel) with one light sample each. **Correlated**: every "
+      "pixel reuses one realization of the light pattern, paired with its pixel samples in "
+      "order. **Decorrelated**: each pixel draws its own light pattern and (with {0} pixel "
+      "samples) shuffles it against the pixel samples by a random permutation (padding). "
+      "Reference: the exact mean over each pixel's square (4 × 4 Gauss–Legendre; it differs "
+      "from the centre value by at most {2:.2g} here). *Neighbour correlation* is "
+      "Σ e(c, r)·e(c+1, r) / Σ ½(e(c, r)² + e(c+1, r)²): 1 when horizontally neighbouring "
+      "errors are equal, 0 when they are independent.\n\n",
+      sc.light_samples, sc.light_sampling_set->name, r.centre_vs_mean);
+  t += "| pixel × light samples | light samples of neighbouring pixels | RMSE | RMSE in the "
+       "penumbra | mean error | neighbour correlation |\n|---|---|---|---|---|---|\n";
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind != image_kind::light_sampling) continue;
+    const error_stats& s = r.stats[k];
+    t += fmt::format("| {} × {} | {} | {} | {} | {} | {:.3f} |\n", im.pixel_samples,
+                     im.light_samples, quadmc::to_string(im.correlation), fixed(s.rmse),
+                     fixed(s.rmse_by_visibility[1]), fixed(s.mean_error, 2),
+                     s.neighbour_correlation);
   }
+  t += "\nCorrelated or not, the RMSE is of the same order; what changes is its structure. With "
+       "one light pattern for every pixel the error is one smooth function of the position: "
+       "the penumbra shows the pattern's copies of the occluder's outline as bands, neighbouring "
+       "errors are nearly equal, and the pattern's own error is a mean error shared by the "
+       "whole image that no averaging over pixels removes. Decorrelated, the error is noise "
+       "(neighbour correlation ≈ 0, mean ≈ 0). That is why a sampler shuffles: the error is "
+       "not smaller, but it has no structure for the eye to find "
+       "([Pharr et al. 2016, §7.3]; docs/theory.md#irradiance-images).\n";
   if (sc.images) {
-    // The images for render.py: float64 little-endian, one after the other, described by
-    // images.csv; the visibility map first.
-    std::string index =
-        line({"name", "kind", "estimator", "point_set", "spp", "pixel_samples", "light_samples",
-              "correlation", "offset", "width", "height", "x_min", "y_min", "x_max", "y_max"});
-    const std::string x_min = number(plane.region[0]), y_min = number(plane.region[1]),
-                      x_max = number(plane.region[2]), y_max = number(plane.region[3]);
-    // Written image by image (never a second copy of every image in memory).
-    std::uint64_t offset = 0;
+    t += "\n![Light sampling: correlated against decorrelated, 1 × L against L × "
+         "1](light_sampling.png)\n";
+  }
+  return t;
+}
+
+std::string readme_files(const render_scene& sc) {
+  return "\n## Files\n\n"
+         "`rmse.csv` (estimator, point_set, spp, rmse, rmse_full_light, rmse_penumbra, "
+         "rmse_umbra, mean_error, max_abs_error, fingerprint: FNV-1a of the image's bits), "
+         "`slopes.csv` (estimator, point_set, points, slope, ci_low, ci_high, status), "
+         "`light_sampling.csv` (point_set, pixel_samples, light_samples, correlation, rmse, "
+         "rmse_penumbra, mean_error, max_abs_error, neighbour_correlation, fingerprint), "
+         "`meta.csv` (what built the command). Per-pixel randomness is counter-based: pixel p of "
+         "an image uses the Philox stream stream_id({image, p}), the image named by (estimator, "
+         "point set, spp), so the files are the same bits for any thread count. Regenerate with "
+         "`build/release/bench/quadmc render " +
+         sc.file + "`.\n";
+}
+
+std::string readme_text(const render_scene& sc, const quadmc::irradiance_plane& plane,
+                        const quadmc::provenance& build, const render_result& r) {
+  return readme_intro(sc, plane, build, r) + readme_rmse(sc, r) + readme_how_to_read() +
+         readme_light_sampling(sc, r) + readme_files(sc);
+}
+
+// The images for render.py: float64 little-endian, one after the other, described by
+// images.csv; the visibility map first.
+void write_pixels(const fs::path& dir, const quadmc::irradiance_plane& plane,
+                  const render_result& r) {
+  std::string index =
+      line({"name", "kind", "estimator", "point_set", "spp", "pixel_samples", "light_samples",
+            "correlation", "offset", "width", "height", "x_min", "y_min", "x_max", "y_max"});
+  const std::string x_min = number(plane.region[0]), y_min = number(plane.region[1]),
+                    x_max = number(plane.region[2]), y_max = number(plane.region[3]);
+  // Written image by image (never a second copy of every image in memory).
+  std::uint64_t offset = 0;
+  index +=
+      line({"visibility", "visibility", "", "", "", "", "", "", "0", std::to_string(plane.width),
+            std::to_string(plane.height), x_min, y_min, x_max, y_max});
+  std::vector<double> visibility(r.visibility.size());
+  std::transform(r.visibility.begin(), r.visibility.end(), visibility.begin(),
+                 [](quadmc::light_visibility v) { return static_cast<double>(v); });
+  offset += visibility.size();
+  for (const image& im : r.images) {
+    const std::string kind = im.kind == image_kind::exact        ? "exact"
+                             : im.kind == image_kind::exact_mean ? "exact_mean"
+                             : im.kind == image_kind::estimate   ? "estimate"
+                                                                 : "light_sampling";
     index +=
-        line({"visibility", "visibility", "", "", "", "", "", "", "0", std::to_string(plane.width),
-              std::to_string(plane.height), x_min, y_min, x_max, y_max});
-    std::vector<double> visibility(vis.size());
-    std::transform(vis.begin(), vis.end(), visibility.begin(),
-                   [](quadmc::light_visibility v) { return static_cast<double>(v); });
-    offset += visibility.size();
-    for (const image& im : images) {
-      const std::string kind = im.kind == image_kind::exact        ? "exact"
-                               : im.kind == image_kind::exact_mean ? "exact_mean"
-                               : im.kind == image_kind::estimate   ? "estimate"
-                                                                   : "light_sampling";
-      index += line({im.name(), kind,
-                     im.kind == image_kind::estimate ? std::string(to_string(im.technique)) : "",
-                     im.set ? std::string(im.set->name) : "",
-                     im.kind == image_kind::estimate ? std::to_string(im.spp) : "",
-                     std::to_string(im.pixel_samples), std::to_string(im.light_samples),
-                     im.kind == image_kind::light_sampling
-                         ? std::string(quadmc::to_string(im.correlation))
-                         : "",
-                     std::to_string(offset), std::to_string(plane.width),
-                     std::to_string(plane.height), x_min, y_min, x_max, y_max});
-      offset += im.pixels.size();
-    }
-    static_assert(std::endian::native == std::endian::little, "render.py reads little-endian");
-    {
-      const auto held = interruption::hold();
-      write_file(dir / std::string(index_file), index);
-      const fs::path file = dir / std::string(pixels_file);
-      std::ofstream out(file, std::ios::binary | std::ios::trunc);
-      auto put = [&out](const std::vector<double>& x) {
-        out.write(reinterpret_cast<const char*>(x.data()),
-                  static_cast<std::streamsize>(x.size() * sizeof(double)));
-      };
-      put(visibility);
-      for (const image& im : images) put(im.pixels);
-      out.close();
-      if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
-    }
-    run_subprocess(quadmc::plot_command_line(render_script_path(), dir));
-    fs::remove(dir / std::string(pixels_file));
-    fs::remove(dir / std::string(index_file));
+        line({im.name(), kind,
+              im.kind == image_kind::estimate ? std::string(to_string(im.technique)) : "",
+              im.set ? std::string(im.set->name) : "",
+              im.kind == image_kind::estimate ? std::to_string(im.spp) : "",
+              std::to_string(im.pixel_samples), std::to_string(im.light_samples),
+              im.kind == image_kind::light_sampling ? std::string(quadmc::to_string(im.correlation))
+                                                    : "",
+              std::to_string(offset), std::to_string(plane.width), std::to_string(plane.height),
+              x_min, y_min, x_max, y_max});
+    offset += im.pixels.size();
   }
-  std::string written;
-  std::string warning;
-  {
-    const auto held = interruption::hold();
-    warning = staging->commit();
-    staging->finish();
-    written = "wrote " + staging->folder().string();
-    if (!staging->link().empty()) written += " (through the link " + staging->link().string() + ")";
-    interruption::set_cleanup([written] { return "the render had already " + written; });
-  }
+  static_assert(std::endian::native == std::endian::little, "render.py reads little-endian");
+  write_file(dir / std::string(index_file), index);
+  const fs::path file = dir / std::string(pixels_file);
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  auto put = [&out](const std::vector<double>& x) {
+    out.write(reinterpret_cast<const char*>(x.data()),
+              static_cast<std::streamsize>(x.size() * sizeof(double)));
+  };
+  put(visibility);
+  for (const image& im : r.images) put(im.pixels);
+  out.close();
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+}
+
+// Every file of the report into `dir`, and with images = true the binary copy render.py draws
+// the PNGs from. Called as one staged_output::write step, which a signal does not cut in half.
+void write_report(const fs::path& dir, const render_scene& sc,
+                  const quadmc::irradiance_plane& plane, const quadmc::provenance& build,
+                  const render_result& r) {
+  write_file(dir / "rmse.csv", rmse_csv(sc, r));
+  write_file(dir / "slopes.csv", slopes_csv(r));
+  if (sc.light_sampling) write_file(dir / "light_sampling.csv", light_sampling_csv(r));
+  write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
+  write_file(dir / "README.md", readme_text(sc, plane, build, r));
+  if (sc.images) write_pixels(dir, plane, r);
+}
+
+// The fitted slopes, printed once the folder is written.
+std::string summary_text(const render_result& r) {
   std::string summary;
-  for (std::size_t k = 0; k < fits.size(); ++k) {
-    const auto& fr = fits[k];
+  for (const fit_row& fr : r.fits) {
     if (fr.fit.ok()) {
       summary +=
           fmt::format("  {:<19} {:<16} slope {:.3f} [{:.3f}, {:.3f}]\n", to_string(fr.technique),
                       fr.set->name, fr.fit.slope, fr.fit.ci_low, fr.fit.ci_high);
     }
   }
-  print(summary);
+  return summary;
+}
+
+}  // namespace
+
+CLI::App* add_render_subcommand(CLI::App& app, render_request& request) {
+  auto* render = app.add_subcommand(
+      "render",
+      "Render the plane under the area light with every estimator, point set and spp of a render "
+      "scene, against the exact image, into results/<scene name>/");
+  render->add_option("scene", request.scene_file, "Render scene file (TOML)")->required();
+  render->add_option("--out", request.out, "Output folder (default: results/<scene name>)")
+      ->check(quadmc_cli::non_empty_path());
+  render->add_option("--seed", request.seed, "Seed K ≥ 0 (default: the scene's `seed`)")
+      ->check(non_negative_integer());
+  render
+      ->add_option("--threads", request.threads,
+                   "Threads, 0 = all cores, at most 4096 (default: the scene's `threads`)")
+      ->check(CLI::Range(0u, 4096u));
+  return render;
+}
+
+bool is_render_file_name(std::string_view name) {
+  if (std::find(fixed_files.begin(), fixed_files.end(), name) != fixed_files.end()) return true;
+  if (name == pixels_file) return true;
+  for (const std::string_view t : {"uniform_hemisphere", "cosine_hemisphere", "light_area"}) {
+    if (name == fmt::format("errors_{}.png", t)) return true;
+  }
+  return false;
+}
+
+void run_render(const render_request& request, const std::function<void(std::string_view)>& print) {
+  render_scene sc = parse_render_scene_file(request.scene_file);
+  if (request.seed) sc.seed = *request.seed;
+  if (request.threads) sc.threads = *request.threads;
+  const quadmc::provenance build = quadmc::bench::build_provenance();
+  const quadmc::irradiance_plane plane = sc.plane();
+  const fs::path folder = quadmc::results_folder_path(request.out, sc.name);
+
+  // The folder is staged before any work (a refusal costs nothing) and committed once the report
+  // and the images are in it (report/staged_output.hpp).
+  const bool given = !request.out.empty();
+  quadmc::staged_output staged("render", given ? "--out" : "results folder",
+                               given ? request.out : "results/" + sc.name, folder, output_files(sc),
+                               &is_render_file_name);
+  if (sc.images) check_plotting(render_script_path(), "to draw the images, or set images = false");
+
+  std::vector<image> images = render_images(sc, plane.pixels());
+  const unsigned threads = render_threads(sc, plane, images.size());
+  print(plan_text(sc, plane, threads, folder));
+  const render_result result = compute_render(sc, plane, std::move(images), threads);
+  staged.write([&](const fs::path& dir) { write_report(dir, sc, plane, build, result); });
+  if (sc.images) {
+    staged.run_child(quadmc::plot_command_line(render_script_path(), staged.staging()));
+    // The pixels were render.py's input only.
+    staged.write([](const fs::path& dir) {
+      fs::remove(dir / std::string(pixels_file));
+      fs::remove(dir / std::string(index_file));
+    });
+  }
+  const quadmc::staged_output::committed done = staged.commit();
+  print(summary_text(result));
   print(fmt::format("render: {} images of {} × {} pixels in {:.1f} s on {} threads; {}\n",
-                    images.size(), plane.width, plane.height, seconds, threads, written));
-  if (!warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", warning);
+                    result.images.size(), plane.width, plane.height, result.seconds, result.threads,
+                    done.written));
+  if (!done.warning.empty()) fmt::print(stderr, "quadmc: warning: {}\n", done.warning);
 }
 
 }  // namespace quadmc_cli

@@ -1,7 +1,8 @@
 // `quadmc render SCENE.toml [--out DIR] [--seed K] [--threads T]`: the plane under the area light
 // of the irradiance catalogue seen from above (estimators/irradiance_image.hpp), one irradiance
 // integral per pixel, estimated by each estimator with each point set at each spp of the scene
-// (render_scene.hpp) and set beside the exact image, written to results/<scene name>/ (or DIR).
+// (scene/render_scene.hpp) and set beside the exact image, written to results/<scene name>/ (or
+// DIR).
 //
 // Use it to see what an estimator's error looks like in a picture and how fast the image RMSE
 // falls with the samples per pixel; with [light_sampling], why a renderer decorrelates the light

@@ -1,12 +1,14 @@
 // Scene parsing: toml++ document → quadmc::scene (parse.hpp documents every key).
 //
-// Every check reports through scene_reader::fail, so every message has the one shape
-// "file:line:column: key 'path': expected …, got …" and points at the key (not the value), which
-// is where an editor's cursor should land.
+// Every check reports through the scene layer's TOML reader (toml_reader.hpp), so every message
+// has the one shape "file:line:column: key 'path': expected …, got …" and points at the key (not
+// the value), which is where an editor's cursor should land.
 #include "quadmc/scene/parse.hpp"
 
 #include "quadmc/methods/registry.hpp"
 #include "quadmc/scene/toml_text.hpp"
+
+#include "toml_reader.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -55,175 +57,8 @@ constexpr std::uint64_t max_count = std::uint64_t{1} << 53;
 constexpr std::size_t max_dimension = scene_limits::max_dimension;
 constexpr std::size_t max_ladder = scene_limits::max_ladder;
 
-std::string describe(const toml::node& n) {
-  if (const auto* v = n.as_integer()) return fmt::format("{}", v->get());
-  if (const auto* v = n.as_floating_point()) return fmt::format("{}", v->get());
-  if (const auto* v = n.as_string()) {
-    // Control characters escaped as TOML writes them: a message is one line, and "a\nb" shown
-    // as "a b" was another name than the one refused.
-    std::string text;
-    for (const char c : v->get()) {
-      switch (c) {
-        case '\n':
-          text += "\\n";
-          break;
-        case '\t':
-          text += "\\t";
-          break;
-        case '\r':
-          text += "\\r";
-          break;
-        case '"':
-          text += "\\\"";
-          break;
-        case '\\':
-          text += "\\\\";
-          break;
-        default:
-          if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-            text += fmt::format("\\u{:04X}", static_cast<unsigned char>(c));
-          } else {
-            text += c;
-          }
-      }
-    }
-    return fmt::format("\"{}\"", text);
-  }
-  if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
-  if (n.is_array()) return "an array";
-  if (n.is_table()) return "a table";
-  return "a date/time";
-}
-
-// A key and its value inside a table, with the dotted path used in messages.
-struct entry {
-  const toml::key* key = nullptr;
-  const toml::node* value = nullptr;
-  std::string path;
-};
-
-class scene_reader {
- public:
-  explicit scene_reader(std::string file) : file_(std::move(file)) {}
-
-  const std::string& file() const noexcept { return file_; }
-
-  source_location at(const toml::source_region& region) const {
-    return {file_, region.begin.line, region.begin.column};
-  }
-  source_location at(const entry& e) const { return at(e.key->source()); }
-
-  [[noreturn]] void fail(const source_location& where, std::string_view path,
-                         std::string_view message) const {
-    throw scene_error(where, toml_original_text(path), toml_original_text(message));
-  }
-  [[noreturn]] void fail(const entry& e, std::string_view message) const {
-    fail(at(e), e.path, message);
-  }
-  [[noreturn]] void expected(const entry& e, std::string_view what) const {
-    fail(e, fmt::format("expected {}, got {}", what, describe(*e.value)));
-  }
-
-  std::optional<entry> find(const toml::table& table, std::string_view key,
-                            std::string_view prefix) const {
-    const auto it = table.find(key);
-    if (it == table.end()) return std::nullopt;
-    return entry{&it->first, &it->second, path(prefix, key)};
-  }
-
-  static std::string path(std::string_view prefix, std::string_view key) {
-    return prefix.empty() ? std::string(key) : fmt::format("{}.{}", prefix, key);
-  }
-
-  // Unknown keys are errors: a typo ("repetition") must not silently fall back to a default.
-  void check_keys(const toml::table& table, std::span<const std::string_view> allowed,
-                  std::string_view prefix, std::string_view what) const {
-    for (auto&& [key, value] : table) {
-      if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
-      std::string list;
-      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      fail(at(key.source()), path(prefix, key.str()),
-           fmt::format("unknown key in {}; expected one of: {}", what, list));
-    }
-  }
-
-  std::uint64_t count(const entry& e, std::uint64_t lo, std::uint64_t hi,
-                      std::string_view what) const {
-    // Integral floats are accepted so that "max_evaluations = 1e8" reads as written.
-    if (const auto* i = e.value->as_integer()) {
-      const std::int64_t v = i->get();
-      if (v >= 0 && static_cast<std::uint64_t>(v) >= lo && static_cast<std::uint64_t>(v) <= hi) {
-        return static_cast<std::uint64_t>(v);
-      }
-    } else if (const auto* f = e.value->as_floating_point()) {
-      const double v = f->get();
-      if (std::isfinite(v) && v == std::floor(v) && v >= static_cast<double>(lo) &&
-          v <= static_cast<double>(hi)) {
-        return static_cast<std::uint64_t>(v);
-      }
-    }
-    expected(e, what);
-  }
-
-  double number(const entry& e, std::string_view what) const {
-    if (const auto* i = e.value->as_integer()) return static_cast<double>(i->get());
-    if (const auto* f = e.value->as_floating_point()) {
-      if (std::isfinite(f->get())) return f->get();
-    }
-    expected(e, what);
-  }
-
-  std::string string(const entry& e, std::string_view what) const {
-    if (const auto* s = e.value->as_string()) return toml_original_text(s->get());
-    expected(e, what);
-  }
-
-  bool boolean(const entry& e) const {
-    if (const auto* b = e.value->as_boolean()) return b->get();
-    expected(e, "true or false");
-  }
-
-  // Names become file and directory names in results/, so they stay portable. Integrand names
-  // and method labels are also copied into every cell's listing and file names with a prefix
-  // and a suffix, so they are at most max_name_length long; the scene's own `name` is one folder
-  // name, whose length the command checks against the file system.
-  std::string display_name(const entry& e, bool bounded = true) const {
-    // "." and ".." are made of those characters but name the folder itself and its parent.
-    const std::string what =
-        bounded ? fmt::format(
-                      "a name of letters, digits, '_', '-', '.', other than '.' and '..' "
-                      "(at most {} characters)",
-                      max_name_length)
-                : std::string("a name of letters, digits, '_', '-', '.', other than '.' and '..'");
-    std::string s = string(e, what);
-    if (!quadmc::is_portable_name(s) || (bounded && s.size() > max_name_length)) expected(e, what);
-    return s;
-  }
-  static constexpr std::size_t max_name_length = scene_limits::max_name_length;
-
-  const toml::table& table(const entry& e, std::string_view what) const {
-    if (const auto* t = e.value->as_table()) return *t;
-    expected(e, what);
-  }
-
-  // The tables of an array of tables ([[integrand]]), at least one.
-  const toml::array& tables(const entry& e, std::string_view header) const {
-    const auto* a = e.value->as_array();
-    if (a == nullptr || a->empty() || !a->is_array_of_tables()) {
-      expected(e, fmt::format("one or more [[{}]] tables", header));
-    }
-    return *a;
-  }
-
- private:
-  std::string file_;
-};
-
-key_locations locations_of(const scene_reader& r, const toml::table& t) {
-  key_locations keys;
-  for (auto&& [key, value] : t) keys.emplace(toml_original_text(key.str()), r.at(key.source()));
-  return keys;
-}
+using scene_toml::entry;
+using scene_reader = scene_toml::reader;
 
 // ---------------------------------------------------------------------------------------------
 // [[integrand]]
@@ -235,7 +70,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
   integrand_spec base;
   base.table_index = index;
   base.table = r.at(t.source());
-  base.keys = locations_of(r, t);
+  base.keys = r.locations(t);
 
   // Every key is copied into each integrand a `dimensions` list expands to: the count is
   // bounded so that a long table cannot multiply into gigabytes.
@@ -265,10 +100,9 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
   const std::string_view dim_expected = "a dimension between 1 and 1024";
   if (dim) dimensions.push_back(r.count(*dim, 1, max_dimension, dim_expected));
   if (dims) {
-    const auto* a = dims->value->as_array();
-    if (a == nullptr || a->empty()) r.expected(*dims, "a non-empty array of dimensions");
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const entry element{dims->key, a->get(i), fmt::format("{}[{}]", dims->path, i + 1)};
+    const toml::array& a = r.array(*dims, "a non-empty array of dimensions");
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const entry element = scene_reader::element(*dims, i);
       const std::size_t s = r.count(element, 1, max_dimension, dim_expected);
       if (std::find(dimensions.begin(), dimensions.end(), s) != dimensions.end()) {
         r.fail(element, fmt::format("dimension {} is listed twice", s));
@@ -302,7 +136,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
       }
       std::vector<double> v;
       for (std::size_t i = 0; i < a->size(); ++i) {
-        const entry element{&key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
+        const entry element = scene_reader::element(e, i);
         v.push_back(r.number(element, "a finite number"));
       }
       base.vectors.emplace(toml_original_text(k), std::move(v));
@@ -446,7 +280,7 @@ class toml_option_reader final : public option_reader {
     if (a->empty()) r_->expected(e, fmt::format("{} or a non-empty array of them", what));
     if (a->size() > max_values) r_->fail(e, fmt::format("more than {} values", max_values));
     for (std::size_t i = 0; i < a->size(); ++i) {
-      one(entry{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)});
+      one(scene_reader::element(e, i));
     }
   }
 
@@ -494,11 +328,10 @@ void parse_control(const scene_reader& r, const toml::table& t, const std::strin
     r.fail(m.table, prefix + ".tolerances",
            "missing required key for control = \"tolerance\" (the errors to reach, decreasing)");
   }
-  const auto* a = tolerances->value->as_array();
-  if (a == nullptr || a->empty()) r.expected(*tolerances, "a non-empty array of tolerances");
-  if (a->size() > max_ladder) r.fail(*tolerances, fmt::format("more than {} values", max_ladder));
-  for (std::size_t i = 0; i < a->size(); ++i) {
-    const entry element{tolerances->key, a->get(i), fmt::format("{}[{}]", tolerances->path, i + 1)};
+  const toml::array& a = r.array(*tolerances, "a non-empty array of tolerances");
+  if (a.size() > max_ladder) r.fail(*tolerances, fmt::format("more than {} values", max_ladder));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const entry element = scene_reader::element(*tolerances, i);
     const double tol = r.number(element, "a tolerance > 0 (an absolute error)");
     if (!(tol > 0.0)) r.expected(element, "a tolerance > 0 (an absolute error)");
     if (!m.tolerances.empty() && tol >= m.tolerances.back()) {
@@ -529,7 +362,7 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   method_spec m;
   m.table_index = index;
   m.table = r.at(t.source());
-  m.keys = locations_of(r, t);
+  m.keys = r.locations(t);
 
   const auto name = r.find(t, "name", prefix);
   if (!name) {
@@ -558,13 +391,12 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   m.configured = descriptor->create(*descriptor, options);
 
   if (const auto e = r.find(t, "integrands", prefix)) {
-    const auto* a = e->value->as_array();
-    if (a == nullptr || a->empty()) r.expected(*e, "a non-empty array of integrand names");
-    if (a->size() > scene_limits::max_integrands) {
+    const toml::array& a = r.array(*e, "a non-empty array of integrand names");
+    if (a.size() > scene_limits::max_integrands) {
       r.fail(*e, fmt::format("more than {} names", scene_limits::max_integrands));
     }
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const entry element{e->key, a->get(i), fmt::format("{}[{}]", e->path, i + 1)};
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const entry element = scene_reader::element(*e, i);
       std::string n = r.string(element, "an integrand name");
       if (!names.contains(n)) {
         std::string known;
@@ -597,7 +429,7 @@ std::vector<std::uint64_t> parse_ladder(const scene_reader& r, const entry& e) {
     if (a->empty()) r.expected(e, "a non-empty array of counts");
     if (a->size() > max_ladder) r.fail(e, fmt::format("more than {} values", max_ladder));
     for (std::size_t i = 0; i < a->size(); ++i) {
-      const entry element{e.key, a->get(i), fmt::format("{}[{}]", e.path, i + 1)};
+      const entry element = scene_reader::element(e, i);
       const std::uint64_t n = r.count(element, 1, max_count, what);
       if (!ladder.empty() && n <= ladder.back()) {
         r.fail(element, fmt::format("values must increase, got {} after {}", n, ladder.back()));
@@ -812,15 +644,7 @@ scene parse_scene(std::string_view toml_text, std::string_view file_name) {
                       fmt::format("the scene is {} bytes; a scene file has at most {} (1 MiB)",
                                   toml_text.size(), scene_limits::max_file_bytes));
   }
-  const std::string safe_text = toml_safe_text(toml_text, file_name);
-  toml::table root;
-  try {
-    root = toml::parse(safe_text, file_name);
-  } catch (const toml::parse_error& e) {
-    // toml++'s own position: where the syntax broke (for a truncated file, its end).
-    throw scene_error(reader.at(e.source()), "", toml_original_text(e.description()));
-  }
-  return parse_root(reader, root);
+  return parse_root(reader, reader.parse(toml_text));
 }
 
 scene parse_scene_file(const std::filesystem::path& path) {

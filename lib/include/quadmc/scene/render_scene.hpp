@@ -1,12 +1,13 @@
 // The scene file of `quadmc render` (bench/scenes/render.toml): which image of the plane under
 // the area light to compute, with which estimators, point sets and samples per pixel.
 //
-// Its own small parser rather than scene/parse.hpp's: a render scene has none of a convergence
-// scene's tables ([[integrand]], [[method]], [budget]) and keys of its own (the image, the
-// estimators, the spp ladder), and `quadmc run` must keep refusing these keys as typos. It
-// follows the same rules: the file read within scene/parse.hpp's limits (read_scene_file), the
-// text through scene/toml_text.hpp, unknown keys refused, and every error one line
-// "file:line:column: key 'k': expected …, got …" (scene/scene_error.hpp).
+// Use it for `quadmc render`'s scene files; a convergence study's scene is parse.hpp's. Its own
+// parser rather than parse.hpp's: a render scene has none of a convergence scene's tables
+// ([[integrand]], [[method]], [budget]) and keys of its own (the image, the estimators, the spp
+// ladder), and `quadmc run` must keep refusing these keys as typos. It reads the TOML with the
+// scene layer's reader, so it follows the same rules: the file read within parse.hpp's limits
+// (read_scene_file), the text through toml_text.hpp, unknown keys refused, and every error one
+// line "file:line:column: key 'k': expected …, got …" (scene_error.hpp).
 //
 // Keys (all optional; the README's render key table lists them):
 //   name = "render"        results/<name>/ unless --out; letters, digits, '_', '-', '.'
@@ -16,8 +17,9 @@
 //   threads = 0            0 = all cores, at most 4096 (default 0).
 //   width = 256            W pixels, 1…4096 (default 256).
 //   height = 256           H pixels, 1…4096 (default 256).
-//   region = [x₀, y₀, x₁, y₁]   the imaged part of the plane z = 0 (default [-0.55, -0.6, 0.15,
-//   0.1]). occluder = true        the catalogue's occluder (functions/irradiance.hpp) or none.
+//   region = [x₀, y₀, x₁, y₁]   the imaged part of the plane z = 0
+//                          (default [-0.55, -0.6, 0.15, 0.1]).
+//   occluder = true        the catalogue's occluder (functions/irradiance.hpp) or none.
 //   occluder_height = 0.5  its height, 0 < h below the light (default 0.5, the catalogue's).
 //   estimators = [...]     uniform_hemisphere, cosine_hemisphere, light_area (default all three).
 //   point_sets = [...]     names of the point-set catalogue (default independent, jittered,
@@ -43,7 +45,7 @@
 #include <string_view>
 #include <vector>
 
-namespace quadmc_cli {
+namespace quadmc {
 
 struct render_scene {
   std::string file;
@@ -56,22 +58,22 @@ struct render_scene {
   std::array<double, 4> region{-0.55, -0.6, 0.15, 0.1};
   bool occluder = true;
   double occluder_height = 0.5;
-  std::vector<quadmc::irradiance_sampling> estimators;
-  std::vector<const quadmc::point_set_entry*> point_sets;
+  std::vector<irradiance_sampling> estimators;
+  std::vector<const point_set_entry*> point_sets;
   std::vector<std::uint64_t> spp;
   bool images = true;
   bool light_sampling = false;
   std::uint64_t light_samples = 16;
-  const quadmc::point_set_entry* light_sampling_set = nullptr;
+  const point_set_entry* light_sampling_set = nullptr;
 
-  quadmc::irradiance_plane plane() const;
+  irradiance_plane plane() const;
   // Images the render computes: estimated ones, the two exact ones, and 4 of the experiment.
   std::size_t image_count() const noexcept {
     return estimators.size() * point_sets.size() * spp.size() + 2 + (light_sampling ? 4 : 0);
   }
 };
 
-std::string_view to_string(quadmc::irradiance_sampling technique) noexcept;
+std::string_view to_string(irradiance_sampling technique) noexcept;
 
 // The top-level keys and those of [light_sampling], as the parser accepts them.
 std::span<const std::string_view> render_scene_keys() noexcept;
@@ -80,4 +82,4 @@ std::span<const std::string_view> light_sampling_keys() noexcept;
 render_scene parse_render_scene(std::string_view toml_text, std::string_view file_name);
 render_scene parse_render_scene_file(const std::filesystem::path& path);
 
-}  // namespace quadmc_cli
+}  // namespace quadmc
