@@ -1,7 +1,6 @@
-// The peers as methods a scene can name (peer_hcubature, peer_pcubature, peer_gsl_plain,
-// peer_gsl_miser, peer_gsl_vegas, peer_boost_tanh_sinh, peer_boost_gauss_kronrod): the libraries
-// themselves behind quadmc's method interface, so that they run in the same cells, with the same
-// integrands, timing and statistics as the suite's own methods.
+// The peers as methods a scene can name (their names are methods/registry.hpp's peers::known, the
+// one list of them): the libraries themselves behind quadmc's method interface, so that they run
+// in the same cells, with the same integrands, timing and statistics as the suite's own methods.
 //
 // Use it through the quadmc_with_peers command (bench/peers/CMakeLists.txt), which links
 // peer_scene_methods.cpp: its static initialiser adds these descriptors to the registry

@@ -53,39 +53,11 @@ constexpr std::array<std::string_view, 8> gallery_files{
     "README.md",       "meta.csv",     "scatter.csv", "strata.csv",
     "discrepancy.csv", "spectrum.csv", "gallery.png", "spectra.png"};
 
-enum class strata_kind { cells, rows_and_columns };
-
-struct strata {
-  strata_kind kind = strata_kind::cells;
-  std::uint64_t columns = 0;
-  std::uint64_t rows = 0;
-};
-
-// The grid a set fills with one point per stratum at N points in 2D, if it has one by
-// construction: the k^s grid of jittered/unjittered, the k × k group of padded points (N = k²),
-// the N × N rows and columns of a Latin hypercube ([McKay et al. 1979]) and of a
-// rank-1 lattice with N = 2^m (coordinates {i/N + Δ₁}, {i·z₂/N + Δ₂}, z₂ odd, so both are
-// permutations of the N columns), and the elementary intervals of a (0, m, 2)-net: the first two
-// Sobol' coordinates are one, and Owen scrambling keeps it ([Owen 1995]); the k × k square grid is
-// the elementary interval of shape 2^(m/2) × 2^(m/2). The gallery's tests count the points per
-// stratum of every grid listed here.
-std::optional<strata> strata_of(const quadmc::point_set_entry& set, std::uint64_t n) {
-  const auto k = static_cast<std::uint64_t>(std::llround(std::sqrt(static_cast<double>(n))));
-  const bool square = k * k == n;
-  if ((set.counts == quadmc::point_count::perfect_power ||
-       set.counts == quadmc::point_count::perfect_square) &&
-      square) {
-    return strata{strata_kind::cells, k, k};
-  }
-  if (set.name == "sobol" && square) return strata{strata_kind::cells, k, k};
-  if (set.name == "latin_hypercube" || set.name == "lattice") {
-    return strata{strata_kind::rows_and_columns, n, n};
-  }
-  return std::nullopt;
-}
-
-std::string_view to_string(strata_kind k) {
-  return k == strata_kind::cells ? "cells" : "rows_and_columns";
+// The strata a set fills with one point each in 2D, as the set states them
+// (point_set_entry::strata_of, with the reasons beside each set's entry); the gallery's tests
+// count the points per stratum of every grid listed here.
+std::optional<quadmc::point_strata> strata_of(const quadmc::point_set_entry& set, std::uint64_t n) {
+  return set.strata_of(dimension, n);
 }
 
 struct discrepancy_row {
@@ -218,8 +190,9 @@ std::string strata_csv(const std::vector<set_result>& results) {
   for (const set_result& r : results) {
     for (const std::uint64_t n : scatter_sizes) {
       if (const auto g = strata_of(*r.set, n)) {
-        text += line({std::string(r.set->name), std::to_string(n), std::string(to_string(g->kind)),
-                      std::to_string(g->columns), std::to_string(g->rows)});
+        text += line({std::string(r.set->name), std::to_string(n),
+                      std::string(quadmc::to_string(g->kind)), std::to_string(g->per_axis),
+                      std::to_string(g->per_axis)});
       }
     }
   }
@@ -409,8 +382,8 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
     std::string grids;
     for (const std::uint64_t n : scatter_sizes) {
       if (const auto g = strata_of(*s, n)) {
-        grids += fmt::format("{}N = {}: {} × {} {}", grids.empty() ? "" : ", ", n, g->columns,
-                             g->rows, to_string(g->kind));
+        grids += fmt::format("{}N = {}: {} × {} {}", grids.empty() ? "" : ", ", n, g->per_axis,
+                             g->per_axis, quadmc::to_string(g->kind));
       }
     }
     plan += fmt::format("  {:<16} strata: {}\n", s->name, grids.empty() ? "none" : grids);

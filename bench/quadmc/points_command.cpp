@@ -7,15 +7,50 @@
 #include "quadmc/estimators/point_set_catalogue.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace quadmc_cli {
+
+namespace {
+
+// A key some set of the catalogue has, with those sets, in listing order.
+struct set_key {
+  std::string_view key;
+  bool flag = false;
+  std::vector<const quadmc::point_set_entry*> sets;
+};
+
+std::vector<set_key> set_keys() {
+  std::vector<set_key> out;
+  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
+    for (const quadmc::point_set_option& o : set.options) {
+      auto it =
+          std::find_if(out.begin(), out.end(), [&](const set_key& k) { return k.key == o.key; });
+      if (it == out.end()) it = out.insert(out.end(), set_key{o.key, o.is_flag(), {}});
+      it->sets.push_back(&set);
+    }
+  }
+  return out;
+}
+
+// The command-line form of a key: allow_any_n → --allow-any-n.
+std::string flag_of(std::string_view key) {
+  std::string out = "--";
+  for (const char c : key) out += c == '_' ? '-' : c;
+  return out;
+}
+
+}  // namespace
 
 CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
   auto* points = app.add_subcommand(
@@ -34,12 +69,23 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
       ->check(non_negative_integer());
   points->add_option("--stream", request.stream, "Stream of the seed (default 0)")
       ->check(non_negative_integer());
-  points->add_option("--randomization", request.randomization,
-                     "sobol: owen|fast_owen|lms_shift|shift|none; halton: owen|permutation|none; "
-                     "lattice: shift|none (default: the set's first)");
-  points->add_option("--periodization", request.periodization, "lattice: none|baker");
-  points->add_flag("--allow-any-n", request.allow_any_n, "sobol: take N as it is (no net)");
-  points->add_flag("--drop-first-point", request.drop_first_point, "sobol: start at point 1");
+  for (const set_key& k : set_keys()) {
+    std::string help;
+    for (std::size_t i = 0; i < k.sets.size(); ++i) {
+      const quadmc::point_set_option& o = *k.sets[i]->option(k.key);
+      help += fmt::format("{}{}: {}", i == 0 ? "" : "; ", k.sets[i]->name,
+                          o.is_flag() ? o.meaning : fmt::format("{}", fmt::join(o.choices, "|")));
+    }
+    const std::string key(k.key);
+    if (k.flag) {
+      points->add_flag_callback(
+          flag_of(k.key), [&request, key] { request.set_options[key] = "true"; }, help);
+    } else {
+      points->add_option_function<std::string>(
+          flag_of(k.key), [&request, key](const std::string& v) { request.set_options[key] = v; },
+          help + " (default: the set's first)");
+    }
+  }
   points->add_option("--out", request.out, "Output file (default: stdout)")
       ->check(quadmc_cli::non_empty_path());
   return points;
@@ -47,42 +93,34 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
 
 namespace {
 
-// The options as the catalogue takes them, every value checked against the set.
+// The options as the set reads them, every key checked against the set's own: a key it lacks
+// names the sets that have it, a value it lacks names the ones it has.
 quadmc::point_set_options options_for(const quadmc::point_set_entry& set, const points_request& r) {
-  quadmc::point_set_options o;
-  if (!r.randomization.empty()) {
-    const auto random = quadmc::parse_randomization(r.randomization);
-    std::string names;
-    for (const auto x : set.randomizations) {
-      names += fmt::format("{}{}", names.empty() ? "" : ", ", quadmc::to_string(x));
+  for (const auto& [key, value] : r.set_options) {
+    if (set.option(key) != nullptr) continue;
+    std::vector<std::string_view> owners;
+    for (const set_key& k : set_keys()) {
+      if (k.key != key) continue;
+      for (const quadmc::point_set_entry* s : k.sets) owners.push_back(s->name);
     }
-    if (!random || !set.has(*random)) {
-      throw quadmc::invalid_argument("--randomization", r.randomization,
-                                     set.randomizations.empty()
-                                         ? fmt::format("no randomization: {} has none", set.name)
-                                         : fmt::format("one of {} for {}", names, set.name));
-    }
-    o.random = random;
+    throw quadmc::invalid_argument(
+        flag_of(key), value,
+        fmt::format("no {} for {} ({} only)", key, set.name, fmt::join(owners, ", ")));
   }
-  if (!r.periodization.empty()) {
-    if (set.name != "lattice") {
+  std::vector<std::string_view> values(set.options.size());
+  for (std::size_t i = 0; i < set.options.size(); ++i) {
+    const quadmc::point_set_option& o = set.options[i];
+    const auto given = r.set_options.find(o.key);
+    if (given == r.set_options.end()) continue;
+    if (!o.is_flag() &&
+        std::find(o.choices.begin(), o.choices.end(), given->second) == o.choices.end()) {
       throw quadmc::invalid_argument(
-          "--periodization", r.periodization,
-          fmt::format("no periodization for {} (lattice only)", set.name));
+          flag_of(o.key), given->second,
+          fmt::format("one of {} for {}", fmt::join(o.choices, ", "), set.name));
     }
-    if (r.periodization != "none" && r.periodization != "baker") {
-      throw quadmc::invalid_argument("--periodization", r.periodization, "none or baker");
-    }
-    o.periodic =
-        r.periodization == "baker" ? quadmc::periodization::baker : quadmc::periodization::none;
+    values[i] = given->second;
   }
-  if ((r.allow_any_n || r.drop_first_point) && set.name != "sobol") {
-    throw quadmc::invalid_argument(r.allow_any_n ? "--allow-any-n" : "--drop-first-point", "set",
-                                   fmt::format("sobol only, not {}", set.name));
-  }
-  o.allow_any_n = r.allow_any_n;
-  o.drop_first_point = r.drop_first_point;
-  return o;
+  return set.options_of(values);
 }
 
 struct file_closer {

@@ -6,8 +6,9 @@
 // decimal text that reads back to the same double (so another tool sees the same bits). To
 // stdout, or with --out FILE to that file (written whole, or the command fails naming it).
 // The points are those of philox stream `--stream` (default 0) of seed K: the same (SET, N, s,
-// K, stream, options) give bitwise the same file. Extra flags beyond the fixed form:
-// --periodization (lattice), --allow-any-n and --drop-first-point (sobol), --stream.
+// K, stream, options) give bitwise the same file. Extra flags beyond the fixed form: --stream, and
+// each key a set of the catalogue has as --key ('-' for '_'): --randomization and --periodization
+// (a value), --allow-any-n and --drop-first-point (flags); the sets read their own values.
 // Exit status as for every subcommand: 1 for values the set refuses (an unknown set, a
 // randomization it has not, N not 2^m for a randomized net), 2 for usage errors (a missing or
 // malformed flag).
@@ -17,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -28,10 +30,9 @@ struct points_request {
   std::size_t s = 0;
   std::uint64_t seed = 0;
   std::uint64_t stream = 0;
-  std::string randomization;  // empty: the set's default
-  std::string periodization;  // empty: none
-  bool allow_any_n = false;
-  bool drop_first_point = false;
+  // The point sets' own options given (--randomization owen, --allow-any-n): key → value, "true"
+  // for a flag; a key not given is absent (the set's default).
+  std::map<std::string, std::string, std::less<>> set_options;
   std::string out;  // empty: stdout
 };
 

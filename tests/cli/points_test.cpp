@@ -137,7 +137,34 @@ TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
                         "s ≤ 3667");
   expect_one_line_error(
       {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "baker"},
-      "--periodization", "lattice only");
+      "--periodization", "no periodization for halton (lattice only)");
+  // A key the set lacks names the sets that have it, for values and flags alike.
+  expect_one_line_error(
+      {"points", "jittered", "--n", "8", "--s", "3", "--seed", "1", "--randomization", "owen"},
+      "invalid --randomization = owen",
+      "no randomization for jittered (sobol, halton, lattice only)");
+  expect_one_line_error(
+      {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--allow-any-n"},
+      "invalid --allow-any-n = true", "no allow_any_n for halton (sobol only)");
+  expect_one_line_error(
+      {"points", "lattice", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "tent"},
+      "--periodization", "one of none, baker for lattice");
+}
+
+// The sets' own flags reach them: --drop-first-point starts the unrandomized Sobol' sequence at
+// its point 1, (1/2, 1/2), and --allow-any-n takes N = 3 as it is.
+TEST(PointsCommand, PassesEachSetsOwnFlagsToIt) {
+  scratch_folder dir;
+  const command_result r =
+      run_quadmc(dir, {"points", "sobol", "--n", "3", "--s", "2", "--seed", "1", "--randomization",
+                       "owen", "--allow-any-n", "--drop-first-point"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4) << describe(r);
+  const command_result plain =
+      run_quadmc(dir, {"points", "sobol", "--n", "3", "--s", "2", "--seed", "1", "--randomization",
+                       "none", "--drop-first-point"});
+  ASSERT_EQ(plain.exit_status, 0) << describe(plain);
+  EXPECT_EQ(plain.out, "x1,x2\n0.5,0.5\n0.75,0.25\n0.25,0.75\n");
 }
 
 constexpr const char* qmc_scene = R"(name = "qmc"

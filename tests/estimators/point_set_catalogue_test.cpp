@@ -1,5 +1,6 @@
 // Tests of point_set_catalogue.hpp: every set's estimators by name, bitwise the same for any
-// thread count at every SIMD level, the count rules, and importance sampling over a set.
+// thread count at every SIMD level, the count rules, each set's own keys, theory and strata, and
+// importance sampling over a set.
 #include "quadmc/estimators/point_set_catalogue.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -10,9 +11,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -144,6 +147,110 @@ TEST(PointSetCatalogue, LargestCountIsAPerfectPowerOrSquare) {
       }
     }
   }
+}
+
+// Each set's keys: unique, documented, a choice's default first; the `randomization` key offers
+// exactly the set's randomizations; the values given configure the options the estimators take.
+TEST(PointSetCatalogue, EachSetReadsItsOwnKeys) {
+  for (const point_set_entry& set : point_set_catalogue()) {
+    std::vector<std::string_view> keys;
+    for (const point_set_option& o : set.options) {
+      EXPECT_EQ(std::count(keys.begin(), keys.end(), o.key), 0) << set.name << "." << o.key;
+      keys.push_back(o.key);
+      EXPECT_FALSE(o.meaning.empty()) << set.name << "." << o.key;
+      EXPECT_EQ(o.is_flag(), !o.flag_label.empty()) << set.name << "." << o.key;
+      EXPECT_EQ(set.option(o.key), &o);
+    }
+    const point_set_option* r = set.option("randomization");
+    ASSERT_EQ(r != nullptr, !set.randomizations.empty()) << set.name;
+    if (r == nullptr) continue;
+    ASSERT_EQ(r->choices.size(), set.randomizations.size()) << set.name;
+    for (std::size_t i = 0; i < r->choices.size(); ++i) {
+      EXPECT_EQ(r->choices[i], to_string(set.randomizations[i])) << set.name;
+      std::vector<std::string_view> values(set.options.size());
+      values[static_cast<std::size_t>(r - set.options.data())] = r->choices[i];
+      EXPECT_EQ(set.options_of(values).random, set.randomizations[i]) << set.name;
+    }
+  }
+  const point_set_entry& sobol = *find_point_set("sobol");
+  const std::vector<std::string_view> none{"", "", ""};
+  EXPECT_EQ(sobol.options_of(none).random, std::nullopt);
+  const std::vector<std::string_view> flags{"shift", "true", "true"};
+  const point_set_options o = sobol.options_of(flags);
+  EXPECT_EQ(o.random, randomization::shift);
+  EXPECT_TRUE(o.allow_any_n);
+  EXPECT_TRUE(o.drop_first_point);
+  EXPECT_EQ(max_point_count(sobol, o), (std::uint64_t{1} << 32) - 1);
+  const std::vector<std::string_view> baker{"", "baker"};
+  EXPECT_EQ(find_point_set("lattice")->options_of(baker).periodic, periodization::baker);
+  EXPECT_EQ(find_point_set("jittered")->option("randomization"), nullptr);
+}
+
+// The theory the quasi-Monte Carlo sets state, per option (the methods turn it into a rate:
+// tests/methods/qmc_test.cpp); the other sets' methods state theirs.
+TEST(PointSetCatalogue, QuasiMonteCarloSetsStateTheirTheory) {
+  const point_set_entry& sobol = *find_point_set("sobol");
+  EXPECT_EQ(sobol.theory_of({})->basis, rate_basis::scrambled_net);
+  EXPECT_EQ(sobol.theory_of({randomization::fast_owen})->basis, rate_basis::unproven);
+  EXPECT_EQ(sobol.theory_of({randomization::none})->basis, rate_basis::low_discrepancy);
+  point_set_options dropped;
+  dropped.drop_first_point = true;
+  EXPECT_EQ(sobol.theory_of(dropped)->basis, rate_basis::broken_net);
+  const point_set_theory halton = *find_point_set("halton")->theory_of({randomization::owen});
+  EXPECT_EQ(halton.basis, rate_basis::low_discrepancy);
+  EXPECT_NE(halton.note.find("owen-randomized"), std::string::npos) << halton.note;
+  point_set_options baker;
+  baker.periodic = periodization::baker;
+  const point_set_theory lattice = *find_point_set("lattice")->theory_of(baker);
+  EXPECT_EQ(lattice.basis, rate_basis::shifted_lattice);
+  EXPECT_TRUE(lattice.baker);
+  EXPECT_TRUE(lattice.note.empty()) << "shifted by default";
+  EXPECT_FALSE(find_point_set("jittered")->theory_of({}));
+}
+
+// The strata each set states, counted here in 2D and for the Latin hypercube in 3D: every stratum
+// holds exactly one point (the gallery draws and counts the same in 2D,
+// tests/cli/gallery_test.cpp).
+TEST(PointSetCatalogue, StrataHoldOnePointEach) {
+  for (const point_set_entry& set : point_set_catalogue()) {
+    for (const std::size_t s : {2u, 3u}) {
+      for (const std::uint64_t n : {16u, 27u, 64u, 256u}) {
+        const auto strata = set.strata_of(s, n);
+        if (!strata || !accepts_size(set, s, n)) continue;
+        std::vector<double> x;
+        set.points(s, n, {3, 1}, [&](std::uint64_t, std::span<const double> b) {
+          x.insert(x.end(), b.begin(), b.end());
+        });
+        const std::uint64_t k = strata->per_axis;
+        auto cell = [k](double t) {
+          return std::min<std::uint64_t>(k - 1,
+                                         static_cast<std::uint64_t>(t * static_cast<double>(k)));
+        };
+        const std::string what = fmt::format("{} s = {} N = {}", set.name, s, n);
+        if (strata->kind == strata_kind::cells) {
+          std::set<std::vector<std::uint64_t>> cells;
+          for (std::uint64_t i = 0; i < n; ++i) {
+            std::vector<std::uint64_t> c;
+            for (std::size_t j = 0; j < s; ++j) c.push_back(cell(x[i * s + j]));
+            cells.insert(c);
+          }
+          EXPECT_EQ(cells.size(), n) << what;
+        } else {
+          for (std::size_t j = 0; j < s; ++j) {
+            std::set<std::uint64_t> rows;
+            for (std::uint64_t i = 0; i < n; ++i) rows.insert(cell(x[i * s + j]));
+            EXPECT_EQ(rows.size(), n) << what << " axis " << j;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(find_point_set("jittered")->strata_of(3, 64)->per_axis, 4u);
+  EXPECT_FALSE(find_point_set("jittered")->strata_of(3, 63));
+  EXPECT_FALSE(find_point_set("sobol")->strata_of(2, 32)) << "2^5 is no square";
+  EXPECT_FALSE(find_point_set("halton")->strata_of(2, 64));
+  EXPECT_EQ(find_point_set("latin_hypercube")->strata_of(3, 27)->kind,
+            strata_kind::rows_and_columns);
 }
 
 // e^x on [1, 2] with the truncated exponential warp of rate 1 carried to [1, 2]: p ∝ f, so the

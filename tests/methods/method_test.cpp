@@ -69,18 +69,15 @@ std::vector<option_table> configurations(std::string_view name) {
     return {{}, {{"rule", "gauss_patterson"}}, {{"rule", "trapezoid"}}};
   }
   if (n == "adaptive_sparse_grid") return {{}, {{"rule", "gauss_patterson"}}};
-  if (n == "sobol") {
+  // A quasi-Monte Carlo method takes its set's own keys: every other choice of each.
+  if (const point_set_entry* set = find_point_set(n); set != nullptr && !set->options.empty()) {
     std::vector<option_table> out{{}};
-    for (const char* r : {"owen", "fast_owen", "lms_shift", "shift", "none"}) {
-      out.push_back({{"randomization", r}});
+    for (const point_set_option& o : set->options) {
+      for (std::size_t i = 1; i < o.choices.size(); ++i) {
+        out.push_back({{std::string(o.key), std::string(o.choices[i])}});
+      }
     }
     return out;
-  }
-  if (n == "halton") {
-    return {{}, {{"randomization", "permutation"}}, {{"randomization", "none"}}};
-  }
-  if (n == "lattice") {
-    return {{}, {{"randomization", "none"}}, {{"periodization", "baker"}}};
   }
   if (n == "importance") {
     return {{{"warp", "exponential"}},

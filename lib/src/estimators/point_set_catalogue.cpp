@@ -73,6 +73,175 @@ constexpr std::array<randomization, 3> halton_randomizations{
 constexpr std::array<randomization, 2> lattice_randomizations{randomization::shift,
                                                               randomization::none};
 
+constexpr std::string_view name_of(randomization r) noexcept {
+  switch (r) {
+    case randomization::none:
+      return "none";
+    case randomization::shift:
+      return "shift";
+    case randomization::lms_shift:
+      return "lms_shift";
+    case randomization::owen:
+      return "owen";
+    case randomization::fast_owen:
+      return "fast_owen";
+    case randomization::permutation:
+      return "permutation";
+  }
+  return "?";
+}
+
+// A set's randomizations as the values of its `randomization` key, in the same order.
+template <std::size_t N>
+constexpr std::array<std::string_view, N> names_of(const std::array<randomization, N>& rs) {
+  std::array<std::string_view, N> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = name_of(rs[i]);
+  return out;
+}
+constexpr auto sobol_randomization_names = names_of(sobol_randomizations);
+constexpr auto halton_randomization_names = names_of(halton_randomizations);
+constexpr auto lattice_randomization_names = names_of(lattice_randomizations);
+constexpr std::array<std::string_view, 2> periodization_names{"none", "baker"};
+
+// Each set's keys, in the order of its options_from's values.
+constexpr std::array<point_set_option, 3> sobol_options{{
+    {"randomization",
+     "\"owen\" (default: nested uniform scrambling), \"fast_owen\" (Burley's hash, not exactly "
+     "nested), \"lms_shift\" (linear matrix scramble + digital shift), \"shift\" (digital shift), "
+     "\"none\" (deterministic, one run per cell); the label gets \"_<randomization>\"",
+     sobol_randomization_names,
+     {}},
+    {"allow_any_n",
+     "true: use each N as it is (no net unless N = 2^m); default false: N maps to the largest "
+     "2^m <= N; the label gets \"_any_n\"",
+     {},
+     "_any_n"},
+    {"drop_first_point",
+     "true: start at point 1, not the origin (the anti-pattern); the label gets \"_drop_first\"",
+     {},
+     "_drop_first"},
+}};
+constexpr std::array<point_set_option, 1> halton_options{{
+    {"randomization",
+     "\"owen\" (default: nested scrambling in each base), \"permutation\" (random digit "
+     "permutations per base and digit), \"none\" (deterministic); the label gets the suffix",
+     halton_randomization_names,
+     {}},
+}};
+constexpr std::array<point_set_option, 2> lattice_options{{
+    {"randomization",
+     "\"shift\" (default: one uniform shift modulo 1), \"none\" (the lattice itself, "
+     "deterministic); the label gets the suffix",
+     lattice_randomization_names,
+     {}},
+    {"periodization",
+     "\"none\" (default) or \"baker\" (the tent transform 1 - |2x - 1|); the label gets the "
+     "suffix",
+     periodization_names,
+     {}},
+}};
+
+std::optional<randomization> randomization_given(std::string_view value) {
+  return value.empty() ? std::nullopt : parse_randomization(value);
+}
+
+point_set_options no_options(point_set_values) {
+  return {};
+}
+point_set_options sobol_options_from(point_set_values v) {
+  point_set_options o;
+  o.random = randomization_given(v[0]);
+  o.allow_any_n = v[1] == "true";
+  o.drop_first_point = v[2] == "true";
+  return o;
+}
+point_set_options halton_options_from(point_set_values v) {
+  point_set_options o;
+  o.random = randomization_given(v[0]);
+  return o;
+}
+point_set_options lattice_options_from(point_set_values v) {
+  point_set_options o;
+  o.random = randomization_given(v[0]);
+  o.periodic = v[1] == "baker" ? periodization::baker : periodization::none;
+  return o;
+}
+
+// The theories of docs/theory.md#quasi-monte-carlo, per randomization.
+point_set_theory sobol_theory(const point_set_options& o) {
+  switch (o.random.value_or(sobol_randomizations.front())) {
+    case randomization::owen:
+    case randomization::lms_shift:
+      if (o.drop_first_point) return {rate_basis::broken_net, "first point dropped", {}};
+      if (o.allow_any_n) return {rate_basis::broken_net, "N not 2^m (allow_any_n)", {}};
+      return {rate_basis::scrambled_net, {}, {}};
+    case randomization::fast_owen:
+      return {rate_basis::unproven,
+              "hash-based, not exactly nested uniform: Owen's rates are not proven for it",
+              "docs/theory.md#scrambled-nets; [Burley 2020]"};
+    case randomization::shift:
+      return {rate_basis::low_discrepancy, "digital shift: one shift shared by all points",
+              "docs/theory.md#digital-shift; [Dick & Pillichshammer 2010]"};
+    default:
+      return {rate_basis::low_discrepancy, "unrandomized Sobol' points",
+              "docs/theory.md#digital-shift; [Niederreiter 1992, Thm 4.10]"};
+  }
+}
+point_set_theory halton_theory(const point_set_options& o) {
+  const randomization r = o.random.value_or(halton_randomizations.front());
+  return {rate_basis::low_discrepancy,
+          r == randomization::none
+              ? "Halton points"
+              : fmt::format("{}-randomized Halton points, no faster rate proven", to_string(r)),
+          "docs/theory.md#halton; [Halton 1960]; [Niederreiter 1992, Thm 3.6]"};
+}
+point_set_theory lattice_theory(const point_set_options& o) {
+  const bool shifted = o.random.value_or(lattice_randomizations.front()) != randomization::none;
+  return {rate_basis::shifted_lattice,
+          shifted ? "" : "unshifted lattice (deterministic)",
+          {},
+          o.periodic == periodization::baker};
+}
+
+// The strata of each set, with its default options (the gallery's tests count the points per
+// stratum of each). No strata by construction: independent points, Halton.
+std::optional<point_strata> no_strata(std::size_t, std::uint64_t) {
+  return std::nullopt;
+}
+// One point per cell of the k^s grid (jittered, unjittered).
+std::optional<point_strata> grid_strata(std::size_t s, std::uint64_t n) {
+  const std::uint64_t k = integer_root(n, s);
+  if (checked_power(k, s) != n) return std::nullopt;
+  return point_strata{strata_kind::cells, k};
+}
+// The k × k group of padded points (N = k²) is the whole set in s = 2; beyond, the cells are
+// those of 2D projections only.
+std::optional<point_strata> padded_strata(std::size_t s, std::uint64_t n) {
+  if (s != 2) return std::nullopt;
+  const std::uint64_t k = integer_root(n, 2);
+  if (k * k != n) return std::nullopt;
+  return point_strata{strata_kind::cells, k};
+}
+// N rows and columns, one point in each, along every axis ([McKay et al. 1979]).
+std::optional<point_strata> latin_strata(std::size_t, std::uint64_t n) {
+  return point_strata{strata_kind::rows_and_columns, n};
+}
+// The first two Sobol' coordinates are a (0, m, 2)-net and Owen scrambling keeps it
+// ([Owen 1995]): for N = 2^m = k² the k × k square grid is its elementary interval of shape
+// 2^(m/2) × 2^(m/2).
+std::optional<point_strata> net_strata(std::size_t s, std::uint64_t n) {
+  if (s != 2 || !std::has_single_bit(n)) return std::nullopt;
+  const std::uint64_t k = integer_root(n, 2);
+  if (k * k != n) return std::nullopt;
+  return point_strata{strata_kind::cells, k};
+}
+// A rank-1 lattice with N = 2^m in 2D: coordinates {i/N + Δ₁}, {i·z₂/N + Δ₂}, z₂ odd, so both
+// are permutations of the N columns.
+std::optional<point_strata> lattice_strata(std::size_t s, std::uint64_t n) {
+  if (s > 2 || !std::has_single_bit(n)) return std::nullopt;
+  return point_strata{strata_kind::rows_and_columns, n};
+}
+
 const point_set_entry& entry_named(std::string_view name);
 
 // The checks every QMC set makes before it builds its points: a randomization it has, and a
@@ -209,18 +378,36 @@ void points_over(std::size_t s, std::uint64_t n, const point_set_options& option
   });
 }
 
+// What an entry states beside its estimators; the defaults are those of a set without options.
+struct set_facts {
+  std::string_view name;
+  std::string_view description;
+  point_count counts = point_count::any;
+  std::optional<point_strata> (*strata)(std::size_t, std::uint64_t) = no_strata;
+  std::span<const randomization> randomizations = {};
+  std::size_t max_dimension = 0;
+  error_source errors = error_source::own;
+  std::uint64_t max_points = 0;
+  bool takes_any_prefix = false;
+  std::span<const point_set_option> options = {};
+  point_set_options (*options_from)(point_set_values) = no_options;
+  point_set_theory (*theory)(const point_set_options&) = nullptr;
+};
+
 template <class Set>
-constexpr point_set_entry point_set_entry_for(std::string_view name, std::string_view description,
-                                              point_count counts,
-                                              std::span<const randomization> randomizations = {},
-                                              std::size_t max_dimension = 0,
-                                              error_source errors = error_source::own) {
-  return {name,
-          description,
-          counts,
-          randomizations,
-          max_dimension,
-          errors,
+constexpr point_set_entry point_set_entry_for(const set_facts& f) {
+  return {f.name,
+          f.description,
+          f.counts,
+          f.randomizations,
+          f.max_dimension,
+          f.errors,
+          f.max_points,
+          f.takes_any_prefix,
+          f.options,
+          f.options_from,
+          f.theory,
+          f.strata,
           monte_carlo_over<Set>,
           importance_over<Set>,
           irradiance_over<Set>,
@@ -228,28 +415,59 @@ constexpr point_set_entry point_set_entry_for(std::string_view name, std::string
 }
 
 constexpr std::array<point_set_entry, 8> entries{{
-    point_set_entry_for<plain_set<independent_points>>("independent", "independent uniform points",
-                                                       point_count::any),
+    point_set_entry_for<plain_set<independent_points>>(
+        {.name = "independent", .description = "independent uniform points"}),
     point_set_entry_for<plain_set<jittered_points>>(
-        "jittered", "one random point per cell of a k^s grid", point_count::perfect_power),
+        {.name = "jittered",
+         .description = "one random point per cell of a k^s grid",
+         .counts = point_count::perfect_power,
+         .strata = grid_strata}),
     point_set_entry_for<plain_set<unjittered_points>>(
-        "unjittered", "cell centres of a randomly shifted k^s grid", point_count::perfect_power),
+        {.name = "unjittered",
+         .description = "cell centres of a randomly shifted k^s grid",
+         .counts = point_count::perfect_power,
+         .strata = grid_strata}),
     point_set_entry_for<plain_set<padded_jittered_points>>(
-        "padded_jittered", "k x k jittered strata padded across dimension pairs",
-        point_count::perfect_square),
-    point_set_entry_for<plain_set<latin_hypercube_points>>("latin_hypercube", "Latin hypercube",
-                                                           point_count::any),
+        {.name = "padded_jittered",
+         .description = "k x k jittered strata padded across dimension pairs",
+         .counts = point_count::perfect_square,
+         .strata = padded_strata}),
+    point_set_entry_for<plain_set<latin_hypercube_points>>(
+        {.name = "latin_hypercube", .description = "Latin hypercube", .strata = latin_strata}),
     point_set_entry_for<sobol_set>(
-        "sobol", "Sobol' points (Joe-Kuo directions), Gray-code order, N = 2^m when randomized",
-        point_count::power_of_two, sobol_randomizations, sobol_matrices::max_dimension,
-        error_source::replicates),
-    point_set_entry_for<halton_set>("halton", "Halton points in the first s prime bases",
-                                    point_count::any, halton_randomizations, max_halton_dimension,
-                                    error_source::replicates),
+        {.name = "sobol",
+         .description =
+             "Sobol' points (Joe-Kuo directions), Gray-code order, N = 2^m when randomized",
+         .counts = point_count::power_of_two,
+         .strata = net_strata,
+         .randomizations = sobol_randomizations,
+         .max_dimension = sobol_matrices::max_dimension,
+         .errors = error_source::replicates,
+         .max_points = std::uint64_t{1} << 32,
+         .takes_any_prefix = true,
+         .options = sobol_options,
+         .options_from = sobol_options_from,
+         .theory = sobol_theory}),
+    point_set_entry_for<halton_set>({.name = "halton",
+                                     .description = "Halton points in the first s prime bases",
+                                     .randomizations = halton_randomizations,
+                                     .max_dimension = max_halton_dimension,
+                                     .errors = error_source::replicates,
+                                     .options = halton_options,
+                                     .options_from = halton_options_from,
+                                     .theory = halton_theory}),
     point_set_entry_for<lattice_set>(
-        "lattice", "rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20, random shift",
-        point_count::power_of_two, lattice_randomizations, max_lattice_dimension,
-        error_source::replicates),
+        {.name = "lattice",
+         .description = "rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20, random shift",
+         .counts = point_count::power_of_two,
+         .strata = lattice_strata,
+         .randomizations = lattice_randomizations,
+         .max_dimension = max_lattice_dimension,
+         .errors = error_source::replicates,
+         .max_points = max_lattice_points,
+         .options = lattice_options,
+         .options_from = lattice_options_from,
+         .theory = lattice_theory}),
 }};
 
 const point_set_entry& entry_named(std::string_view name) {
@@ -295,21 +513,18 @@ std::string point_set_names() {
 }
 
 std::string_view to_string(randomization r) noexcept {
-  switch (r) {
-    case randomization::none:
-      return "none";
-    case randomization::shift:
-      return "shift";
-    case randomization::lms_shift:
-      return "lms_shift";
-    case randomization::owen:
-      return "owen";
-    case randomization::fast_owen:
-      return "fast_owen";
-    case randomization::permutation:
-      return "permutation";
+  return name_of(r);
+}
+
+std::string_view to_string(strata_kind k) noexcept {
+  return k == strata_kind::cells ? "cells" : "rows_and_columns";
+}
+
+const point_set_option* point_set_entry::option(std::string_view key) const noexcept {
+  for (const point_set_option& o : options) {
+    if (o.key == key) return &o;
   }
-  return "?";
+  return nullptr;
 }
 
 std::optional<randomization> parse_randomization(std::string_view name) noexcept {
@@ -339,7 +554,7 @@ point_count point_set_entry::counts_with(const point_set_options& options) const
   // Sobol': the first N points of the sequence are a valid (if poorer) point set for any N when
   // asked for, and the unrandomized sequence is a deterministic prefix for any N. A lattice of
   // another N would need another generating vector.
-  if (counts == point_count::power_of_two && name == "sobol" &&
+  if (counts == point_count::power_of_two && takes_any_prefix &&
       (options.allow_any_n || randomization_of(options) == randomization::none)) {
     return point_count::any;
   }
@@ -352,11 +567,9 @@ error_source point_set_entry::errors_with(const point_set_options& options) cons
 }
 
 std::uint64_t max_point_count(const point_set_entry& set, const point_set_options& options) {
-  if (set.name == "sobol") {
-    return (std::uint64_t{1} << 32) - (options.drop_first_point ? 1 : 0);
-  }
-  if (set.name == "lattice") return max_lattice_points;
-  return std::uint64_t{1} << 62;
+  if (set.max_points == 0) return std::uint64_t{1} << 62;
+  // Dropping the first point spends one index of the range.
+  return set.max_points - (options.drop_first_point ? 1 : 0);
 }
 
 bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
@@ -394,7 +607,7 @@ std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_
             "a power of two: {} {}needs N = 2^m, nearest valid sizes {} and {}{}", set.name,
             r ? fmt::format("with randomization '{}' ", to_string(*r)) : std::string(), below,
             above <= most ? fmt::format("{}", above) : std::string("(none larger)"),
-            set.name == "sobol" ? " (allow_any_n = true takes N as it is, losing the net)" : "");
+            set.takes_any_prefix ? " (allow_any_n = true takes N as it is, losing the net)" : "");
       }
       break;
     case point_count::perfect_square:

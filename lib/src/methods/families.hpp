@@ -13,11 +13,11 @@ namespace quadmc::methods {
 
 // The `point_set` option of the methods that draw their u from a chosen pattern; `independent`
 // when absent. `given` says whether the table set it (it then joins the default label).
-struct point_set_option {
+struct point_set_choice {
   const point_set_entry* set = nullptr;
   bool given = false;
 };
-point_set_option read_point_set(option_reader& options);
+point_set_choice read_point_set(option_reader& options);
 
 // N → the largest count the set holds (k^s for stratified sets): a cell size for Monte Carlo.
 sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s);

@@ -84,7 +84,7 @@ std::pair<const warp_choice*, double> read_warp(option_reader& r) {
 class importance_method final : public method {
  public:
   importance_method(const method_descriptor& d, const warp_choice& warp, double parameter,
-                    point_set_option points)
+                    point_set_choice points)
       : method(d), warp_(&warp), parameter_(parameter), points_(points) {}
 
   std::string label_suffix() const override {
@@ -119,7 +119,7 @@ class importance_method final : public method {
  private:
   const warp_choice* warp_;
   double parameter_;
-  point_set_option points_;
+  point_set_choice points_;
 };
 
 constexpr std::array<option_doc, 2> option_docs{{

@@ -10,8 +10,8 @@
 
 namespace quadmc::methods {
 
-point_set_option read_point_set(option_reader& options) {
-  point_set_option out;
+point_set_choice read_point_set(option_reader& options) {
+  point_set_choice out;
   out.set = find_point_set("independent");
   std::vector<std::string_view> names;
   for (const point_set_entry& e : point_set_catalogue()) names.push_back(e.name);

@@ -1,21 +1,17 @@
 // Randomized quasi-Monte Carlo as methods: `sobol`, `halton` and `lattice`, each the sample mean
-// of f over a quasi-Monte Carlo set of estimators/point_set_catalogue.hpp with the method's own
-// keys (docs/theory.md#quasi-monte-carlo):
-//   randomization     sobol: "owen" (default), "fast_owen", "lms_shift", "shift", "none";
-//                     halton: "owen" (default), "permutation", "none";
-//                     lattice: "shift" (default), "none". "none" is the deterministic set, run once
-//                     per cell like a rule.
-//   periodization     lattice: "none" (default) or "baker".
-//   allow_any_n       sobol: use every N as it is (the first N points of the sequence). Without
-//                     it N maps to the largest 2^m ≤ N, as the tensor rules map N to the largest
-//                     grid: a scrambled net needs N = 2^m, and a ladder with other values would
-//                     otherwise measure the anti-pattern of docs/theory.md#sobol-anti-patterns.
-//   drop_first_point  sobol: start at point 1 (Boost's sobol_engine does): the other anti-pattern.
+// of f over the quasi-Monte Carlo set of estimators/point_set_catalogue.hpp it is named after
+// (docs/theory.md#quasi-monte-carlo). Its keys are the set's own (its point_set_option table:
+// `randomization`, the lattice's `periodization`, Sobol's `allow_any_n` and `drop_first_point`;
+// `quadmc list` prints each with its values) and the label gets the values given, plus
 //   points            explicit N per cell (an increasing list), replacing budget.N; each must be
 //                     2^m where the set needs it, else the key fails naming the nearest valid
 //                     sizes.
-// The lattice maps N to the largest 2^m ≤ N up to 2^20 (its generating vector's range); Halton
-// takes N as it is.
+// Without allow_any_n, N maps to the largest count the set holds (2^m ≤ N for Sobol' and the
+// lattice, up to 2^20 for the lattice's generating vector), as the tensor rules map N to the
+// largest grid: a scrambled net needs N = 2^m, and a ladder with other values would otherwise
+// measure the anti-pattern of docs/theory.md#sobol-anti-patterns. Halton takes N as it is. A
+// randomization "none" is the deterministic set, run once per cell like a rule. The rate is the
+// set's (point_set_entry::theory_of) in the building blocks of analysis/theoretical_rate.hpp.
 //
 // Error bars: one randomization cannot estimate its own error, so every repetition is an
 // independent randomization (its own Philox stream) and the cell's error estimate and coverage
@@ -32,6 +28,7 @@
 #include <array>
 #include <bit>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace quadmc::methods {
@@ -43,10 +40,15 @@ constexpr std::uint64_t discrepancy_max_points = 1024;
 
 struct qmc_options {
   point_set_options set;
-  bool randomization_given = false;
-  bool periodization_given = false;
+  std::string label_suffix;  // the set's options given, in its order (point_set_option)
   std::vector<std::uint64_t> points;
 };
+
+// A building block's rate with the set's own words before its note.
+theoretical_rate with_prefix(const std::string& prefix, theoretical_rate rate) {
+  if (!prefix.empty()) rate.note = prefix + "; " + rate.note;
+  return rate;
+}
 
 class qmc_method final : public method {
  public:
@@ -62,14 +64,7 @@ class qmc_method final : public method {
     return error_bars_of(set_->errors_with(options_.set));
   }
 
-  std::string label_suffix() const override {
-    std::string out;
-    if (options_.randomization_given) out += fmt::format("_{}", to_string(*options_.set.random));
-    if (options_.periodization_given) out += fmt::format("_{}", to_string(options_.set.periodic));
-    if (options_.set.allow_any_n) out += "_any_n";
-    if (options_.set.drop_first_point) out += "_drop_first";
-    return out;
-  }
+  std::string label_suffix() const override { return options_.label_suffix; }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {
     if (f.s <= set_->max_dimension) return std::nullopt;
@@ -100,40 +95,20 @@ class qmc_method final : public method {
   std::string explicit_sizes_key() const override { return "points"; }
 
   theoretical_rate theory(const integrand_class& f) const override {
-    const randomization r = *set_->randomization_of(options_.set);
-    if (set_->name == "lattice") {
-      theoretical_rate rate =
-          shifted_lattice_rate(f, options_.set.periodic == periodization::baker);
-      if (r == randomization::none) rate.note = "unshifted lattice (deterministic); " + rate.note;
-      return rate;
+    const point_set_theory said = *set_->theory_of(options_.set);
+    switch (said.basis) {
+      case rate_basis::scrambled_net:
+        return with_prefix(said.note, scrambled_net_rate(f));
+      case rate_basis::broken_net:
+        return broken_net_rate(f, said.note);
+      case rate_basis::low_discrepancy:
+        return low_discrepancy_rate(f, said.note, std::string(said.source));
+      case rate_basis::shifted_lattice:
+        return with_prefix(said.note, shifted_lattice_rate(f, said.baker));
+      case rate_basis::unproven:
+        break;
     }
-    if (set_->name == "halton") {
-      return low_discrepancy_rate(
-          f,
-          r == randomization::none ? "Halton points"
-                                   : fmt::format("{}-randomized Halton points, no "
-                                                 "faster rate proven",
-                                                 to_string(r)),
-          "docs/theory.md#halton; [Halton 1960]; [Niederreiter 1992, Thm 3.6]");
-    }
-    // Sobol'.
-    switch (r) {
-      case randomization::owen:
-      case randomization::lms_shift:
-        if (options_.set.drop_first_point) return broken_net_rate(f, "first point dropped");
-        if (options_.set.allow_any_n) return broken_net_rate(f, "N not 2^m (allow_any_n)");
-        return scrambled_net_rate(f);
-      case randomization::fast_owen:
-        return {std::nullopt,
-                "hash-based, not exactly nested uniform: Owen's rates are not proven for it",
-                "docs/theory.md#scrambled-nets; [Burley 2020]"};
-      case randomization::shift:
-        return low_discrepancy_rate(f, "digital shift: one shift shared by all points",
-                                    "docs/theory.md#digital-shift; [Dick & Pillichshammer 2010]");
-      default:
-        return low_discrepancy_rate(f, "unrandomized Sobol' points",
-                                    "docs/theory.md#digital-shift; [Niederreiter 1992, Thm 4.10]");
-    }
+    return {std::nullopt, said.note, std::string(said.source)};
   }
 
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
@@ -189,7 +164,7 @@ std::vector<std::uint64_t> read_points(option_reader& r, const point_set_entry& 
           "points", i,
           fmt::format("expected a power of two (the {} points need N = 2^m{}), got {}; "
                       "nearest valid sizes {} and {}",
-                      set.name, set.name == "sobol" ? "; allow_any_n = true takes N as it is" : "",
+                      set.name, set.takes_any_prefix ? "; allow_any_n = true takes N as it is" : "",
                       n, below, below << 1));
     }
     if (i > 0 && n <= (*given)[i - 1]) {
@@ -201,84 +176,78 @@ std::vector<std::uint64_t> read_points(option_reader& r, const point_set_entry& 
   return std::move(*given);
 }
 
-std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_reader& r,
-                                         std::string_view set_name) {
-  const point_set_entry& set = *find_point_set(set_name);
+// Reads the set's own keys (its point_set_option table) as the method's options, then `points`.
+// A quasi-Monte Carlo method is named after its set.
+std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_reader& r) {
+  const point_set_entry& set = *find_point_set(d.name);
   qmc_options o;
-  std::vector<std::string_view> names;
-  for (const randomization x : set.randomizations) names.push_back(to_string(x));
-  if (auto name = r.choice("randomization", names)) {
-    o.set.random = parse_randomization(*name);
-    o.randomization_given = true;
-  }
-  if (set.name == "lattice") {
-    constexpr std::array<std::string_view, 2> periodizations{"none", "baker"};
-    if (auto p = r.choice("periodization", periodizations)) {
-      o.set.periodic = *p == "baker" ? periodization::baker : periodization::none;
-      o.periodization_given = true;
+  std::vector<std::string_view> values(set.options.size());
+  std::vector<std::string> chosen(set.options.size());
+  for (std::size_t i = 0; i < set.options.size(); ++i) {
+    const point_set_option& key = set.options[i];
+    if (key.is_flag()) {
+      if (r.boolean(key.key).value_or(false)) {
+        values[i] = "true";
+        o.label_suffix += key.flag_label;
+      }
+    } else if (auto value = r.choice(key.key, key.choices)) {
+      chosen[i] = std::move(*value);
+      values[i] = chosen[i];
+      o.label_suffix += "_" + chosen[i];
     }
   }
-  if (set.name == "sobol") {
-    o.set.allow_any_n = r.boolean("allow_any_n").value_or(false);
-    o.set.drop_first_point = r.boolean("drop_first_point").value_or(false);
-  }
+  o.set = set.options_of(values);
   o.points = read_points(r, set, o.set);
   return std::make_unique<qmc_method>(d, set, std::move(o));
 }
 
-constexpr std::array<option_doc, 4> sobol_docs{{
-    {"randomization",
-     "\"owen\" (default: nested uniform scrambling), \"fast_owen\" (Burley's hash, not exactly "
-     "nested), \"lms_shift\" (linear matrix scramble + digital shift), \"shift\" (digital shift), "
-     "\"none\" (deterministic, one run per cell); the label gets \"_<randomization>\""},
-    {"allow_any_n",
-     "true: use each N as it is (no net unless N = 2^m); default false: N maps to the largest "
-     "2^m <= N; the label gets \"_any_n\""},
-    {"drop_first_point",
-     "true: start at point 1, not the origin (the anti-pattern); the label gets \"_drop_first\""},
-    {"points",
+// One method per quasi-Monte Carlo set: its name (the set's), description and what its
+// `points` key takes; the set's own keys come before `points`.
+struct qmc_method_spec {
+  std::string_view name;
+  std::string_view description;
+  std::string_view points;
+};
+constexpr std::array<qmc_method_spec, 3> specs{{
+    {"sobol",
+     "randomized Sobol' points (Joe-Kuo directions, Gray-code order), N = 2^m; error bars from "
+     "replicates",
      "explicit N per cell (an integer or an increasing list), replacing budget.N; 2^m "
      "unless allow_any_n"},
-}};
-constexpr std::array<option_doc, 2> halton_docs{{
-    {"randomization",
-     "\"owen\" (default: nested scrambling in each base), \"permutation\" (random digit "
-     "permutations per base and digit), \"none\" (deterministic); the label gets the suffix"},
-    {"points", "explicit N per cell (an integer or an increasing list), replacing budget.N"},
-}};
-constexpr std::array<option_doc, 3> lattice_docs{{
-    {"randomization",
-     "\"shift\" (default: one uniform shift modulo 1), \"none\" (the lattice itself, "
-     "deterministic); the label gets the suffix"},
-    {"periodization",
-     "\"none\" (default) or \"baker\" (the tent transform 1 - |2x - 1|); the label gets the "
-     "suffix"},
-    {"points",
+    {"halton", "randomized Halton points in the first s prime bases; error bars from replicates",
+     "explicit N per cell (an integer or an increasing list), replacing budget.N"},
+    {"lattice",
+     "randomly shifted rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20; error bars "
+     "from replicates",
      "explicit N per cell (2^m <= 2^20, an integer or an increasing list), replacing "
      "budget.N"},
 }};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 
-const std::array<method_descriptor, 3> descriptors{{
-    {"sobol",
-     "randomized Sobol' points (Joe-Kuo directions, Gray-code order), N = 2^m; error bars from "
-     "replicates",
-     method_kind::randomized, sobol_docs, fixed_only,
-     [](const method_descriptor& d, option_reader& r) { return create_qmc(d, r, "sobol"); }},
-    {"halton", "randomized Halton points in the first s prime bases; error bars from replicates",
-     method_kind::randomized, halton_docs, fixed_only,
-     [](const method_descriptor& d, option_reader& r) { return create_qmc(d, r, "halton"); }},
-    {"lattice",
-     "randomly shifted rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20; error bars "
-     "from replicates",
-     method_kind::randomized, lattice_docs, fixed_only,
-     [](const method_descriptor& d, option_reader& r) { return create_qmc(d, r, "lattice"); }},
-}};
+// The descriptors with their option docs, built from the specs and the catalogue's constant
+// entries on first use: the registry may ask for them from another file's static initializer
+// (the peers' add_methods), before this file's dynamic initialization would have run.
+struct qmc_descriptors {
+  std::array<std::vector<option_doc>, specs.size()> docs;
+  std::vector<method_descriptor> descriptors;
+
+  qmc_descriptors() {
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      for (const point_set_option& o : find_point_set(specs[i].name)->options) {
+        docs[i].push_back({o.key, o.meaning});
+      }
+      docs[i].push_back({"points", specs[i].points});
+      descriptors.push_back({specs[i].name, specs[i].description, method_kind::randomized, docs[i],
+                             fixed_only, create_qmc});
+    }
+  }
+};
 
 }  // namespace
 
 std::span<const method_descriptor> qmc_methods() noexcept {
-  return descriptors;
+  static const qmc_descriptors built;
+  return built.descriptors;
 }
 
 }  // namespace quadmc::methods

@@ -45,23 +45,6 @@ std::vector<const method_descriptor*>& all() {
   return table;
 }
 
-// The peers of bench/peers/ (built into its quadmc_with_peers command, with add_methods) and the
-// library each comes from: a scene naming one in a build without them gets this instead of
-// "unknown method".
-struct optional_method {
-  std::string_view name;
-  std::string_view library;
-};
-constexpr optional_method peers[] = {
-    {"peer_hcubature", "cubature's hcubature, libcubature-dev"},
-    {"peer_pcubature", "cubature's pcubature, libcubature-dev"},
-    {"peer_gsl_plain", "GSL's gsl_monte_plain, libgsl-dev"},
-    {"peer_gsl_miser", "GSL's gsl_monte_miser, libgsl-dev"},
-    {"peer_gsl_vegas", "GSL's gsl_monte_vegas, libgsl-dev"},
-    {"peer_boost_tanh_sinh", "Boost.Math's tanh_sinh"},
-    {"peer_boost_gauss_kronrod", "Boost.Math's gauss_kronrod<double, 15>"},
-};
-
 }  // namespace
 
 void add_methods(std::span<const method_descriptor> family) {
@@ -75,7 +58,7 @@ void add_methods(std::span<const method_descriptor> family) {
 
 std::optional<std::string> unavailable_method(std::string_view name) {
   if (find_method(name) != nullptr) return std::nullopt;
-  for (const optional_method& p : peers) {
+  for (const known_peer& p : peers::known) {
     if (p.name == name) {
       return fmt::format(
           "method '{}' ({}) is a peer, not built into this quadmc (the peers are optional; "

@@ -12,7 +12,11 @@
 // with the nearest valid sizes: largest_point_count() maps a nominal N to the count a set can
 // hold first. The quasi-Monte Carlo sets (sobol, halton, lattice) take point_set_options (their
 // randomization, the lattice's periodization, Sobol's allow_any_n and drop_first_point); the
-// other sets ignore them.
+// other sets ignore them. An entry owns its options: it lists their keys (point_set_option, which
+// the methods read from a [[method]] table and `quadmc points` from its command line), turns the
+// values given into point_set_options (options_from), states the rate theory gives its sample
+// mean and where its error bars come from (theory_of, errors_with), and the strata it fills with
+// one point each (strata_of), so that no caller branches on a set's name.
 #pragma once
 
 #include "quadmc/estimators/estimate.hpp"
@@ -63,6 +67,48 @@ struct point_set_options {
   bool drop_first_point = false;  // Sobol': start at index 1 (the anti-pattern)
 };
 
+// One option key of a point set, as a [[method]] table names it (`quadmc points` takes it as
+// --key with '-' for '_'): a choice among `choices` (the default first), or a flag (no choices;
+// false unless given as true).
+struct point_set_option {
+  std::string_view key;
+  std::string_view meaning;                   // values, default and what the label gets, one line
+  std::span<const std::string_view> choices;  // empty: a flag
+  std::string_view flag_label;                // a flag set to true: the default label's suffix
+
+  bool is_flag() const noexcept { return choices.empty(); }
+};
+
+// The values given for a set's options, one per entry of its `options` (same order): the chosen
+// value of a choice, "true" for a flag that is set, empty when not given (the default).
+using point_set_values = std::span<const std::string_view>;
+
+// What theory says about a set's sample mean with given options, in the terms of the rate
+// building blocks of analysis/theoretical_rate.hpp, which this layer may not include: the
+// methods layer turns it into a rate for an integrand class (methods/qmc.cpp).
+enum class rate_basis {
+  scrambled_net,    // Owen's rates for a scrambled (t, m, s)-net (docs/theory.md#scrambled-nets)
+  broken_net,       // a net's points without the net property: `note` says why
+  low_discrepancy,  // Koksma–Hlawka with the set's star discrepancy: `note`, `source`
+  shifted_lattice,  // a randomly shifted rank-1 lattice; `baker`: periodized by the tent map
+  unproven,         // no rate proven: `note`, `source`
+};
+struct point_set_theory {
+  rate_basis basis = rate_basis::unproven;
+  std::string note;  // scrambled_net, shifted_lattice: a prefix to the block's own note, if any
+  std::string_view source;
+  bool baker = false;
+};
+
+// The strata a set fills with exactly one point each, by construction: the k^s cells of a grid
+// (`per_axis` = k), or N strata along every axis (a Latin hypercube's rows and columns).
+enum class strata_kind { cells, rows_and_columns };
+struct point_strata {
+  strata_kind kind = strata_kind::cells;
+  std::uint64_t per_axis = 0;
+};
+std::string_view to_string(strata_kind k) noexcept;
+
 // Whether one run estimates its own error (σ̂²/N and its stratified variants), or only
 // independent replicates of the whole set can (randomized quasi-Monte Carlo:
 // docs/theory.md#replicate-error-bars).
@@ -104,6 +150,19 @@ struct point_set_entry {
   std::span<const randomization> randomizations;
   std::size_t max_dimension;  // 0: any s
   error_source errors;        // with its default options
+  std::uint64_t max_points;   // the largest N (its tables' range); 0: 2^62, a random stream's
+  // Whether the first N points of the sequence are a valid (if poorer) set for any N, although
+  // its nets need N = 2^m: allow_any_n and the unrandomized sequence then take N as it is.
+  bool takes_any_prefix;
+  std::span<const point_set_option> options;  // its own keys, in listing order
+
+  // The options `values` (one per entry of `options`, checked against its choices) configure.
+  point_set_options (*options_from)(point_set_values values);
+  // The rate theory gives the set's sample mean with these options; nullptr for a set whose
+  // methods state it themselves (methods/point_set_methods.cpp).
+  point_set_theory (*theory_over)(const point_set_options& options);
+  // The strata of n points in s dimensions (with the default options), if it has them.
+  std::optional<point_strata> (*strata_over)(std::size_t s, std::uint64_t n);
 
   // The estimators (function pointers, instantiated per set by point_set_entry_for); call them
   // through the members below.
@@ -140,6 +199,17 @@ struct point_set_entry {
   void points(std::size_t s, std::uint64_t n, const sample_stream& stream,
               const point_batch_sink& sink, const point_set_options& options = {}) const {
     points_over(s, n, options, stream, sink);
+  }
+
+  // The option keyed `key`, or nullptr.
+  const point_set_option* option(std::string_view key) const noexcept;
+  point_set_options options_of(point_set_values values) const { return options_from(values); }
+  std::optional<point_set_theory> theory_of(const point_set_options& options) const {
+    if (theory_over == nullptr) return std::nullopt;
+    return theory_over(options);
+  }
+  std::optional<point_strata> strata_of(std::size_t s, std::uint64_t n) const {
+    return strata_over(s, n);
   }
 
   // The randomization `options` resolve to (the default when none is given); nullopt for a set

@@ -10,6 +10,7 @@
 #include "quadmc/methods/method.hpp"
 #include "quadmc/methods/option_map.hpp"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -43,6 +44,28 @@ std::span<const warp_descriptor> importance_warps() noexcept;
 // library itself (those are one line in registry.cpp) and not thread-safe: call it before any
 // lookup.
 void add_methods(std::span<const method_descriptor> family);
+
+// The peers of bench/peers/ a scene may name, and the library each comes from: the one place
+// their names are written. Their descriptors take the names from here
+// (bench/peers/peer_scene_methods.cpp), and a build without them says where each is built
+// (unavailable_method) instead of "unknown method".
+struct known_peer {
+  std::string_view name;
+  std::string_view library;
+};
+namespace peers {
+inline constexpr known_peer hcubature{"peer_hcubature", "cubature's hcubature, libcubature-dev"};
+inline constexpr known_peer pcubature{"peer_pcubature", "cubature's pcubature, libcubature-dev"};
+inline constexpr known_peer gsl_plain{"peer_gsl_plain", "GSL's gsl_monte_plain, libgsl-dev"};
+inline constexpr known_peer gsl_miser{"peer_gsl_miser", "GSL's gsl_monte_miser, libgsl-dev"};
+inline constexpr known_peer gsl_vegas{"peer_gsl_vegas", "GSL's gsl_monte_vegas, libgsl-dev"};
+inline constexpr known_peer boost_tanh_sinh{"peer_boost_tanh_sinh", "Boost.Math's tanh_sinh"};
+inline constexpr known_peer boost_gauss_kronrod{"peer_boost_gauss_kronrod",
+                                                "Boost.Math's gauss_kronrod<double, 15>"};
+// In listing order.
+inline constexpr std::array<known_peer, 7> known{
+    hcubature, pcubature, gsl_plain, gsl_miser, gsl_vegas, boost_tanh_sinh, boost_gauss_kronrod};
+}  // namespace peers
 
 // Why a scene cannot name `name` in this build although the suite knows it (a peer whose command
 // was not built), and how to get it, one line; nullopt for a name that is present or unknown.

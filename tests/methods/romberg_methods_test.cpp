@@ -1,7 +1,7 @@
-// Tests of the romberg method (lib/src/methods/romberg.cpp): its 2^k + 1 grids and its three
-// controls, each spending what it says and reporting its own error estimate.
-#include "quadmc/rules/romberg.hpp"
+// Tests of the romberg method (lib/src/methods/romberg_methods.cpp): its 2^k + 1 grids and its
+// three controls, each spending what it says and reporting its own error estimate.
 #include "quadmc/methods/registry.hpp"
+#include "quadmc/rules/romberg.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Tests of the vegas method (lib/src/methods/vegas.cpp): its options with their errors, its
+// Tests of the vegas method (lib/src/methods/vegas_methods.cpp): its options with their errors, its
 // sizes and controls, its theory, and a run reporting σ̂ as its error estimate with χ²/dof and Q.
 #include "quadmc/estimators/vegas.hpp"
 #include "quadmc/methods/registry.hpp"

@@ -14,7 +14,7 @@ namespace {
 class irradiance_method final : public method {
  public:
   irradiance_method(const method_descriptor& d, irradiance_sampling technique,
-                    point_set_option points)
+                    point_set_choice points)
       : method(d), technique_(technique), points_(points) {}
 
   std::string label_suffix() const override {
@@ -51,7 +51,7 @@ class irradiance_method final : public method {
 
  private:
   irradiance_sampling technique_;
-  point_set_option points_;
+  point_set_choice points_;
 };
 
 constexpr std::array<option_doc, 1> option_docs{{
