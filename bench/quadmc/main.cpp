@@ -278,7 +278,7 @@ int run_command(const run_request& request, standard_output& out,
 }
 
 int plan_command(const std::string& scene_file, standard_output& out) {
-  const quadmc::plan p = quadmc::make_plan(quadmc::parse_scene_file(scene_file));
+  const quadmc::plan p = quadmc::plan_scene(scene_file);
   out.print(quadmc::format_plan(p) + "\n");
   if (out.failed()) throw std::runtime_error(out.message());
   return 0;

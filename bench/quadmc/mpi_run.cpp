@@ -76,12 +76,6 @@ void mpi_scheduler::run_cells(quadmc::run_session&, quadmc::run_assembly&) {
 
 namespace {
 
-using clock = std::chrono::steady_clock;
-
-double seconds_since(clock::time_point start) {
-  return std::chrono::duration<double>(clock::now() - start).count();
-}
-
 // MPI's counts are int: a message over 2 GiB − 1 is refused with the reason, never truncated.
 int as_count(std::size_t bytes, std::string_view what) {
   if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
@@ -246,43 +240,18 @@ rank_outcome deserialise(const char* data, std::size_t size) {
   return o;
 }
 
-// Each series' cost (scene/schedule.hpp): rank 0 times the probes the scheduler chooses and
-// sends the figures to every rank, so that all ranks cost cells alike and make one assignment.
-// A series whose probe fails here gets the nominal cost: the run proper reports its error.
+// Each series' cost (scene/schedule.hpp): rank 0 times the probes (time_series_costs) and sends
+// the figures to every rank, so that all ranks cost cells alike and make one assignment.
 std::vector<quadmc::series_cost> series_costs(const quadmc::plan& p,
                                               const quadmc::cost_probes& probes,
                                               const quadmc::run_context& context, const world& w) {
   const std::size_t series = probes.smallest.size();
   std::vector<double> figures(2 * series);
   if (w.rank == 0) {
-    // The fastest of three timings of a cell of at most probe_evaluations: timed once, a cell of
-    // microseconds is at the mercy of one preemption (the other ranks spin in MPI_Bcast
-    // meanwhile, and an oversubscribed machine hands rank 0's core to them), which can price a
-    // series hundreds of times too high. A larger cell (a series that starts above the probe
-    // size) is timed once.
-    const auto seconds_of = [&](std::size_t i) {
-      const int timings = p.cells[i].evaluations <= quadmc::probe_evaluations ? 3 : 1;
-      double best = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < timings; ++k) {
-        const auto t0 = clock::now();
-        (void)quadmc::run_cell_repetitions(p, i, 0, 1, context, 0.0);
-        best = std::min(best, seconds_since(t0));
-      }
-      return best;
-    };
+    const std::vector<quadmc::series_cost> measured = quadmc::time_series_costs(p, probes, context);
     for (std::size_t s = 0; s < series; ++s) {
-      quadmc::series_cost c;
-      try {
-        const std::size_t small = probes.smallest[s];
-        const std::size_t probe = probes.probe[s];
-        const double t0 = seconds_of(small);
-        const double t1 = probe == small ? t0 : seconds_of(probe);
-        c = quadmc::fit_series_cost(p.cells[small].evaluations, t0, p.cells[probe].evaluations, t1);
-      } catch (const std::exception&) {
-        c = quadmc::series_cost{};
-      }
-      figures[2 * s] = c.fixed;
-      figures[2 * s + 1] = c.per_evaluation;
+      figures[2 * s] = measured[s].fixed;
+      figures[2 * s + 1] = measured[s].per_evaluation;
     }
   }
   MPI_Bcast(figures.data(), as_count(figures.size(), "the cost table"), MPI_DOUBLE, 0,

@@ -4,6 +4,7 @@
 #include "quadmc/scene/schedule.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/scene/parse.hpp"
 #include "support/invalid_argument_message.hpp"
 
@@ -12,8 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -157,6 +160,51 @@ N = [16, 1024, 1048576]
   }
   EXPECT_TRUE(cell_shares_chunks(p, 0));
   EXPECT_THROW(cell_shares_chunks(p, p.cells.size()), invalid_argument);
+
+  // Timed here: one cost per series, each a real fit (not the nominal cost of a failed probe,
+  // whose fixed part is 0 and slope 1e-8), above the floor of 1e-12 s per evaluation.
+  const std::vector<series_cost> timed = time_series_costs(p, probes, run_context{1, 1});
+  ASSERT_EQ(timed.size(), 2u);
+  for (const series_cost& c : timed) {
+    EXPECT_GT(c.fixed + c.per_evaluation, 0.0);
+    EXPECT_GE(c.per_evaluation, 1e-12);
+    EXPECT_TRUE(std::isfinite(c.fixed) && std::isfinite(c.per_evaluation));
+  }
+}
+
+// eˣ but NaN everywhere: every repetition fails, as a cell that only the run finds bad.
+struct not_a_number_anywhere {
+  std::size_t dimension() const noexcept { return 1; }
+  void evaluate(std::span<const double>, std::span<double> y) const noexcept {
+    for (double& v : y) v = std::numeric_limits<double>::quiet_NaN();
+  }
+  integrand_info info() const {
+    return integrand_info{.name = "nan",
+                          .formula = "NaN",
+                          .domain = box::unit(1),
+                          .exact = std::exp(1.0) - 1.0,
+                          .reference = "closed form"};
+  }
+};
+
+// A series whose probe fails keeps the nominal cost: the run proper reports the failure, with
+// its cell and repetition; the scheduler must not fail first with less to say.
+TEST(Schedule, AFailingProbeKeepsTheNominalCost) {
+  plan p = make_plan(parse_scene(R"(seed = 1
+[[integrand]]
+family = "exp"
+[[method]]
+name = "midpoint"
+[budget]
+N = [16, 1024]
+)",
+                                 "failing.toml"));
+  p.instances[0].function = any_integrand(not_a_number_anywhere{});
+  const std::vector<series_cost> timed =
+      time_series_costs(p, choose_cost_probes(p), run_context{1, 1});
+  ASSERT_EQ(timed.size(), 1u);
+  EXPECT_EQ(timed[0].fixed, series_cost{}.fixed);
+  EXPECT_EQ(timed[0].per_evaluation, series_cost{}.per_evaluation);
 }
 
 }  // namespace

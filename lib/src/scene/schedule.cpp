@@ -2,11 +2,15 @@
 #include "quadmc/scene/schedule.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/scene/run.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -83,6 +87,34 @@ series_cost fit_series_cost(std::uint64_t n0, double t0, std::uint64_t n1, doubl
   // A slope lost in the noise (t1 ≤ t0) falls back to the probe's mean per evaluation.
   c.per_evaluation = std::max(x1 > x0 && t1 > t0 ? (t1 - t0) / (x1 - x0) : t1 / x1, 1e-12);
   return c;
+}
+
+std::vector<series_cost> time_series_costs(const plan& p, const cost_probes& probes,
+                                           const run_context& context) {
+  using clock = std::chrono::steady_clock;
+  const auto seconds_of = [&](std::size_t i) {
+    const int timings = p.cells[i].evaluations <= probe_evaluations ? 3 : 1;
+    double best = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < timings; ++k) {
+      const auto t0 = clock::now();
+      (void)run_cell_repetitions(p, i, 0, 1, context, 0.0);
+      best = std::min(best, std::chrono::duration<double>(clock::now() - t0).count());
+    }
+    return best;
+  };
+  std::vector<series_cost> cost(probes.smallest.size());
+  for (std::size_t s = 0; s < cost.size(); ++s) {
+    try {
+      const std::size_t small = probes.smallest[s];
+      const std::size_t probe = probes.probe[s];
+      const double t0 = seconds_of(small);
+      const double t1 = probe == small ? t0 : seconds_of(probe);
+      cost[s] = fit_series_cost(p.cells[small].evaluations, t0, p.cells[probe].evaluations, t1);
+    } catch (const std::exception&) {
+      cost[s] = series_cost{};
+    }
+  }
+  return cost;
 }
 
 std::vector<double> cell_costs(const plan& p, const cost_probes& probes,

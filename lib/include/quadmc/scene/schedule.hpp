@@ -17,6 +17,7 @@
 // take more than 1.25 × total/K: an efficiency of at least 80 %.
 #pragma once
 
+#include "quadmc/methods/method.hpp"
 #include "quadmc/scene/plan.hpp"
 
 #include <cstddef>
@@ -64,6 +65,14 @@ struct series_cost {
 // t1/n1, and a series timed at one size (n1 = n0) has that mean and no fixed part.
 // per_evaluation is at least 1e-12 s, so no cell costs nothing.
 series_cost fit_series_cost(std::uint64_t n0, double t0, std::uint64_t n1, double t1);
+
+// Every series' cost, timed on this process: each probe is the fastest of three timings of one
+// repetition (a cell of microseconds is at the mercy of one preemption, which can price a series
+// hundreds of times too high; a cell above probe_evaluations, a series that starts above the
+// probe size, is timed once), fitted by fit_series_cost. A series whose probe fails gets the
+// nominal cost: the run proper reports its error, with the cell and repetition.
+std::vector<series_cost> time_series_costs(const plan& p, const cost_probes& probes,
+                                           const run_context& context);
 
 // Each cell's cost: repetitions × (fixed + evaluations × per_evaluation) of its series.
 std::vector<double> cell_costs(const plan& p, const cost_probes& probes,
