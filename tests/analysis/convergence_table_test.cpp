@@ -75,6 +75,56 @@ TEST(ConvergenceTable, DeterministicSeriesWithFloor) {
   EXPECT_NEAR(*table.work_precision[0].seconds, 1e-9 * std::sqrt(10.0), 1e-20);
 }
 
+// A reference known to ± u: errors below 10u are floor points, never fitted
+// (docs/theory.md#references-without-a-closed-form). The midpoint series' errors are 0.1·N⁻²
+// (plus ≤ 6.2e-16 of rounding, see above), so with u = 1e-9 the first below 10u = 1e-8 is at
+// N = 4096 (0.1/4096² = 6.0e-9; N = 2048 gives 2.4e-8): rows 0…10 (N = 2 … 2048) are fitted and
+// the 17 from N = 4096 on are floor points, long before the rounding floor (≈ N = 2^23).
+TEST(ConvergenceTable, ErrorsBelowTenTimesTheReferenceUncertaintyAreNotFitted) {
+  convergence_series series = midpoint_series();
+  series.reference_uncertainty = 1e-9;
+  const convergence_table table = analyse_convergence(series);
+  ASSERT_EQ(table.rows.size(), 28u);
+  EXPECT_EQ(table.reference_uncertainty, 1e-9);
+  ASSERT_TRUE(table.floor.first.has_value());
+  EXPECT_EQ(*table.floor.first, 11u);
+  ASSERT_TRUE(table.floor.reference_first.has_value());
+  EXPECT_EQ(*table.floor.reference_first, 11u);
+  for (const convergence_row& row : table.rows) {
+    EXPECT_EQ(row.floor, row.stats.rmse < 1e-8) << "N = " << row.n << ", error " << row.stats.rmse;
+  }
+  EXPECT_EQ(table.points_used(), 11u);
+  EXPECT_EQ(table.floor_points(), 17u);
+  // The fitted errors are 0.1·N⁻²·(1 + δ), |δ| ≤ 6.2e-16·2048²/0.1 = 2.6e-8 at the largest fitted
+  // N, so the OLS slope is within Σ|w_k|·|δ_k| < 1e-7 of −2 (Σ|w_k| < 1 over ln 2 … ln 2048).
+  ASSERT_TRUE(table.fit.ok());
+  EXPECT_NEAR(table.fit.slope, -2.0, 1e-7);
+  // The attainable accuracy is the smallest fitted error: 0.1/2048².
+  EXPECT_NEAR(table.floor.attainable_accuracy, 0.1 / (2048.0 * 2048.0), 1e-15);
+}
+
+TEST(ConvergenceTable, ReferenceUncertaintyZeroChangesNothing) {
+  const convergence_table plain = analyse_convergence(midpoint_series());
+  convergence_series series = midpoint_series();
+  series.reference_uncertainty = 0.0;
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_EQ(table.floor.first, plain.floor.first);
+  EXPECT_FALSE(table.floor.reference_first.has_value());
+  EXPECT_EQ(table.fit.slope, plain.fit.slope);
+  EXPECT_EQ(table.verdict_reason, plain.verdict_reason);
+}
+
+TEST(ConvergenceTable, ALadderBelowTheReferenceFloorIsAtFloorAndSaysWhy) {
+  convergence_series series = midpoint_series();
+  series.reference_uncertainty = 1.0;  // 10u = 10 is above every error (≤ 0.025)
+  const convergence_table table = analyse_convergence(series);
+  EXPECT_EQ(table.points_used(), 0u);
+  EXPECT_EQ(table.floor_points(), table.rows.size());
+  EXPECT_EQ(table.verdict, slope_verdict::at_floor);
+  EXPECT_NE(table.verdict_reason.find("the reference's floor"), std::string::npos)
+      << table.verdict_reason;
+}
+
 // A sparse-grid-like ladder: errors fall as N^-3 to 2e-12 (relative to I = 1) and stay there,
 // the level a rule with Σ|w| = 2000 reaches by rounding (2ε·2000·log₂N ≈ 1.8e-11 at N = 2^20).
 // Without Σ|w| the floor rule sees errors far above 2ε·log₂N and no stall within 10⁴ of it …

@@ -250,5 +250,64 @@ TEST(RoundingFloor, RejectsBadLadders) {
       invalid_argument);
 }
 
+// add_reference_floor: the first error below factor·u starts the floor (unless the rounding floor
+// started earlier), every later point joins it, and the floor's level and the attainable accuracy
+// are recomputed over the joined floor.
+TEST(ReferenceFloor, StartsTheFloorAtTheFirstErrorBelowTenTimesTheUncertainty) {
+  const std::vector<double> n{4, 16, 64, 256, 1024};
+  const std::vector<double> error{1e-2, 1e-4, 1e-6, 2e-8, 1e-9};
+  rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_FALSE(floor.reached());
+  add_reference_floor(floor, error, 1e-8, 10.0);  // level 1e-7: first below it is 2e-8 (k = 3)
+  ASSERT_TRUE(floor.reached());
+  EXPECT_EQ(*floor.first, 3u);
+  EXPECT_EQ(*floor.reference_first, 3u);
+  EXPECT_EQ(floor.flags, (std::vector<bool>{false, false, false, true, true}));
+  EXPECT_EQ(floor.count(), 2u);
+  EXPECT_DOUBLE_EQ(floor.floor_level, 0.5 * (2e-8 + 1e-9));  // median of the two
+  EXPECT_EQ(floor.attainable_accuracy, 1e-6);
+}
+
+TEST(ReferenceFloor, AnErrorAtExactlyTenTimesIsStillFittedAndZeroUncertaintyIsNoFloor) {
+  const std::vector<double> n{4, 16, 64};
+  const std::vector<double> error{1e-2, 1e-3, 1e-4};
+  rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  add_reference_floor(floor, error, 1e-5, 10.0);  // 1e-4 is not below 10·1e-5
+  EXPECT_FALSE(floor.reached());
+  EXPECT_FALSE(floor.reference_first.has_value());
+  add_reference_floor(floor, error, 0.0, 10.0);
+  EXPECT_FALSE(floor.reached());
+}
+
+TEST(ReferenceFloor, AnEarlierRoundingFloorKeepsItsStart) {
+  // A flat floor from k = 2 (S = 1: ℓ(64) = 2ε·6 = 2.7e-15, and 3e-15 stalls: the next two are
+  // not below half of it); the reference floor 10·2.45e-16 = 2.45e-15 starts at k = 4, later:
+  // the rounding floor stays as detected.
+  const std::vector<double> n{4, 16, 64, 256, 1024};
+  const std::vector<double> error{1e-8, 1e-11, 3e-15, 2.5e-15, 2.4e-15};
+  rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  ASSERT_TRUE(floor.reached());
+  ASSERT_EQ(*floor.first, 2u);
+  const rounding_floor before = floor;
+  add_reference_floor(floor, error, 2.45e-16, 10.0);
+  EXPECT_EQ(floor.first, before.first);
+  EXPECT_EQ(floor.flags, before.flags);
+  EXPECT_EQ(floor.floor_level, before.floor_level);
+  ASSERT_TRUE(floor.reference_first.has_value());
+  EXPECT_EQ(*floor.reference_first, 4u);
+}
+
+TEST(ReferenceFloor, RejectsBadUncertaintyFactorOrSizes) {
+  const std::vector<double> n{4, 16};
+  const std::vector<double> error{1e-2, 1e-3};
+  rounding_floor floor = detect_rounding_floor(n, error, 1.0);
+  EXPECT_THROW(add_reference_floor(floor, error, -1e-9, 10.0), invalid_argument);
+  EXPECT_THROW(add_reference_floor(floor, error, std::numeric_limits<double>::infinity(), 10.0),
+               invalid_argument);
+  EXPECT_THROW(add_reference_floor(floor, error, 1e-9, 0.0), invalid_argument);
+  const std::vector<double> three{1e-2, 1e-3, 1e-4};
+  EXPECT_THROW(add_reference_floor(floor, three, 1e-9, 10.0), invalid_argument);
+}
+
 }  // namespace
 }  // namespace quadmc

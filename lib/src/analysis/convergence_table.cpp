@@ -134,12 +134,18 @@ void judge_series(convergence_table& table, const convergence_series& series,
   const std::optional<double> class_slope = series.theory.slope;
   const std::size_t clean = fit_n.size();
   const bool floor_limited = table.floor.reached() && clean < 3;
+  const bool reference_floor = table.floor.reached() && table.floor.reference_first &&
+                               *table.floor.reference_first == *table.floor.first;
   const std::string floor_text =
-      table.floor.reached() ? fmt::format("the rounding floor of {} from N = {} (ℓ = {:.2g} there)",
-                                          series.rounding.describe(),
-                                          table.rows[*table.floor.first].stats.evaluations,
-                                          table.rows[*table.floor.first].rounding_level)
-                            : std::string();
+      !table.floor.reached() ? std::string()
+      : reference_floor
+          ? fmt::format("the reference's floor ({} × its uncertainty {:.2g}) from N = {}",
+                        options.floor.reference_factor, series.reference_uncertainty,
+                        table.rows[*table.floor.first].stats.evaluations)
+          : fmt::format("the rounding floor of {} from N = {} (ℓ = {:.2g} there)",
+                        series.rounding.describe(),
+                        table.rows[*table.floor.first].stats.evaluations,
+                        table.rows[*table.floor.first].rounding_level);
 
   prediction_check check;
   const error_prediction* prediction = series.prediction ? &*series.prediction : nullptr;
@@ -313,6 +319,7 @@ convergence_table analyse_convergence(const convergence_series& series,
   table.regularity = series.regularity;
   table.relative_tolerance = series.relative_tolerance;
   table.reference = series.reference;
+  table.reference_uncertainty = series.reference_uncertainty;
   table.theory = series.theory;
 
   // Sized cells in increasing N; cells run to a tolerance in decreasing tolerance, the order in
@@ -407,7 +414,13 @@ convergence_table analyse_convergence(const convergence_series& series,
   table.rounding = series.rounding;
   table.class_theory = series.theory;
   table.floor = in_series([&] {
-    return detect_rounding_floor(evaluations, errors, scales, series.rounding, options.floor);
+    rounding_floor floor =
+        detect_rounding_floor(evaluations, errors, scales, series.rounding, options.floor);
+    // A reference known to ± u cannot measure an error near u: such points are not fitted
+    // (docs/theory.md#references-without-a-closed-form).
+    add_reference_floor(floor, errors, series.reference_uncertainty,
+                        options.floor.reference_factor);
+    return floor;
   });
 
   // A row shares the floor flag of the ladder point that spent its evaluations; the table's
@@ -432,6 +445,9 @@ convergence_table analyse_convergence(const convergence_series& series,
     }
   }
   if (table.floor.first) table.floor.first = ladder[*table.floor.first];
+  if (table.floor.reference_first) {
+    table.floor.reference_first = ladder[*table.floor.reference_first];
+  }
   table.floor.flags = std::move(row_flags);
   table.fit = in_series([&] { return fit_power_law(fit_n, fit_error, options.confidence); });
   if (table.has_envelope()) {

@@ -122,4 +122,35 @@ rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const 
   return out;
 }
 
+void add_reference_floor(rounding_floor& floor, std::span<const double> error, double uncertainty,
+                         double factor) {
+  require(std::isfinite(uncertainty) && uncertainty >= 0.0, "uncertainty", uncertainty,
+          "finite and >= 0");
+  require(std::isfinite(factor) && factor > 0.0, "factor", factor, "finite and > 0");
+  require(error.size() == floor.flags.size(), "error.size()", error.size(),
+          fmt::format("the size of the floor's flags ({})", floor.flags.size()));
+  if (uncertainty == 0.0) return;
+  const double level = factor * uncertainty;
+  for (std::size_t k = 0; k < error.size(); ++k) {
+    if (error[k] < level) {
+      floor.reference_first = k;
+      break;
+    }
+  }
+  if (!floor.reference_first) return;
+  if (floor.first && *floor.first <= *floor.reference_first) return;
+  const std::size_t first = *floor.reference_first;
+  floor.first = first;
+  for (std::size_t k = first; k < error.size(); ++k) floor.flags[k] = true;
+  std::vector<double> floor_errors(error.begin() + static_cast<std::ptrdiff_t>(first), error.end());
+  std::sort(floor_errors.begin(), floor_errors.end());
+  const std::size_t m = floor_errors.size();
+  floor.floor_level =
+      m % 2 == 1 ? floor_errors[m / 2] : 0.5 * (floor_errors[m / 2 - 1] + floor_errors[m / 2]);
+  floor.attainable_accuracy =
+      first > 0
+          ? *std::min_element(error.begin(), error.begin() + static_cast<std::ptrdiff_t>(first))
+          : *std::min_element(error.begin(), error.end());
+}
+
 }  // namespace quadmc

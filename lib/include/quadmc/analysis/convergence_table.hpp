@@ -9,8 +9,10 @@
 // The error of a cell is its RMSE over repetitions (|error| for one repetition), the x axis its
 // evaluations per repetition (docs/theory.md#conventions: N = evaluations). Floor points, flagged
 // by rounding_floor.hpp, are excluded from the fit (a zero error is always a floor point, so every
-// fitted error is > 0). The floor scale is |reference|; when the reference is 0 it falls back to
-// the largest RMSE of the ladder, a crude magnitude of f (documented in the slopes table). The
+// fitted error is > 0); so are errors below 10 times the uncertainty of a reference that is not
+// exact, and the points after them (add_reference_floor). The floor scale is |reference|; when
+// the reference is 0 it falls back to the largest RMSE of the ladder, a crude magnitude of f
+// (documented in the slopes table). The
 // floor's level knows the precision f is evaluated in and the method's accumulator
 // (convergence_series::rounding); a cell whose rule reports Σ|w| > 1 (weights of both signs: a
 // sparse grid) has its floor scale multiplied by Σ|w|, the factor by which its sum amplifies
@@ -72,6 +74,10 @@ struct convergence_series {
   std::string method;  // display name (the scene's label), e.g. "midpoint_naive"
   smoothness regularity = smoothness::analytic;  // integrand_info::regularity
   double reference = 0.0;                        // integrand_info::exact
+  // The reference's absolute uncertainty: 0 for an exact value; for a given or computed one,
+  // errors below rounding_floor_options::reference_factor (10) times it are floor points
+  // (rounding_floor.hpp, add_reference_floor).
+  double reference_uncertainty = 0.0;
   // The method's rate on this integrand (its descriptor chose it, methods/method.hpp).
   theoretical_rate theory;
   std::vector<convergence_cell> cells;
@@ -135,7 +141,8 @@ struct convergence_table {
   std::string method;
   smoothness regularity = smoothness::analytic;
   double reference = 0.0;
-  bool relative_tolerance = false;  // convergence_series::relative_tolerance
+  double reference_uncertainty = 0.0;  // convergence_series::reference_uncertainty
+  bool relative_tolerance = false;     // convergence_series::relative_tolerance
   // In increasing N, or, for cells run to a tolerance, in decreasing tolerance.
   std::vector<convergence_row> rows;
   rounding_floor floor;

@@ -44,6 +44,9 @@ struct rounding_floor_options {
   double band = 1e4;             // B: how far above ℓ a stall still counts as the floor
   double stall_factor = 2.0;     // F: a later point must improve by more than this
   std::size_t stall_window = 2;  // W: how many later points are looked at
+  // An error below this many times the reference's uncertainty measures the reference, not the
+  // method (add_reference_floor).
+  double reference_factor = 10.0;
 };
 
 struct rounding_floor {
@@ -51,6 +54,9 @@ struct rounding_floor {
   std::optional<std::size_t> first;  // index of the first floor point, if any
   double attainable_accuracy = std::numeric_limits<double>::quiet_NaN();
   double floor_level = std::numeric_limits<double>::quiet_NaN();  // median error of floor points
+  // The first point below the reference's floor (add_reference_floor), if any: it starts the floor
+  // when it comes before `first` would have without it.
+  std::optional<std::size_t> reference_first;
 
   bool reached() const noexcept { return first.has_value(); }
   std::size_t count() const noexcept { return first ? flags.size() - *first : 0; }
@@ -94,5 +100,16 @@ rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const 
 rounding_floor detect_rounding_floor(std::span<const double> n, std::span<const double> error,
                                      std::span<const double> scales, const rounding_model& model,
                                      const rounding_floor_options& options = {});
+
+// The reference's floor (docs/theory.md#references-without-a-closed-form): a reference known
+// only to ± u (given with its uncertainty, or computed) cannot tell an error below ≈ u from 0,
+// and one below factor·u (10u) is at least 10% its own uncertainty. Such a point, and every
+// later one (the floor is a tail, as the rounding floor is: a longer ladder does not climb back
+// out of it), joins the floor and is not fitted; floor_level and attainable_accuracy are
+// recomputed over the joined floor. Nothing changes for u = 0 (an exact reference). Throws
+// invalid_argument when u is negative or not finite, the factor not finite and > 0, or the
+// errors are not floor.flags.size().
+void add_reference_floor(rounding_floor& floor, std::span<const double> error, double uncertainty,
+                         double factor);
 
 }  // namespace quadmc
