@@ -394,6 +394,57 @@ TEST(SceneErrors, OutOfRangeValues) {
   expect_error(t, line_of(t, "m = 6"), "method[1].m");
 }
 
+TEST(ParseScene, ReferenceKeysGiveTheirSource) {
+  scene sc = parse(replace(valid, "dimension = 2",
+                           "dimension = 2\nreference = 0.5\nreference_uncertainty = 1e-9"));
+  EXPECT_EQ(sc.integrands[0].reference, reference_source::given);
+  EXPECT_EQ(sc.integrands[0].reference_value, 0.5);
+  EXPECT_EQ(sc.integrands[0].reference_uncertainty, 1e-9);
+  sc = parse(replace(valid, "dimension = 2", "dimension = 2\nreference = 2"));
+  EXPECT_EQ(sc.integrands[0].reference, reference_source::given);
+  EXPECT_EQ(sc.integrands[0].reference_value, 2.0);
+  EXPECT_EQ(sc.integrands[0].reference_uncertainty, 0.0);
+  sc = parse(replace(valid, "dimension = 2", "dimension = 2\nreference = \"computed\""));
+  EXPECT_EQ(sc.integrands[0].reference, reference_source::computed);
+  sc = parse(valid);
+  EXPECT_EQ(sc.integrands[0].reference, reference_source::exact);
+}
+
+TEST(SceneErrors, BadReferenceKeysAreOneLineErrorsAtTheKey) {
+  struct bad {
+    std::string_view added;
+    std::string_view at;   // the text of the line the error points at
+    std::string_view key;  // the key the message names
+    std::string_view says;
+  };
+  const bad cases[] = {
+      {"reference = \"exact\"", "reference", "integrand[1].reference",
+       "expected a finite number or \"computed\", got \"exact\""},
+      {"reference = inf", "reference", "integrand[1].reference",
+       "expected a finite number or \"computed\", got inf"},
+      {"reference = nan", "reference", "integrand[1].reference", "expected a finite number"},
+      {"reference = true", "reference", "integrand[1].reference", "got true"},
+      {"reference = 1.0\nreference_uncertainty = -1e-9", "reference_uncertainty",
+       "integrand[1].reference_uncertainty", "expected a finite number ≥ 0"},
+      {"reference = 1.0\nreference_uncertainty = inf", "reference_uncertainty",
+       "integrand[1].reference_uncertainty", "got inf"},
+      {"reference_uncertainty = 1e-9", "reference_uncertainty",
+       "integrand[1].reference_uncertainty", "only with a number `reference`"},
+      {"reference = \"computed\"\nreference_uncertainty = 1e-9", "reference_uncertainty",
+       "integrand[1].reference_uncertainty", "not with reference = \"computed\""},
+      {"reference = 1.0\nensemble = 4", "reference", "integrand[1].reference",
+       "not with ensemble = 4"},
+      {"reference = \"computed\"\nensemble = 2", "reference", "integrand[1].reference",
+       "not with ensemble = 2"},
+  };
+  for (const bad& b : cases) {
+    const std::string t =
+        replace(valid, "dimension = 2", std::string("dimension = 2\n") + std::string(b.added));
+    const std::string m = expect_error(t, line_of(t, b.at), b.key);
+    EXPECT_NE(m.find(b.says), std::string::npos) << m;
+  }
+}
+
 TEST(SceneErrors, SimpsonWithAnOddExplicitPanelCount) {
   std::string t = replace(valid, "name = \"simpson\"", "name = \"simpson\"\npanels = [2, 5]");
   const std::string m = expect_error(t, line_of(t, "panels"), "method[1].panels[2]");

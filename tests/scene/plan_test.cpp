@@ -754,3 +754,70 @@ max_evaluations = 1000
 
 }  // namespace
 }  // namespace quadmc
+
+namespace quadmc {
+namespace {
+
+// A given or computed reference replaces the exact value in mean_reference, is stated in the
+// listing with its uncertainty and how it was obtained, and a note says the exact value exists.
+constexpr std::string_view referenced = R"(name = "ref"
+[[integrand]]
+family = "exp"
+name = "given"
+reference = 1.7
+reference_uncertainty = 1e-3
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+reference = "computed"
+[[integrand]]
+family = "sin"
+[[method]]
+name = "midpoint"
+[budget]
+N = [4, 16]
+)";
+
+TEST(MakePlan, GivenAndComputedReferencesReplaceTheExactValue) {
+  const plan p = plan_of(referenced);
+  ASSERT_EQ(p.references.size(), 3u);
+  EXPECT_EQ(p.references[0].source, reference_source::given);
+  EXPECT_EQ(p.mean_reference[0], 1.7);
+  EXPECT_EQ(p.references[0].uncertainty, 1e-3);
+  EXPECT_EQ(p.references[1].source, reference_source::computed);
+  ASSERT_TRUE(p.references[1].computed.has_value());
+  EXPECT_EQ(p.mean_reference[1], p.references[1].computed->value);
+  EXPECT_EQ(p.references[1].uncertainty, p.references[1].computed->uncertainty);
+  const double exact = p.instances[1].function.info().exact;
+  EXPECT_LE(std::abs(p.mean_reference[1] - exact), p.references[1].uncertainty);
+  EXPECT_EQ(p.references[2].source, reference_source::exact);
+  EXPECT_EQ(p.mean_reference[2], p.instances[2].function.info().exact);
+  EXPECT_EQ(p.references[2].uncertainty, 0.0);
+
+  const std::string listing = format_plan(p);
+  EXPECT_NE(listing.find("reference = 1.7 ± 0.001 (given, uncertainty 0.001)"), std::string::npos)
+      << listing;
+  EXPECT_NE(listing.find("(computed: Genz–Malik h-adaptive cubature, relative tolerance 1e-12, "),
+            std::string::npos)
+      << listing;
+  int notes = 0;
+  for (const std::string& n : p.notes) {
+    if (n.find("exists and is not used") != std::string::npos) ++notes;
+  }
+  EXPECT_EQ(notes, 2) << listing;
+  EXPECT_NE(listing.find(fmt::format("scene.toml:{}: integrand[1] (given): errors are measured "
+                                     "from the given reference 1.7",
+                                     line_of(referenced, "reference = 1.7"))),
+            std::string::npos)
+      << listing;
+}
+
+TEST(MakePlan, AComputedReferenceAboveItsDimensionLimitIsAnErrorAtTheKey) {
+  const std::string t =
+      replace(referenced, "dimension = 2\nreference", "dimension = 11\nreference");
+  expect_plan_error(t, line_of(t, "reference = \"computed\""), "integrand[2].reference",
+                    "\"computed\" is for s ≤ 10");
+}
+
+}  // namespace
+}  // namespace quadmc

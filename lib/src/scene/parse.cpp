@@ -33,8 +33,8 @@ namespace {
 // family's parameters (catalogue_entry's keys).
 constexpr std::array<std::string_view, 8> top_level_keys{
     "name", "description", "seed", "threads", "integrand", "method", "budget", "output"};
-constexpr std::array<std::string_view, 5> integrand_keys{"family", "name", "dimension",
-                                                         "dimensions", "ensemble"};
+constexpr std::array<std::string_view, 7> integrand_keys{
+    "family", "name", "dimension", "dimensions", "ensemble", "reference", "reference_uncertainty"};
 // The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
 constexpr std::array<std::string_view, 7> common_method_keys{
     "name", "label", "integrands", "repetitions", "control", "tolerances", "tolerance_kind"};
@@ -62,6 +62,47 @@ using scene_reader = scene_toml::reader;
 
 // ---------------------------------------------------------------------------------------------
 // [[integrand]]
+
+// `reference` and `reference_uncertainty` (docs/theory.md#references-without-a-closed-form): a
+// value to measure the errors from instead of the family's exact one, or "computed". Refused for
+// an ensemble, whose reference is the mean of its K instances' exact integrals: one number given
+// for K different integrals would measure K − 1 of them against the wrong value.
+void parse_reference(const scene_reader& r, const toml::table& t, const std::string& prefix,
+                     integrand_spec& spec) {
+  const auto reference = r.find(t, "reference", prefix);
+  const auto uncertainty = r.find(t, "reference_uncertainty", prefix);
+  if (!reference) {
+    if (uncertainty) {
+      r.fail(*uncertainty, "only with a number `reference` (the value it is the uncertainty of)");
+    }
+    return;
+  }
+  const std::string_view what = "a finite number or \"computed\"";
+  if (reference->value->is_string()) {
+    if (r.string(*reference, what) != "computed") r.expected(*reference, what);
+    spec.reference = reference_source::computed;
+    if (uncertainty) {
+      r.fail(*uncertainty,
+             "not with reference = \"computed\" (the computation states its own uncertainty)");
+    }
+  } else {
+    spec.reference_value = r.number(*reference, what);
+    spec.reference = reference_source::given;
+    if (uncertainty) {
+      const std::string_view absolute =
+          "a finite number ≥ 0 (the reference's absolute uncertainty)";
+      const double u = r.number(*uncertainty, absolute);
+      if (!(u >= 0.0)) r.expected(*uncertainty, absolute);
+      spec.reference_uncertainty = u;
+    }
+  }
+  if (spec.ensemble > 1) {
+    r.fail(*reference,
+           fmt::format("only for a single integrand, not with ensemble = {}: an ensemble's "
+                       "reference is the mean of its instances' exact integrals",
+                       spec.ensemble));
+  }
+}
 
 // `taken` maps each display name in `out` to its index there.
 void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t index,
@@ -114,6 +155,8 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     base.ensemble = r.count(*e, 1, 1'000'000, "an ensemble size between 1 and 1000000");
     base.ensemble_given = true;
   }
+
+  parse_reference(r, t, prefix, base);
 
   // Every other key is a family parameter; the catalogue decides which ones the family takes.
   for (auto&& [key, value] : t) {

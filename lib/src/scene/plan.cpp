@@ -460,7 +460,75 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
   }
 }
 
+// A given or computed reference replaces the exact value in mean_reference (the parser refused
+// both for an ensemble, so the integrand has one instance); a note says the exact value exists.
+void resolve_references(plan& p) {
+  const scene& sc = p.source;
+  p.references.assign(sc.integrands.size(), plan_reference{});
+  for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
+    const integrand_spec& f = sc.integrands[fi];
+    plan_reference& ref = p.references[fi];
+    ref.source = f.reference;
+    ref.value = p.mean_reference[fi];
+    if (f.reference == reference_source::exact) continue;
+    const std::string prefix = fmt::format("integrand[{}].reference", f.table_index);
+    const source_location where = key_location(f.keys, "reference", f.table);
+    const plan_instance* inst = nullptr;
+    for (const auto& i : p.instances) {
+      if (i.integrand == fi) inst = &i;
+    }
+    if (inst == nullptr || f.ensemble != 1) {
+      throw scene_error(where, prefix, "only for a single integrand (ensemble = 1)");
+    }
+    const integrand_info& info = inst->function.info();
+    if (f.reference == reference_source::given) {
+      ref.value = f.reference_value;
+      ref.uncertainty = f.reference_uncertainty;
+    } else {
+      if (f.dimension > max_computed_reference_dimension) {
+        throw scene_error(where, prefix,
+                          fmt::format("\"computed\" is for s ≤ {} (Genz–Malik needs 2^s + 2s² + "
+                                      "2s + 1 evaluations per region), but {} has s = {}",
+                                      max_computed_reference_dimension, f.name, f.dimension));
+      }
+      try {
+        ref.computed = compute_reference(inst->function);
+      } catch (const std::exception& e) {
+        throw scene_error(
+            where, prefix,
+            fmt::format("computing the reference of {} failed: {}", f.name, e.what()));
+      }
+      if (!std::isfinite(ref.computed->value) || !std::isfinite(ref.computed->uncertainty)) {
+        throw scene_error(where, prefix,
+                          fmt::format("the computed reference of {} is {} ± {}: not finite", f.name,
+                                      ref.computed->value, ref.computed->uncertainty));
+      }
+      ref.value = ref.computed->value;
+      ref.uncertainty = ref.computed->uncertainty;
+    }
+    p.mean_reference[fi] = ref.value;
+    p.notes.push_back(
+        fmt::format("{}:{}: integrand[{}] ({}): errors are measured from the {} reference {:.17g} "
+                    "± {:.2g}; the family's exact value {:.17g} ({}) exists and is not used",
+                    sc.file, where.line, f.table_index, f.name,
+                    f.reference == reference_source::given ? "given" : "computed", ref.value,
+                    ref.uncertainty, info.exact, info.reference));
+  }
+}
+
 }  // namespace
+
+std::string plan_reference::describe() const {
+  switch (source) {
+    case reference_source::exact:
+      return {};
+    case reference_source::given:
+      return fmt::format("given, uncertainty {:.2g}", uncertainty);
+    case reference_source::computed:
+      return "computed: " + (computed ? computed->describe() : std::string("?"));
+  }
+  return {};
+}
 
 const plan_instance& plan::instance_of(const plan_cell& c) const {
   for (const auto& i : instances) {
@@ -504,6 +572,7 @@ plan make_plan(const scene& input) {
                                     f.ensemble, f.name));
     }
   }
+  resolve_references(p);
   for (const auto& inst : p.instances) {
     const integrand_spec& f = sc.integrands[inst.integrand];
     if (inst.instance == 1 && inst.drawn.empty()) {
@@ -629,6 +698,12 @@ std::string format_plan(const plan& p) {
     std::string head = fmt::format("  {} (family {}, s = {}", f.name, f.family, f.dimension);
     if (f.ensemble > 1) head += fmt::format(", instance {} of {}", inst.instance + 1, f.ensemble);
     line(head + fmt::format(", exact = {:.17g})", info.exact));
+    if (inst.integrand < p.references.size() &&
+        p.references[inst.integrand].source != reference_source::exact) {
+      const plan_reference& ref = p.references[inst.integrand];
+      line(fmt::format("    reference = {:.17g} ± {:.2g} ({}); the errors are measured from it",
+                       ref.value, ref.uncertainty, ref.describe()));
+    }
     for (const auto& [key, values] : inst.drawn) {
       line(fmt::format("    {} = [{:.17g}]  (drawn from seed {:#018x})", key,
                        fmt::join(values, ", "), inst.seed));

@@ -90,7 +90,11 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
   const integrand_info& info = inst.function.info();
   require(p.mean_reference.size() == p.source.integrands.size(), "plan.mean_reference",
           p.mean_reference.size(), "one reference per integrand (a plan from make_plan)");
-  const double shift = p.mean_reference[cell.integrand] - info.exact;
+  // An ensemble's instances are shifted onto their mean; a given or computed reference (one
+  // instance) shifts nothing: the errors are the raw estimates' distances from it.
+  const double shift = ispec.reference == reference_source::exact
+                           ? p.mean_reference[cell.integrand] - info.exact
+                           : 0.0;
   const bool to_tolerance = !std::isnan(cell.tolerance);
   const cell_size size = cell.size();
   // The absolute target: a relative tolerance is a fraction of this instance's |I| (the plan
@@ -195,6 +199,9 @@ void run_assembly::add(std::size_t index, cell_run run) {
     series.theory = mspec.configured->theory(
         integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
     series.reference = p.mean_reference[cell.integrand];
+    if (cell.integrand < p.references.size()) {
+      series.reference_uncertainty = p.references[cell.integrand].uncertainty;
+    }
     series.relative_tolerance = mspec.relative_tolerance;
     series.errors = mspec.configured->error_bars();
     series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};

@@ -32,6 +32,12 @@
 //                             errors are averaged over the ensemble. Parameters given explicitly
 //                             are shared by every instance; the others are drawn per instance.
 //                             make_plan bounds Σ K (65536) and Σ K·s (2^20) over the scene.
+//   reference = 0.7468        the value every error is measured from instead of the family's
+//                             exact one (a finite number), or "computed": make_plan computes it
+//                             (scene/computed_reference.hpp, s ≤ 10). Not with ensemble > 1.
+//   reference_uncertainty = 1e-12  with a number `reference` only: its absolute uncertainty
+//                             (≥ 0, default 0). Errors below 10 times it are floor points
+//                             (docs/theory.md#references-without-a-closed-form).
 //   a = [1.0, 2.0, 0.5]       any other key is a family parameter, passed to the catalogue:
 //   u = [0.3, 0.6, 0.45]      a number → scalar, an array of numbers → vector (length s where
 //   cut = [1, 2]              the family says so). Omitted ones are drawn from the seed and the

@@ -28,6 +28,7 @@
 
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/catalogue.hpp"
+#include "quadmc/scene/computed_reference.hpp"
 #include "quadmc/scene/scene.hpp"
 
 #include <array>
@@ -36,6 +37,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,12 +103,27 @@ struct plan_skip {
   std::string reason;  // e.g. "same grid as N = 64 (n = 2 per axis, 6561 evaluations)"
 };
 
+// Where one integrand's errors are measured from (integrand_spec::reference): the family's exact
+// value, or a given or computed one with its absolute uncertainty, below 10 times which an error
+// is a floor point (docs/theory.md#references-without-a-closed-form).
+struct plan_reference {
+  reference_source source = reference_source::exact;
+  double value = std::numeric_limits<double>::quiet_NaN();  // plan::mean_reference's entry
+  double uncertainty = 0.0;                                 // 0 for the exact value
+  std::optional<computed_reference> computed;               // source = computed: how
+  // "given, ± 1e-12" or "computed: tanh-sinh (Boost.Math), …"; empty for the exact value.
+  std::string describe() const;
+};
+
 struct plan {
   scene source;  // the scene it was made from, with every integrand's dimension resolved
   std::vector<plan_instance> instances;  // ordered by (integrand, instance)
   // Per integrand of the scene: Ī, the mean of its instances' exact integrals (the series'
   // reference; run.hpp shifts each instance's estimates by Ī − I_k).
   std::vector<double> mean_reference;
+  // Per integrand: where mean_reference's entry comes from (a given or computed reference
+  // replaces the exact value there, and the runner then shifts nothing).
+  std::vector<plan_reference> references;
   std::vector<plan_cell> cells;  // ordered by (integrand, instance, method, N)
   std::vector<plan_skip> skips;
   std::vector<std::string> notes;       // ignored keys and other remarks

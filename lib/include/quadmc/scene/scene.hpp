@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -23,6 +24,11 @@ namespace quadmc {
 // Positions of the keys of one table, by key name, for messages raised after parsing.
 using key_locations = std::map<std::string, source_location, std::less<>>;
 
+// Where an integrand's errors are measured from (docs/theory.md#references-without-a-closed-form):
+// the family's exact value, a value the scene gives (`reference = 1.23`, with
+// `reference_uncertainty`), or one make_plan computes (`reference = "computed"`).
+enum class reference_source { exact, given, computed };
+
 // One integrand of the scene. A [[integrand]] table with `dimensions = [1, 2, 4]` becomes one
 // integrand_spec per s, all with the same table_index.
 struct integrand_spec {
@@ -32,6 +38,10 @@ struct integrand_spec {
   std::size_t dimension = 1;  // 0 after parsing = the family's default; make_plan resolves it
   std::size_t ensemble = 1;   // K instances drawn from the scene seed, results averaged
   bool ensemble_given = false;
+  reference_source reference = reference_source::exact;
+  // reference_source::given: the value and its absolute uncertainty (≥ 0) as the file gives them.
+  double reference_value = std::numeric_limits<double>::quiet_NaN();
+  double reference_uncertainty = 0.0;
   // Family parameters passed through to the catalogue: numbers → scalars, arrays → vectors.
   std::map<std::string, double, std::less<>> scalars;
   std::map<std::string, std::vector<double>, std::less<>> vectors;
