@@ -130,6 +130,22 @@ TEST(BadInputTest, UnknownFamily) {
       2, "integrand[1].family", "expo");
 }
 
+// reference / reference_uncertainty (docs/theory.md#references-without-a-closed-form): each
+// mistake is one line at its key, from the command as from the parser.
+TEST(BadInputTest, BadReferenceKeys) {
+  const std::string head = "[[integrand]]\nfamily = \"exp\"\n";
+  const std::string tail = "\n[[method]]\nname = \"simpson\"\n\n[budget]\nN = [8, 16]\n";
+  expect_scene_error(head + "reference = \"exactly\"\n" + tail, 3, "integrand[1].reference",
+                     "expected a finite number or \"computed\", got \"exactly\"");
+  expect_scene_error(head + "reference = -inf\n" + tail, 3, "integrand[1].reference", "-inf");
+  expect_scene_error(head + "reference = 1.5\nreference_uncertainty = -0.1\n" + tail, 4,
+                     "integrand[1].reference_uncertainty", "expected a finite number ≥ 0");
+  expect_scene_error(head + "reference_uncertainty = 0.1\n" + tail, 3,
+                     "integrand[1].reference_uncertainty", "only with a number `reference`");
+  expect_scene_error(head + "reference = 1.5\nensemble = 3\n" + tail, 3, "integrand[1].reference",
+                     "not with ensemble = 3");
+}
+
 TEST(BadInputTest, NonexistentSceneFile) {
   // CLI11's ExistingFile check answers before quadmc does (its own message and exit code).
   scratch_folder dir;

@@ -99,5 +99,52 @@ TEST(LibraryRun, RunSceneAndWriteResultsWriteWhatTheCommandWrites) {
             page_without_numbers(dir / "command" / "README.md"));
 }
 
+// A given and a computed reference: `quadmc plan` states each with its uncertainty and how it
+// was obtained, the results page lists both above the tables, and the exact value's integrand
+// is not listed.
+TEST(LibraryRun, GivenAndComputedReferencesAreStatedInThePlanAndOnThePage) {
+  scratch_folder dir;
+  write_text(dir / "refs.toml", R"(name = "refs"
+threads = 1
+[[integrand]]
+family = "exp"
+reference = 1.71828
+reference_uncertainty = 1e-5
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+reference = "computed"
+[[integrand]]
+family = "sin"
+[[method]]
+name = "simpson"
+[budget]
+N = [8, 64, 512]
+timing_min_seconds = 0
+[output]
+plots = false
+)");
+  const command_result plan = run_quadmc(dir, {"plan", (dir / "refs.toml").string()});
+  ASSERT_EQ(plan.exit_status, 0) << describe(plan);
+  EXPECT_NE(plan.out.find("reference = 1.71828 ± 1e-05 (given, uncertainty 1e-05)"),
+            std::string::npos)
+      << plan.out;
+  EXPECT_NE(plan.out.find("(computed: Genz–Malik h-adaptive cubature, relative tolerance 1e-12, "),
+            std::string::npos)
+      << plan.out;
+  EXPECT_NE(plan.out.find("exists and is not used"), std::string::npos) << plan.out;
+
+  const command_result r =
+      run_quadmc(dir, {"run", (dir / "refs.toml").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  const std::string page = read_text(dir / "out" / "README.md");
+  EXPECT_NE(page.find("References without a closed form"), std::string::npos) << page;
+  EXPECT_NE(page.find("- exp: reference = 1.71828 ± 1e-05 (given, uncertainty 1e-05)"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("- genz_gaussian_s2: reference = "), std::string::npos) << page;
+  EXPECT_EQ(page.find("- sin: reference"), std::string::npos) << page;
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

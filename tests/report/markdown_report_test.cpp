@@ -375,6 +375,21 @@ TEST(MarkdownReport, HeaderNamesWhatMadeThePage) {
   EXPECT_EQ(bare.find("SIMD levels available"), std::string::npos) << bare;
 }
 
+TEST(MarkdownReport, ReferencesThatAreNotExactAreListedBeforeTheTables) {
+  run_info info;
+  info.scene = "refs";
+  const auto tables = markdown_sample_tables();
+  const std::string without = render_results_markdown(info, tables);
+  EXPECT_EQ(without.find("References without a closed form"), std::string::npos) << without;
+  info.references = {"g: reference = 0.5 ± 1e-09 (given, uncertainty 1e-09)"};
+  const std::string page = render_results_markdown(info, tables);
+  const auto at = page.find("- g: reference = 0.5 ± 1e-09 (given, uncertainty 1e-09)\n");
+  ASSERT_NE(at, std::string::npos) << page;
+  EXPECT_LT(page.find("References without a closed form"), at);
+  EXPECT_NE(page.find("errors below 10 times its uncertainty are floor points"), std::string::npos);
+  EXPECT_LT(at, page.find("## Findings"));
+}
+
 TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   run_info info;
   info.scene = "default";

@@ -395,6 +395,16 @@ std::string render_results_markdown(const run_info& info,
       "the scene's `timing_min_seconds` had passed, the median over batches of seconds per call, "
       "with the spread (max − min)/median of the batches; a call that alone took the minimum is "
       "timed once. Work-precision figures use `s per estimate`.\n\n";
+  if (!info.references.empty()) {
+    // Not folded: every error of these integrands depends on the reference, so the reader sees
+    // which ones before any table (docs/theory.md#references-without-a-closed-form).
+    out +=
+        "References without a closed form: the errors of these integrands are measured from a "
+        "given or computed reference, not the family's exact value; errors below 10 times its "
+        "uncertainty are floor points, not fitted.\n\n";
+    for (const std::string& r : info.references) out += fmt::format("- {}\n", r);
+    out += "\n";
+  }
   if (!info.skipped.empty()) {
     // Folded: a ladder in s = 8 skips dozens of repeated grids, and the list would push the
     // slope table off the first screen. GitHub renders <details> with Markdown inside.

@@ -40,6 +40,13 @@ run_info info_of(const scene_results& results, const results_options& options) {
   info.run_seconds = results.run.seconds;
   for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
   for (const auto& skip : results.run.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
+  for (std::size_t fi = 0; fi < p.references.size(); ++fi) {
+    const plan_reference& ref = p.references[fi];
+    if (ref.source == reference_source::exact) continue;
+    info.references.push_back(fmt::format("{}: reference = {:.17g} ± {:.2g} ({})",
+                                          p.source.integrands[fi].name, ref.value, ref.uncertainty,
+                                          ref.describe()));
+  }
   info.csv = p.source.output.csv;
   info.plots = draws_plots(p, options);
   return info;

@@ -30,6 +30,9 @@ struct run_info {
   provenance build;                  // version, commit, compiler, SIMD levels (also meta.csv)
   double run_seconds = 0.0;          // wall time of the whole run
   std::vector<std::string> skipped;  // the plan's skipped cells, with their reason
+  // Integrands whose errors are measured from a given or computed reference instead of an exact
+  // value, each "name: reference = v ± u (how)" (scene/plan.hpp, plan_reference); empty: none.
+  std::vector<std::string> references;
   // What else the folder holds ([output] of the scene): the page links only files that exist.
   bool csv = true;    // convergence.csv and slopes.csv
   bool plots = true;  // the error and work-precision plots
