@@ -437,6 +437,17 @@ TEST(SceneErrors, BadReferenceKeysAreOneLineErrorsAtTheKey) {
       {"reference = \"computed\"\nensemble = 2", "reference", "integrand[1].reference",
        "not with ensemble = 2"},
   };
+  // A number for a `dimensions` list would be one value for several integrals; "computed" is
+  // computed per s.
+  const std::string listed =
+      replace(valid, "dimension = 2", "dimensions = [2, 3]\nreference = 0.5");
+  const std::string m =
+      expect_error(listed, line_of(listed, "reference"), "integrand[1].reference");
+  EXPECT_NE(m.find("not one for each of the 2 dimensions"), std::string::npos) << m;
+  const scene sc =
+      parse(replace(valid, "dimension = 2", "dimensions = [2, 3]\nreference = \"computed\""));
+  ASSERT_EQ(sc.integrands.size(), 2u);
+  EXPECT_EQ(sc.integrands[1].reference, reference_source::computed);
   for (const bad& b : cases) {
     const std::string t =
         replace(valid, "dimension = 2", std::string("dimension = 2\n") + std::string(b.added));

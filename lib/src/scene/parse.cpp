@@ -67,8 +67,9 @@ using scene_reader = scene_toml::reader;
 // value to measure the errors from instead of the family's exact one, or "computed". Refused for
 // an ensemble, whose reference is the mean of its K instances' exact integrals: one number given
 // for K different integrals would measure K − 1 of them against the wrong value.
+// A number is one integral, so it is refused too for a `dimensions` list of several s.
 void parse_reference(const scene_reader& r, const toml::table& t, const std::string& prefix,
-                     integrand_spec& spec) {
+                     std::size_t dimension_count, integrand_spec& spec) {
   const auto reference = r.find(t, "reference", prefix);
   const auto uncertainty = r.find(t, "reference_uncertainty", prefix);
   if (!reference) {
@@ -94,6 +95,12 @@ void parse_reference(const scene_reader& r, const toml::table& t, const std::str
       const double u = r.number(*uncertainty, absolute);
       if (!(u >= 0.0)) r.expected(*uncertainty, absolute);
       spec.reference_uncertainty = u;
+    }
+    if (dimension_count > 1) {
+      r.fail(*reference,
+             fmt::format("a number is one integral, not one for each of the {} dimensions "
+                         "listed; use \"computed\" or one [[integrand]] table per s",
+                         dimension_count));
     }
   }
   if (spec.ensemble > 1) {
@@ -156,7 +163,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     base.ensemble_given = true;
   }
 
-  parse_reference(r, t, prefix, base);
+  parse_reference(r, t, prefix, dimensions.size(), base);
 
   // Every other key is a family parameter; the catalogue decides which ones the family takes.
   for (auto&& [key, value] : t) {

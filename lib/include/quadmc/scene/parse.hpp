@@ -34,7 +34,8 @@
 //                             make_plan bounds Σ K (65536) and Σ K·s (2^20) over the scene.
 //   reference = 0.7468        the value every error is measured from instead of the family's
 //                             exact one (a finite number), or "computed": make_plan computes it
-//                             (scene/computed_reference.hpp, s ≤ 10). Not with ensemble > 1.
+//                             (scene/computed_reference.hpp, s ≤ 10). Not with ensemble > 1,
+//                             nor as a number with a `dimensions` list of several s.
 //   reference_uncertainty = 1e-12  with a number `reference` only: its absolute uncertainty
 //                             (≥ 0, default 0). Errors below 10 times it are floor points
 //                             (docs/theory.md#references-without-a-closed-form).
