@@ -82,7 +82,10 @@ class external_method final : public method {
   std::string explicit_sizes_key() const override { return "points"; }
 
   theoretical_rate theory(const integrand_class&) const override {
-    return {std::nullopt, "points from a file: no rate is known for them", {}};
+    return {std::nullopt,
+            "points from a file: no rate is known for them; the replicates' spread gives the "
+            "error bars",
+            "docs/theory.md#replicate-error-bars"};
   }
 
   bool shares_chunks() const override {
