@@ -143,7 +143,7 @@ TEST(ExternalMethods, RuleOfATensorSimpsonGridGivesSimpsonWithinTheRoundingBound
 
   // Bound: both are vol·Σ w_i f(x_i) over the same doubles w_i, x_i (fmt's "{}" reads back
   // bitwise) and the same f values. Any order of summing N rounded products errs by at most
-  // (N − 1)·u·Σ|w f| plus u·Σ|w f| for the products (u = 2^−53, first order; Higham 2002 §4.2),
+  // (N − 1)·u·Σ|w f| plus u·Σ|w f| for the products (u = 2^−53, first order; [Higham 2002, §4.2]),
   // so two orders differ by at most 2·N·u·vol·Σ|w_i f(x_i)|.
   const box& domain = f.info().domain;
   std::vector<double> mapped = x;
