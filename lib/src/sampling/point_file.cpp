@@ -40,9 +40,10 @@ namespace fs = std::filesystem;
 std::string read_bytes(const fs::path& file) {
   std::error_code ec;
   const fs::file_status status = fs::status(file, ec);
-  if (ec || !fs::exists(status)) {
+  if (status.type() == fs::file_type::not_found) {
     fail_file(file, "missing", "an existing file (is the path template right?)");
   }
+  if (ec) fail_file(file, "unreadable", fmt::format("a readable file ({})", ec.message()));
   if (!fs::is_regular_file(status)) fail_file(file, "not a regular file", "a regular file");
   const std::uintmax_t bytes = fs::file_size(file, ec);
   if (ec) fail_file(file, "unreadable", fmt::format("a readable file ({})", ec.message()));
