@@ -248,5 +248,21 @@ TEST(BadInputTest, CellsTheRunWouldRefuseAreRefusedAtPlanTime) {
       4, "integrand[1].ensemble", "at most 65536");
 }
 
+TEST(BadInputTest, ExternalPointFilesAreCheckedAtPlanTime) {
+  // A relative path is read from the scene file's folder; none of its files exists.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"external_points\"\n"
+      "path = \"pts/{N}_{r}.csv\"\nrepetitions = 1\n[budget]\nN = [8]\n",
+      5, "method[1].path", "pts/8_0.csv = missing");
+  // A coordinate outside [0, 1) in a file elsewhere (absolute path): its row and column.
+  scratch_folder points;
+  write_text(points / "4_0.csv", "x1\n0.125\n0.5\n1.5\n0.75\n");
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"external_points\"\n"
+      "path = \"" +
+          (points / "{N}_{r}.csv").string() + "\"\nrepetitions = 1\n[budget]\nN = [4]\n",
+      5, "method[1].path", "4_0.csv row 3 column 1 = 1.5");
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

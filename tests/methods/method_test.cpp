@@ -1,6 +1,7 @@
 // Tests of method.hpp's shares_chunks: for every registered method, under every control it
 // supports and every option value that changes its kernel (the rules' accumulators, the sparse
-// grids' rules, the quasi-Monte Carlo randomizations, importance's warps and point sets), one cell
+// grids' rules, the quasi-Monte Carlo randomizations, importance's warps and point sets; the
+// external methods on files written here), one cell
 // is run by two "processes" (threads of this test, each with its own exchange of an in-process
 // group) and once alone. Both processes must return the lone run's bits, and the flag must say
 // what happened: a method that shares chunks had every reduction exchanged (none ran whole) and
@@ -14,12 +15,16 @@
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
 #include "support/in_process_group.hpp"
+#include "support/temporary_directory.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <bit>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <span>
 #include <string>
@@ -54,6 +59,25 @@ struct candidate {
 // integrand for the rendering estimators.
 constexpr candidate candidates[] = {{"genz_gaussian", 2}, {"exp", 1}, {"irradiance_area", 2}};
 
+// The path template of the files the external methods read for the cells below (N = 2^16 points
+// of the first candidate, s = 2, repetition 0): a 2D grid of cell centres, weights 1/N for the
+// rule. Written once per test program into a folder removed when it ends.
+std::filesystem::path external_files(bool weighted) {
+  static const test_support::temporary_directory dir(
+      "method_test_external", test_support::temporary_directory::start::empty);
+  const std::filesystem::path file = dir.path / (weighted ? "rule_65536_0.csv" : "65536_0.csv");
+  if (!std::filesystem::exists(file)) {
+    std::string text;
+    for (std::uint64_t i = 0; i < 65536; ++i) {
+      text += fmt::format("{},{}{}\n", (static_cast<double>(i % 256) + 0.5) / 256,
+                          (static_cast<double>(i / 256) + 0.5) / 256,
+                          weighted ? fmt::format(",{}", 1.0 / 65536) : std::string());
+    }
+    std::ofstream(file, std::ios::binary) << text;
+  }
+  return dir.path / (weighted ? "rule_{N}_{r}.csv" : "{N}_{r}.csv");
+}
+
 // Every option value that selects another kernel path, per method; {} is the defaults.
 std::vector<option_table> configurations(std::string_view name) {
   const std::string n(name);
@@ -86,6 +110,9 @@ std::vector<option_table> configurations(std::string_view name) {
             {{"warp", "exponential"}, {"point_set", "sobol"}}};
   }
   if (n.rfind("irradiance_", 0) == 0) return {{}, {{"point_set", "sobol"}}};
+  if (n == "external_points" || n == "external_rule") {
+    return {{{"path", external_files(n == "external_rule").string()}}};
+  }
   return {{}};
 }
 

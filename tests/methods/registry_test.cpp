@@ -51,6 +51,8 @@ constexpr named_method expected_methods[] = {
     {"sobol", random_kind},
     {"halton", random_kind},
     {"lattice", random_kind},
+    {"external_points", random_kind},
+    {"external_rule", random_kind},
 };
 constexpr std::string_view expected_peers[] = {
     "peer_hcubature", "peer_pcubature",       "peer_gsl_plain",          "peer_gsl_miser",

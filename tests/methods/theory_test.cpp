@@ -12,9 +12,11 @@ namespace {
 constexpr double tight = 1e-15;
 using test_support::nan;
 
-// Options a method needs to exist at all (importance has no default warp).
+// Options a method needs to exist at all (importance has no default warp, the external methods
+// no default file; a file is read only by a run).
 option_table required_options(std::string_view method) {
   if (method == "importance") return {{"warp", "power"}};
+  if (method == "external_points" || method == "external_rule") return {{"path", "{N}_{r}.csv"}};
   return {};
 }
 

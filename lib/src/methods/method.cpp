@@ -33,6 +33,8 @@ std::vector<sizing> method::explicit_sizes(std::size_t) const {
   return {};
 }
 
+void method::check_inputs(std::size_t, const cell_size&, std::uint64_t) const {}
+
 void method::measure_points(const method_cell&, const run_context&, repetition_result&) const {}
 
 double method::error_envelope(const integrand_info&, const cell_size&) const {

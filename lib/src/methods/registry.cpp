@@ -22,6 +22,7 @@ std::span<const method_descriptor> sparse_grid_methods() noexcept;
 std::span<const method_descriptor> adaptive_methods() noexcept;
 std::span<const method_descriptor> vegas_methods() noexcept;
 std::span<const method_descriptor> qmc_methods() noexcept;
+std::span<const method_descriptor> external_methods() noexcept;
 }  // namespace quadmc::methods
 
 namespace quadmc {
@@ -32,6 +33,7 @@ constexpr std::span<const method_descriptor> (*families[])() noexcept = {
     methods::tensor_rule_methods, methods::romberg_methods,    methods::point_set_methods,
     methods::importance_methods,  methods::irradiance_methods, methods::sparse_grid_methods,
     methods::adaptive_methods,    methods::vegas_methods,      methods::qmc_methods,
+    methods::external_methods,
 };
 
 std::vector<const method_descriptor*>& all() {

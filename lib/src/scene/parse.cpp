@@ -234,6 +234,9 @@ class toml_option_reader final : public option_reader {
       : r_(&r), t_(&t), prefix_(std::move(prefix)) {}
 
   std::string path() const override { return prefix_; }
+  std::filesystem::path folder() const override {
+    return std::filesystem::path(r_->file()).parent_path();
+  }
   bool has(std::string_view key) const override { return t_->contains(key); }
 
   std::optional<std::uint64_t> count(std::string_view key, std::uint64_t lo, std::uint64_t hi,

@@ -394,6 +394,16 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
       return;
     }
     check_cell(sc, f, method, rule, scale, N, c);
+    // The files a method reads (external points) are read and checked now, before any work.
+    try {
+      m.check_inputs(s, c.size(), c.repetitions);
+    } catch (const invalid_argument& e) {
+      // At the `path` key the files come from, where the method has one.
+      const bool at_path = method.keys.contains("path");
+      throw scene_error(key_location(method.keys, "path", method.table),
+                        fmt::format("method[{}]{}", method.table_index, at_path ? ".path" : ""),
+                        e.what());
+    }
     kept.emplace_back(N, c);
     cells.push_back(c);
   };

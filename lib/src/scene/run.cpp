@@ -122,7 +122,7 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
     const auto t0 = clock::now();
     repetition_result result;
     try {
-      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream, r};
       result = mspec.configured->run(work, context);
     } catch (const std::exception& e) {
       throw run_error(fmt::format("{}: {}", where(), e.what()));
@@ -130,7 +130,7 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
     result.seconds = seconds_since(t0);
     if (to_tolerance) result.target = tolerance;
     try {
-      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream, r};
       mspec.configured->measure_points(work, context, result);
     } catch (const std::exception& e) {
       throw run_error(fmt::format("{}: {}", where(), e.what()));
@@ -155,7 +155,7 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
     // Stable timing, apart from the statistics: repetition 1's call again (run.hpp), on the
     // first instance of an ensemble (cells come in instance order, so it is the first seen).
     if (r == 0 && cell.instance == 0) {
-      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream};
+      const method_cell work{inst.function, inst.params, size, cell.control, tolerance, stream, r};
       try {
         out.timing = time_cell([&] { (void)mspec.configured->run(work, context); }, result.seconds,
                                timing_min_seconds);

@@ -83,6 +83,7 @@ struct method_cell {
   cell_control control = cell_control::fixed_size;
   double tolerance = std::numeric_limits<double>::quiet_NaN();  // control = tolerance only
   std::uint64_t stream = 0;
+  std::uint64_t repetition = 0;  // r, 0 … repetitions − 1 (the realization of a file's points)
 };
 
 struct method_descriptor;
@@ -152,6 +153,11 @@ class method {
   // tests/methods/method_test.cpp runs every registered method under a two-process exchange and
   // counts each process's evaluations, so a declaration that disagrees with its kernel fails there.
   virtual bool shares_chunks() const { return false; }
+
+  // Checks, before any work, every input a cell of this size in s dimensions would read over
+  // its repetitions (the point files of methods/external.cpp); throws invalid_argument naming
+  // the file. The plan calls it for every cell; by default there is nothing to check.
+  virtual void check_inputs(std::size_t s, const cell_size& size, std::uint64_t repetitions) const;
 
   // One repetition of one cell. Throws what the kernels throw (invalid_argument,
   // non_finite_value naming the point).

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <span>
@@ -32,6 +33,9 @@ class option_reader {
   // The dotted path of this table in messages, e.g. "method[2]" or "method[2].warp".
   virtual std::string path() const = 0;
   virtual bool has(std::string_view key) const = 0;
+  // The folder relative file paths of the table are read from (the scene file's); empty: the
+  // working directory.
+  virtual std::filesystem::path folder() const { return {}; }
 
   virtual std::optional<std::uint64_t> count(std::string_view key, std::uint64_t lo,
                                              std::uint64_t hi, std::string_view what) = 0;
