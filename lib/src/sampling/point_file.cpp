@@ -94,6 +94,16 @@ void check_shape(const fs::path& file, std::uint64_t n, std::size_t c, point_fil
   }
 }
 
+// The data of a checked shape, its rows still to be stored (store): s from the columns c.
+point_file_data empty_data(std::uint64_t n, std::size_t c, point_file_columns columns) {
+  point_file_data out;
+  out.s = c - (columns == point_file_columns::points_and_weights ? 1 : 0);
+  out.n = n;
+  out.x.reserve(n * out.s);
+  if (columns == point_file_columns::points_and_weights) out.w.reserve(n);
+  return out;
+}
+
 bool in_range(double v, point_file_columns columns) noexcept {
   return columns == point_file_columns::points ? v >= 0.0 && v < 1.0 : v >= 0.0 && v <= 1.0;
 }
@@ -162,11 +172,7 @@ point_file_data read_csv(const fs::path& file, const std::string& text, point_fi
   const std::size_t c = n == 0 ? 0 : fields_of(lines[first]).size();
   if (n == 0) fail_file(file, "no data rows", "at least 1 point");
   check_shape(file, n, c, columns, expected_n, expected_s);
-  point_file_data out;
-  out.s = c - (columns == point_file_columns::points_and_weights ? 1 : 0);
-  out.n = n;
-  out.x.reserve(n * out.s);
-  if (columns == point_file_columns::points_and_weights) out.w.reserve(n);
+  point_file_data out = empty_data(n, c, columns);
   for (std::uint64_t i = 0; i < n; ++i) {
     const std::vector<std::string_view> fields = fields_of(lines[first + i]);
     if (fields.size() != c) {
@@ -360,11 +366,7 @@ point_file_data read_npy(const fs::path& file, const std::string& bytes, point_f
         file, fmt::format("{} bytes of data", bytes.size() - data),
         fmt::format("{} × {} × {} = {} bytes for shape ({}, {})", n, c, item, n * c * item, n, c));
   }
-  point_file_data out;
-  out.s = c - (columns == point_file_columns::points_and_weights ? 1 : 0);
-  out.n = n;
-  out.x.reserve(n * out.s);
-  if (columns == point_file_columns::points_and_weights) out.w.reserve(n);
+  point_file_data out = empty_data(n, c, columns);
   for (std::uint64_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < c; ++j) {
       const std::size_t at = data + (i * c + j) * item;
