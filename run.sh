@@ -9,7 +9,8 @@
 #   ./run.sh sanitize   the same tests (the command's end-to-end runs included) under ASan + UBSan
 #   ./run.sh format     check that every C++ file is clang-format clean
 #   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
-#   ./run.sh consumer   install the package into a prefix and build an outside find_package user
+#   ./run.sh consumer   install the package into a prefix and build two outside find_package users
+#                       (tests/consumer/, bench/examples/own_integrand/)
 #   ./run.sh package    build the Debian package (cpack -G DEB) → build/package/deb/quadmc_*.deb
 #                       and check it extracted into a scratch root (tests/package/check_package.sh)
 #   ./run.sh deps       only install what is missing (idempotent: does nothing when all is present)
@@ -66,6 +67,10 @@ SANITIZE_PACKAGES=("${TEST_PACKAGES[@]}" clang libclang-rt-14-dev)
 # configures that preset: the library's packages, GoogleTest and CLI11 included.
 FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)
+# The outside projects built against what the test preset installs: the library's packages, Open
+# MPI (the installed quadmc::command links it where the test build found it, and quadmcConfig.cmake
+# then finds it again), and python3 for the check of bench/examples/own_integrand's results.
+CONSUMER_PACKAGES=("${LIB_PACKAGES[@]}" "${MPI_PACKAGES[@]}" python3)
 # The Debian package: the library and the command (no tests, no benchmarks), CPack's DEB generator
 # with dpkg-shlibdeps (dpkg-dev) and `file` to declare the shared libraries it needs, and the
 # plots, since its check runs the extracted command with plots on.
@@ -96,7 +101,7 @@ packages_of() {
     sanitize) printf '%s\n' "${SANITIZE_PACKAGES[@]}" ;;
     fuzz) printf '%s\n' "${FUZZ_PACKAGES[@]}" ;;
     format) printf '%s\n' "${FORMAT_PACKAGES[@]}" ;;
-    consumer) printf '%s\n' "${LIB_PACKAGES[@]}" ;;
+    consumer) printf '%s\n' "${CONSUMER_PACKAGES[@]}" ;;
     package) printf '%s\n' "${PACKAGE_PACKAGES[@]}" ;;
     *) echo "run.sh packages: unknown command '$1'; expected bench, benchmarks, test, sanitize, fuzz, format, consumer or package" >&2
        exit 2 ;;
@@ -173,6 +178,16 @@ case "${1:-}" in
       >/dev/null
     cmake --build build/consumer
     ./build/consumer/consumer
+    # The outside command of bench/examples/own_integrand/ (README "Your own points, rules and
+    # integrands"): built on quadmc::command, its scene run from its own folder, and its numbers
+    # checked against values derived independently (tests/consumer/check_own_integrand.py).
+    rm -rf build/own_integrand
+    cmake -S bench/examples/own_integrand -B build/own_integrand -G Ninja \
+      -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
+    cmake --build build/own_integrand
+    (root=$PWD && cd bench/examples/own_integrand &&
+       "$root/build/own_integrand/mybench" run my.toml --out "$root/build/own_integrand/results")
+    /usr/bin/python3 tests/consumer/check_own_integrand.py build/own_integrand/results
     ;;
   package)
     install_for package

@@ -12,7 +12,8 @@
 #    dpkg-shlibdeps from the binary when it and `file` are installed (dpkg-dev, file), else the
 #    Debian 12 list below;
 #  - Depends, what the installed CMake package files find_dependency(): the -dev packages of fmt,
-#    Boost, toml++ and Random123 (the library's headers include theirs);
+#    Boost, toml++ and Random123 (the library's headers include theirs) and CLI11 (quadmc::command
+#    links it);
 #  - Recommends, python3 and python3-matplotlib: only the plots need them (a run with plots on and
 #    no matplotlib is refused in one line before it computes anything; CSV and Markdown need
 #    neither).
@@ -58,7 +59,7 @@ else()
   set(quadmc_runtime_depends "libc6, libstdc++6, libgcc-s1, libfmt9, libtomlplusplus3, ")
 endif()
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "${quadmc_runtime_depends}libfmt-dev, libboost-dev (>= 1.74), libtomlplusplus-dev, librandom123-dev, libquadrule-dev, libquantlib0-dev")
+    "${quadmc_runtime_depends}libfmt-dev, libboost-dev (>= 1.74), libtomlplusplus-dev, librandom123-dev, libquadrule-dev, libquantlib0-dev, libcli11-dev")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3, python3-matplotlib")
 
 include(CPack)

@@ -1,4 +1,4 @@
-// The plot script of the build tree or of an installed quadmc (plot_script.hpp).
+// The folder of the drawing scripts, as command_main sets it (plot_script.hpp).
 #include "plot_script.hpp"
 
 #include "quadmc/report/results_folder.hpp"
@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 namespace quadmc_cli {
 
@@ -20,21 +21,27 @@ namespace fs = std::filesystem;
 using quadmc::child_output;
 using quadmc::subprocess_status;
 
+namespace {
+fs::path& script_folder() {
+  static fs::path folder;
+  return folder;
+}
+}  // namespace
+
+void set_script_folder(fs::path folder) {
+  script_folder() = std::move(folder);
+}
+
 fs::path plot_script_path() {
-  std::error_code ec;
-  const fs::path executable = fs::canonical("/proc/self/exe", ec);
-  if (ec) return QUADMC_SOURCE_PLOT_SCRIPT;
-  const fs::path build_folder = fs::canonical(QUADMC_BUILD_TREE_DIR, ec);
-  if (!ec && executable.parent_path() == build_folder) return QUADMC_SOURCE_PLOT_SCRIPT;
-  return (executable.parent_path() / QUADMC_INSTALLED_PLOT_SCRIPT).lexically_normal();
+  return script_folder() / "plot.py";
 }
 
 fs::path gallery_script_path() {
-  return plot_script_path().parent_path() / "gallery.py";
+  return script_folder() / "gallery.py";
 }
 
 fs::path render_script_path() {
-  return plot_script_path().parent_path() / "render.py";
+  return script_folder() / "render.py";
 }
 
 void check_plotting(const fs::path& script, std::string_view remedy) {

@@ -1,15 +1,11 @@
-// Where `quadmc run` finds bench/plot.py, the script that draws a results folder's SVGs.
+// Where the command finds its drawing scripts: bench/plot.py (a results folder's SVGs),
+// bench/gallery.py and bench/render.py, all in one folder that command_main sets from
+// command_options::scripts (quadmc/command.hpp) before any subcommand runs.
 //
-// Decided by where the running executable is, not by which file happens to exist:
-//  - the executable CMake built, in its build folder: the script in the source tree (an edit to
-//    bench/plot.py needs no rebuild);
-//  - any other place, i.e. an installed quadmc (cmake --install, the Debian package): the
-//    installed copy at the path the install rules put it, relative to the executable
-//    ("../share/quadmc/plot.py" beside bin/quadmc), so an installed tree works under any prefix
-//    (/usr, a home folder, a `dpkg -x` root) and never reads the source tree it was built from,
-//    which may be gone or at another version.
-// The executable is found through /proc/self/exe (Linux: the command is built for Debian); if that
-// cannot be read, the source tree's script, as the build tree would use.
+// The `quadmc` executable decides the folder by where it is (bench/quadmc/main.cpp): its build
+// folder → the source tree's bench/; anywhere else (an installed quadmc) → the installed copies
+// relative to the executable. A program built on quadmc::command gets the installed package's
+// folder from its CMake target (QUADMC_COMMAND_SCRIPTS).
 #pragma once
 
 #include <filesystem>
@@ -17,14 +13,11 @@
 
 namespace quadmc_cli {
 
-std::filesystem::path plot_script_path();
+void set_script_folder(std::filesystem::path folder);
 
-// bench/gallery.py, the script that draws `quadmc gallery`'s PNGs: beside plot.py, by the same
-// rule.
-std::filesystem::path gallery_script_path();
-
-// bench/render.py, the script that draws `quadmc render`'s PNGs: beside plot.py, by the same rule.
-std::filesystem::path render_script_path();
+std::filesystem::path plot_script_path();     // <folder>/plot.py
+std::filesystem::path gallery_script_path();  // <folder>/gallery.py
+std::filesystem::path render_script_path();   // <folder>/render.py
 
 // Checks before any computation that `script` exists and that Debian's python3 can import
 // matplotlib: a missing plotting stack found after the run would throw away the whole

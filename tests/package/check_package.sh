@@ -106,7 +106,7 @@ done <"$scratch/needed.txt"
 # quadmcConfig.cmake find_dependency()s these (lib/cmake/quadmcConfig.cmake.in); the installed
 # headers include theirs.
 for dev in libfmt-dev libboost-dev libtomlplusplus-dev librandom123-dev libquadrule-dev \
-  libquantlib0-dev; do
+  libquantlib0-dev libcli11-dev; do
   depends_on "$dev" || fail "Depends: expected $dev (quadmcConfig.cmake needs it), got: $(field Depends)"
 done
 recommends=$(field Recommends | tr ',' '\n' | sed 's/^[ \t]*//; s/[ \t(].*//')
@@ -129,6 +129,9 @@ expected_files=(
   usr/share/doc/quadmc/CHANGELOG.md
   usr/share/doc/quadmc/CITATION.cff
   usr/include/quadmc/methods/registry.hpp
+  usr/include/quadmc/command.hpp
+  "$libdir/libquadmc_command.a"
+  "$libdir/libquadmc_build_provenance.a"
   usr/include/quadmc/report/provenance.hpp
   "$libdir/cmake/quadmc/quadmcConfig.cmake"
   "$libdir/cmake/quadmc/quadmcConfigVersion.cmake"

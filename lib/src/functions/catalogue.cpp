@@ -17,6 +17,8 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
+#include <vector>
 
 namespace quadmc {
 namespace {
@@ -274,12 +276,34 @@ irradiance_setup make_irradiance_setup(const integrand_params& p) {
   return setup;
 }
 
+namespace {
+// The built-in families, then the added ones (add_integrands).
+std::vector<catalogue_entry>& all_entries() {
+  static std::vector<catalogue_entry> all(entries.begin(), entries.end());
+  return all;
+}
+}  // namespace
+
 std::span<const catalogue_entry> integrand_catalogue() {
-  return entries;
+  return all_entries();
+}
+
+void add_integrands(std::span<const catalogue_entry> families) {
+  for (const catalogue_entry& e : families) {
+    if (e.name.empty() || e.make == nullptr) {
+      throw std::logic_error(
+          fmt::format("add_integrands: the entry '{}' needs a name and a make", e.name));
+    }
+    if (find_family(e.name) != nullptr) {
+      throw std::logic_error(
+          fmt::format("add_integrands: integrand '{}' is already in the catalogue", e.name));
+    }
+    all_entries().push_back(e);
+  }
 }
 
 const catalogue_entry* find_family(std::string_view name) noexcept {
-  for (const auto& e : entries) {
+  for (const auto& e : all_entries()) {
     if (e.name == name) return &e;
   }
   return nullptr;
@@ -293,7 +317,7 @@ std::size_t resolved_dimension(const catalogue_entry& entry, std::size_t dimensi
 const catalogue_entry& find_catalogue_entry(std::string_view name) {
   if (const catalogue_entry* e = find_family(name)) return *e;
   std::vector<std::string_view> names;
-  for (const auto& e : entries) names.push_back(e.name);
+  for (const auto& e : all_entries()) names.push_back(e.name);
   throw invalid_argument("integrand", name, fmt::format("one of {}", fmt::join(names, ", ")));
 }
 

@@ -163,7 +163,16 @@ std::string instance_name(const integrand_spec& f, const plan_instance& inst) {
 void check_reference(const integrand_spec& f, const std::string& prefix,
                      const plan_instance& inst) {
   const integrand_info& info = inst.function.info();
-  if (!std::isfinite(info.exact)) {
+  // A given or computed reference replaces the exact value (resolve_references): an integrand
+  // without one (NaN, an outside project's family, functions/catalogue.hpp add_integrands) is
+  // measured from it.
+  if (std::isnan(info.exact) && f.reference == reference_source::exact) {
+    throw scene_error(f.table, prefix,
+                      fmt::format("{} has no exact integral ({}): give `reference = <number>` "
+                                  "with `reference_uncertainty`, or `reference = \"computed\"`",
+                                  instance_name(f, inst), info.reference));
+  }
+  if (!std::isfinite(info.exact) && !std::isnan(info.exact)) {
     throw scene_error(f.table, prefix,
                       fmt::format("exact integral is {} for {} ({}): the parameters give an "
                                   "integral beyond double's range; choose smaller ones",
@@ -342,11 +351,11 @@ void check_cell(const scene& sc, const integrand_spec& f, const method_spec& met
 // tolerance_kind = "relative" asks for tolerance·|I| of every instance: with I = 0 that target is
 // 0, which no estimate reaches, and with a non-finite I it is no number, so both are refused here
 // rather than run to the budget.
-void check_relative_tolerance(std::span<const plan_instance> instances, const integrand_spec& f,
-                              std::size_t fi, const method_spec& method) {
-  for (const auto& inst : instances) {
+void check_relative_tolerance(const plan& p, const integrand_spec& f, std::size_t fi,
+                              const method_spec& method) {
+  for (const auto& inst : p.instances) {
     if (inst.integrand != fi) continue;
-    const double exact = inst.function.info().exact;
+    const double exact = p.reference_of(inst);
     if (std::isfinite(exact) && exact != 0.0) continue;
     throw scene_error(
         key_location(method.keys, "tolerance_kind", method.table),
@@ -517,12 +526,16 @@ void resolve_references(plan& p) {
       ref.uncertainty = ref.computed->uncertainty;
     }
     p.mean_reference[fi] = ref.value;
-    p.notes.push_back(
-        fmt::format("{}:{}: integrand[{}] ({}): errors are measured from the {} reference {:.17g} "
-                    "± {:.2g}; the family's exact value {:.17g} ({}) exists and is not used",
-                    sc.file, where.line, f.table_index, f.name,
-                    f.reference == reference_source::given ? "given" : "computed", ref.value,
-                    ref.uncertainty, info.exact, info.reference));
+    const std::string exact =
+        std::isnan(info.exact)
+            ? fmt::format("the family has no exact value ({})", info.reference)
+            : fmt::format("the family's exact value {:.17g} ({}) exists and is not used",
+                          info.exact, info.reference);
+    p.notes.push_back(fmt::format(
+        "{}:{}: integrand[{}] ({}): errors are measured from the {} reference {:.17g} ± {:.2g}; {}",
+        sc.file, where.line, f.table_index, f.name,
+        f.reference == reference_source::given ? "given" : "computed", ref.value, ref.uncertainty,
+        exact));
   }
 }
 
@@ -548,6 +561,14 @@ const plan_instance& plan::instance_of(const plan_cell& c) const {
                          "a cell of this plan");
 }
 
+double plan::reference_of(const plan_instance& inst) const {
+  if (inst.integrand < references.size() &&
+      references[inst.integrand].source != reference_source::exact) {
+    return references[inst.integrand].value;
+  }
+  return inst.function.info().exact;
+}
+
 plan make_plan(const scene& input) {
   plan p;
   p.source = input;
@@ -565,7 +586,9 @@ plan make_plan(const scene& input) {
   for (const auto& inst : p.instances) {
     const integrand_info& info = inst.function.info();
     p.mean_reference[inst.integrand] += info.exact;
-    double m = std::abs(info.exact);
+    // No exact value (NaN, refused by check_reference unless a reference replaces it): the
+    // reference joins the scale below.
+    double m = std::isnan(info.exact) ? 0.0 : std::abs(info.exact);
     if (const auto& peak = info.derivative_bound[0]) {
       m = std::max(m, *peak * info.domain.volume());
     }
@@ -574,7 +597,7 @@ plan make_plan(const scene& input) {
   for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
     const integrand_spec& f = sc.integrands[fi];
     p.mean_reference[fi] /= static_cast<double>(f.ensemble);
-    if (!std::isfinite(p.mean_reference[fi])) {
+    if (f.reference == reference_source::exact && !std::isfinite(p.mean_reference[fi])) {
       throw scene_error(key_location(f.keys, "ensemble", f.table),
                         fmt::format("integrand[{}].ensemble", f.table_index),
                         fmt::format("the mean of the {} instances' exact integrals of {} "
@@ -583,6 +606,9 @@ plan make_plan(const scene& input) {
     }
   }
   resolve_references(p);
+  for (std::size_t fi = 0; fi < sc.integrands.size(); ++fi) {
+    scale[fi] = std::max(scale[fi], std::abs(p.mean_reference[fi]));
+  }
   for (const auto& inst : p.instances) {
     const integrand_spec& f = sc.integrands[inst.integrand];
     if (inst.instance == 1 && inst.drawn.empty()) {
@@ -638,7 +664,7 @@ plan make_plan(const scene& input) {
         p.skips.push_back({fmt::format("{} × {}", method.label, f.name), *why});
         continue;
       }
-      if (method.relative_tolerance) check_relative_tolerance(p.instances, f, fi, method);
+      if (method.relative_tolerance) check_relative_tolerance(p, f, fi, method);
       plan_pair(sc, fi, mi, scale[fi], pair_cells, p.skips);
     }
     // Every instance of an ensemble runs the same cells; only the integrand (and its streams)
@@ -707,7 +733,8 @@ std::string format_plan(const plan& p) {
     const auto& info = inst.function.info();
     std::string head = fmt::format("  {} (family {}, s = {}", f.name, f.family, f.dimension);
     if (f.ensemble > 1) head += fmt::format(", instance {} of {}", inst.instance + 1, f.ensemble);
-    line(head + fmt::format(", exact = {:.17g})", info.exact));
+    line(head + (std::isnan(info.exact) ? std::string(", no exact value)")
+                                        : fmt::format(", exact = {:.17g})", info.exact)));
     if (inst.integrand < p.references.size() &&
         p.references[inst.integrand].source != reference_source::exact) {
       const plan_reference& ref = p.references[inst.integrand];

@@ -97,10 +97,10 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
                            : 0.0;
   const bool to_tolerance = !std::isnan(cell.tolerance);
   const cell_size size = cell.size();
-  // The absolute target: a relative tolerance is a fraction of this instance's |I| (the plan
-  // refused I = 0 or a non-finite I for it).
+  // The absolute target: a relative tolerance is a fraction of this instance's |I|, exact or the
+  // reference that replaces it (the plan refused I = 0 or a non-finite I for it).
   const double tolerance =
-      mspec.relative_tolerance ? cell.tolerance * std::abs(info.exact) : cell.tolerance;
+      mspec.relative_tolerance ? cell.tolerance * std::abs(p.reference_of(inst)) : cell.tolerance;
 
   cell_run out;
   std::vector<repetition_result>& results = out.repetitions;

@@ -58,8 +58,19 @@ struct catalogue_entry {
   std::size_t fixed_dimension = 0;    // the only s it takes (1D classics 1, irradiance 2); 0 any
 };
 
-// All families, in a fixed order (Genz, classic 1D, geometry, rendering).
+// All families, in a fixed order (Genz, classic 1D, geometry, rendering), then those added by
+// add_integrands in the order they were added.
 std::span<const catalogue_entry> integrand_catalogue();
+
+// The plugin point for integrands from outside the library: a program built on quadmc::command
+// (bench/examples/own_integrand/) adds its families before it runs the command, and every scene,
+// plan and listing then sees them beside the built-in ones. The entries (and the strings and key
+// lists they point to) must outlive every use: static storage. An entry's `make` builds an
+// any_integrand whose integrand_info carries the exact integral, or NaN where none is known (the
+// scene then needs `reference = <number>` or `reference = "computed"`). Throws logic_error when a
+// name is already taken or an entry lacks a name or a `make`. Not thread-safe, and it invalidates
+// spans returned before: call it before any lookup, as add_methods (methods/registry.hpp).
+void add_integrands(std::span<const catalogue_entry> families);
 
 // The entry named `name`, or nullptr.
 const catalogue_entry* find_family(std::string_view name) noexcept;

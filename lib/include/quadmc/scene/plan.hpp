@@ -130,6 +130,9 @@ struct plan {
   std::uint64_t total_evaluations = 0;  // Σ evaluations × repetitions (saturates at 2^64 − 1)
 
   const plan_instance& instance_of(const plan_cell& c) const;
+  // I of one instance, as its errors and a relative tolerance see it: the family's exact value,
+  // or the given or computed reference that replaces it (the family may have none, NaN).
+  double reference_of(const plan_instance& inst) const;
 };
 
 plan make_plan(const scene& s);
