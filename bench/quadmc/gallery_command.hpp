@@ -32,9 +32,10 @@
 // has no strata. NAME: 1 to 40 letters, digits, '_' or '-', not a set of the catalogue, not given
 // twice (usage errors, exit 2). Every file is read and checked before anything is computed or
 // written; a bad one is a one-line error naming it (and its row and column), exit 1.
-// Same (K, R) → the same numbers, bit for bit, for any T (each set is computed by one thread). The
-// folder is replaced by the rules of report/results_staging.hpp (a folder holding anything else is
-// refused). Errors are one line.
+// Same (K, R) and files → the same numbers, bit for bit, for any T (each set, a user's too, is
+// computed by one thread, its realizations in the order r = 0, 1, …). The folder is replaced by the
+// rules of report/results_staging.hpp (a folder holding anything else is refused). Errors are one
+// line.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <set>
@@ -264,6 +265,30 @@ TEST_F(GalleryPoints, SobolFilesGiveTheSobolRowBitwiseOnAnyThreadCount) {
   }
 }
 
+// The points of a CSV file as `quadmc points` writes it, as a .npy float64 array of shape (N, 2)
+// (format 1.0: magic, version, header length, then the header padded with spaces to a multiple of
+// 64 bytes and ended by '\n', as numpy/lib/format.py writes it). Little-endian, as x86-64 is.
+void write_npy_of(const fs::path& csv, const fs::path& npy) {
+  const quadmc::csv_table t = quadmc::parse_csv(read_text(csv), csv.string());
+  std::string data;
+  for (const auto& row : t.rows) {
+    for (const std::string& field : row) {
+      const double v = std::stod(field);  // correctly rounded: the shortest text reads back
+      char bytes[sizeof v];
+      std::memcpy(bytes, &v, sizeof v);
+      data.append(bytes, sizeof v);
+    }
+  }
+  std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (" +
+                       std::to_string(t.rows.size()) + ", 2), }";
+  while ((10 + header.size() + 1) % 64 != 0) header += ' ';
+  header += '\n';
+  std::string out("\x93NUMPY\x01\x00", 8);
+  out += static_cast<char>(header.size() & 0xff);
+  out += static_cast<char>(header.size() >> 8);
+  write_text(npy, out + header + data);
+}
+
 // Fewer files than R: the realizations are r = 0, 1, … up to the first missing file, per N, and a
 // template without {r} is one realization; every table says how many each row averages.
 TEST_F(GalleryPoints, CountsTheRealizationsThereAreAndSaysSo) {
@@ -277,9 +302,14 @@ TEST_F(GalleryPoints, CountsTheRealizationsThereAreAndSaysSo) {
   // r = 3 beyond the gap at r = 2 is not counted.
   fs::copy_file(*dir_ / "pts" / "1024_3.csv", *dir_ / "few" / "1024_3.csv",
                 fs::copy_options::overwrite_existing);
+  fs::create_directory(*dir_ / "npy");
+  for (const std::string n : {"16", "64", "256", "1024"}) {
+    write_npy_of(*dir_ / "pts" / (n + "_0.csv"), *dir_ / "npy" / (n + ".npy"));
+  }
   const command_result r = run_quadmc(
       *dir_, {"gallery", "--out", "gf", "--realizations", "4", "--seed", "5", "--points",
-              "few=few/{N}_{r}.csv", "--points", "one=" + (*dir_ / "pts").string() + "/{N}_0.csv"});
+              "few=few/{N}_{r}.csv", "--points", "one=" + (*dir_ / "pts").string() + "/{N}_0.csv",
+              "--points", "npy=npy/{N}.npy"});
   ASSERT_EQ(r.exit_status, 0) << describe(r);
   const fs::path g = *dir_ / "gf";
   const quadmc::csv_table d = quadmc::parse_csv(read_text(g / "discrepancy.csv"), "discrepancy");
@@ -298,8 +328,12 @@ TEST_F(GalleryPoints, CountsTheRealizationsThereAreAndSaysSo) {
   EXPECT_EQ(spectrum["few"], (std::set<std::string>{"2"}));
   EXPECT_EQ(spectrum["one"], (std::set<std::string>{"1"}));
   EXPECT_EQ(spectrum["sobol"], (std::set<std::string>{"4"}));
-  // The pictured points (r = 0) are the sobol row's, whatever the realizations.
+  // The pictured points (r = 0) are the sobol row's, whatever the realizations; the same points
+  // as .npy give the same numbers as the CSV.
   EXPECT_EQ(rows_of(g / "scatter.csv", "one"), rows_of(g / "scatter.csv", "sobol"));
+  EXPECT_EQ(rows_of(g / "scatter.csv", "npy"), rows_of(g / "scatter.csv", "sobol"));
+  EXPECT_EQ(rows_of(g / "discrepancy.csv", "npy"), rows_of(g / "discrepancy.csv", "one"));
+  EXPECT_EQ(rows_of(g / "spectrum.csv", "npy"), rows_of(g / "spectrum.csv", "one"));
   const std::string readme = read_text(g / "README.md");
   EXPECT_NE(readme.find("| few | `few/{N}_{r}.csv` | 1 | 1 | 1 | 2 |"), std::string::npos)
       << readme;
