@@ -4,8 +4,10 @@
 Usage: gallery.py FOLDER. Reads scatter.csv, strata.csv, discrepancy.csv and spectrum.csv of
 FOLDER and writes gallery.png (one row per point set: scatter at N = 16, 64, 256 with strata and
 1D projections, discrepancies under each square, the power spectrum last) and spectra.png (every
-set's radially averaged power spectrum on one plot). Computes nothing: every number comes from
-the command (bench/quadmc/gallery_command.hpp). Debian's python3-matplotlib, headless (Agg).
+set's radially averaged power spectrum on one plot). The user's own sets (`--points`, listed in
+user_points.csv when there are any) get the last rows, labelled as theirs with the realizations
+their spectrum averages, and dashed curves in spectra.png. Computes nothing: every number comes
+from the command (bench/quadmc/gallery_command.hpp). Debian's python3-matplotlib, headless (Agg).
 Not for results folders of `quadmc run` (bench/plot.py draws those).
 """
 
@@ -29,6 +31,16 @@ def read(folder, name):
         return list(csv.DictReader(f))
 
 
+def user_sets(folder):
+    """The user's sets (--points): name -> realizations of its spectrum (at the largest N)."""
+    if not os.path.exists(os.path.join(folder, "user_points.csv")):
+        return {}
+    out = {}
+    for r in read(folder, "user_points.csv"):
+        out[r["set"]] = r["realizations"]
+    return out
+
+
 def main(folder):
     points = defaultdict(lambda: ([], []))
     order = []
@@ -43,6 +55,7 @@ def main(folder):
     spectra = defaultdict(list)
     for r in read(folder, "spectrum.csv"):
         spectra[r["set"]].append(r)
+    users = user_sets(folder)
 
     rows = len(order)
     fig, axes = plt.subplots(rows, len(SIZES) + 1, figsize=(13, 3.1 * rows))
@@ -82,7 +95,8 @@ def main(folder):
             if i == 0:
                 ax.set_title("N = {}".format(n), fontsize=10)
             if j == 0:
-                ax.set_ylabel(name, fontsize=10)
+                label = name + ("\n(your points, no strata)" if name in users else "")
+                ax.set_ylabel(label, fontsize=10)
         ax = axes[i][len(SIZES)]
         bins = spectra[name]
         r = [int(b["radius"]) for b in bins]
@@ -101,6 +115,9 @@ def main(folder):
         if i == 0:
             ax.set_title("power spectrum, N = {}, {} realizations".format(
                 n_spec, bins[0]["realizations"]), fontsize=9)
+        elif name in users:
+            ax.set_title("{} realizations (your files)".format(bins[0]["realizations"]),
+                         fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(folder, "gallery.png"), dpi=80)
     plt.close(fig)
@@ -108,8 +125,12 @@ def main(folder):
     fig, ax = plt.subplots(figsize=(8, 5))
     for k, name in enumerate(order):
         bins = spectra[name]
+        label = name
+        if name in users:
+            label = "{} (yours, {} realizations)".format(name, bins[0]["realizations"])
         ax.plot([int(b["radius"]) for b in bins], [float(b["mean_power"]) for b in bins],
-                label=name, color="C{}".format(k % 10), lw=1.2)
+                label=label, color="C{}".format(k % 10), lw=1.2,
+                ls="--" if name in users else "-")
     n_spec = int(spectra[order[0]][0]["n"])
     ax.axhline(1.0, color="k", lw=0.5, ls="--")
     ax.axvline(n_spec ** 0.5, color="0.5", lw=0.5, ls=":")
@@ -117,8 +138,11 @@ def main(folder):
     ax.set_ylim(bottom=0)
     ax.set_xlabel("frequency |f| (integer, radially averaged)")
     ax.set_ylabel("mean power P(f)")
-    ax.set_title("Radially averaged periodogram, N = {}, {} realizations each".format(
-        n_spec, spectra[order[0]][0]["realizations"]))
+    each = "{} realizations each".format(spectra[order[0]][0]["realizations"])
+    if users:
+        each = "{} realizations per suite set (yours: as labelled)".format(
+            spectra[order[0]][0]["realizations"])
+    ax.set_title("Radially averaged periodogram, N = {}, {}".format(n_spec, each))
     ax.legend(fontsize=8, ncol=2)
     fig.tight_layout()
     fig.savefig(os.path.join(folder, "spectra.png"), dpi=90)

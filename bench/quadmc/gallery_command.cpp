@@ -11,6 +11,7 @@
 #include "quadmc/report/staged_output.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
 #include "quadmc/sampling/periodogram.hpp"
+#include "quadmc/sampling/point_file.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
@@ -46,18 +47,37 @@ namespace {
 constexpr std::size_t dimension = 2;
 constexpr std::array<std::uint64_t, 3> scatter_sizes{16, 64, 256};
 constexpr std::uint64_t spectrum_size = 1024;
+// The sizes of the discrepancy table: the scatter's and the spectrum's.
+constexpr std::array<std::uint64_t, 4> gallery_sizes{16, 64, 256, spectrum_size};
 // √1024 = 32 is the mean point spacing's frequency; twice that shows the high-frequency plateau.
 constexpr std::size_t spectrum_radius = 64;
 constexpr std::uint64_t max_discrepancy_realizations = 32;
-constexpr std::array<std::string_view, 8> gallery_files{
-    "README.md",       "meta.csv",     "scatter.csv", "strata.csv",
-    "discrepancy.csv", "spectrum.csv", "gallery.png", "spectra.png"};
+constexpr std::array<std::string_view, 9> gallery_files{
+    "README.md",    "meta.csv",    "scatter.csv", "strata.csv",     "discrepancy.csv",
+    "spectrum.csv", "gallery.png", "spectra.png", "user_points.csv"};
+// Written only with --points (the user's sets, their templates and realizations per N), so that a
+// gallery without them writes the files it always wrote.
+constexpr std::string_view user_points_file = "user_points.csv";
+// A user's set name is a CSV field, a legend entry and a Markdown table cell: these characters
+// need no quoting in any of them, and the length keeps the plan's and the page's columns readable.
+constexpr std::size_t max_user_name = 40;
+
+// One row of the gallery: a set of the catalogue, or a user's files (--points).
+struct gallery_set {
+  std::string name;
+  const quadmc::point_set_entry* entry = nullptr;  // null: a user's set
+  std::string path_template;                       // a user's set: as given
+  // Per size of gallery_sizes, the realizations there are: R for a set of the catalogue; for a
+  // user's set, the files r = 0, 1, … that exist (up to what the size uses, 1 without "{r}").
+  std::array<std::uint64_t, gallery_sizes.size()> realizations{};
+};
 
 // The strata a set fills with one point each in 2D, as the set states them
 // (point_set_entry::strata_of, with the reasons beside each set's entry); the gallery's tests
-// count the points per stratum of every grid listed here.
-std::optional<quadmc::point_strata> strata_of(const quadmc::point_set_entry& set, std::uint64_t n) {
-  return set.strata_of(dimension, n);
+// count the points per stratum of every grid listed here. A user's set states none.
+std::optional<quadmc::point_strata> strata_of(const gallery_set& set, std::uint64_t n) {
+  if (set.entry == nullptr) return std::nullopt;
+  return set.entry->strata_of(dimension, n);
 }
 
 struct discrepancy_row {
@@ -68,19 +88,28 @@ struct discrepancy_row {
 };
 
 struct set_result {
-  const quadmc::point_set_entry* set = nullptr;
+  const gallery_set* set = nullptr;
   std::vector<std::vector<double>> scatter;  // per scatter size, row-major (x, y)
   std::vector<discrepancy_row> discrepancy;
   std::vector<quadmc::radial_power_bin> spectrum;
   double seconds = 0.0;
 };
 
-std::vector<double> points_of(const quadmc::point_set_entry& set, std::uint64_t n,
-                              std::uint64_t seed, std::uint64_t stream) {
+// Realization `stream` of N points: the set's stream of seed K, or a user's file r = stream, read
+// again as the plan read it (read_point_file checks it again, so a file changed since is refused
+// in one line, before anything is written).
+std::vector<double> points_of(const gallery_set& set, std::uint64_t n, std::uint64_t seed,
+                              std::uint64_t stream) {
+  if (set.entry == nullptr) {
+    return quadmc::read_point_file(quadmc::point_file_path(set.path_template, n, stream),
+                                   quadmc::point_file_columns::points, n, dimension)
+        .x;
+  }
   std::vector<double> x(n * dimension);
-  set.points(dimension, n, {seed, stream}, [&](std::uint64_t first, std::span<const double> b) {
-    std::copy(b.begin(), b.end(), x.begin() + static_cast<std::ptrdiff_t>(first * dimension));
-  });
+  set.entry->points(
+      dimension, n, {seed, stream}, [&](std::uint64_t first, std::span<const double> b) {
+        std::copy(b.begin(), b.end(), x.begin() + static_cast<std::ptrdiff_t>(first * dimension));
+      });
   return x;
 }
 
@@ -117,15 +146,15 @@ class gallery_progress {
   std::size_t sets_done_ = 0;
 };
 
-set_result compute_set(const quadmc::point_set_entry& set, const gallery_request& r,
+set_result compute_set(const gallery_set& set, const gallery_request& r,
                        gallery_progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   set_result out;
   out.set = &set;
-  const std::uint64_t d_realizations = std::min(r.realizations, max_discrepancy_realizations);
-  std::vector<std::uint64_t> sizes(scatter_sizes.begin(), scatter_sizes.end());
-  sizes.push_back(spectrum_size);
-  for (const std::uint64_t n : sizes) {
+  for (std::size_t k = 0; k < gallery_sizes.size(); ++k) {
+    const std::uint64_t n = gallery_sizes[k];
+    const std::uint64_t d_realizations =
+        std::min(set.realizations[k], max_discrepancy_realizations);
     discrepancy_row row;
     row.n = n;
     row.realizations = d_realizations;
@@ -146,9 +175,10 @@ set_result compute_set(const quadmc::point_set_entry& set, const gallery_request
     out.discrepancy.push_back(row);
   }
   quadmc::radial_periodogram spectrum(spectrum_radius);
-  for (std::uint64_t stream = 0; stream < r.realizations; ++stream) {
+  const std::uint64_t s_realizations = set.realizations.back();
+  for (std::uint64_t stream = 0; stream < s_realizations; ++stream) {
     spectrum.add(points_of(set, spectrum_size, r.seed, stream));
-    progress.add(1, stream + 1 == r.realizations);
+    progress.add(1, stream + 1 == s_realizations);
   }
   out.spectrum = spectrum.bins();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -212,13 +242,13 @@ std::string discrepancy_csv(const std::vector<set_result>& results) {
   return text;
 }
 
-std::string spectrum_csv(const std::vector<set_result>& results, std::uint64_t realizations) {
+std::string spectrum_csv(const std::vector<set_result>& results) {
   std::string text =
       line({"set", "n", "realizations", "radius", "frequencies", "mean_power", "standard_error"});
   for (const set_result& r : results) {
     for (const quadmc::radial_power_bin& b : r.spectrum) {
       text += line({std::string(r.set->name), std::to_string(spectrum_size),
-                    std::to_string(realizations), std::to_string(b.radius),
+                    std::to_string(r.set->realizations.back()), std::to_string(b.radius),
                     std::to_string(b.frequencies), number(b.mean_power), number(b.standard_error)});
     }
   }
@@ -236,6 +266,39 @@ double band_power(const std::vector<quadmc::radial_power_bin>& bins, std::size_t
     count += static_cast<double>(b.frequencies);
   }
   return sum / count;
+}
+
+// A set's name in the page's tables: a user's set says so (its realizations are in the section
+// on the user's sets).
+std::string table_name(const gallery_set& set) {
+  return set.entry == nullptr ? fmt::format("{} *(--points)*", set.name) : set.name;
+}
+
+// The page's section on the user's sets (--points), empty without them: which rows are theirs,
+// from which files, and how many realizations each of their numbers averages.
+std::string user_sets_section(const std::vector<set_result>& results, const gallery_request& r) {
+  std::string rows;
+  for (const set_result& s : results) {
+    const gallery_set& g = *s.set;
+    if (g.entry != nullptr) continue;
+    rows += fmt::format("| {} | `{}` | {} | {} | {} | {} |\n", g.name, g.path_template,
+                        g.realizations[0], g.realizations[1], g.realizations[2], g.realizations[3]);
+  }
+  if (rows.empty()) return {};
+  std::string t = "## Your point sets (--points)\n\n";
+  t += fmt::format(
+      "The last rows are point sets read from files, not made by the suite: their points are "
+      "those of the files r = 0, 1, … at each N (a template without {{r}} is one realization), "
+      "counted up to the first missing file and up to what the suite's sets use (min(R, {}) = {} "
+      "for the discrepancies' RMS at N = 16, 64, 256; R = {} for the spectrum at N = {}). A "
+      "user's set has no strata drawn: its files state none. Its spectrum averages the "
+      "realizations below instead of R (with one, the standard error is nan and no band is "
+      "drawn); its RMS discrepancy averages min(realizations, {}). The scatter shows r = 0. "
+      "Relative templates were read from the folder the command ran in.\n\n",
+      max_discrepancy_realizations, std::min(r.realizations, max_discrepancy_realizations),
+      r.realizations, spectrum_size, max_discrepancy_realizations);
+  t += "| set | files | realizations at N = 16 | 64 | 256 | 1024 |\n|---|---|---|---|---|---|\n";
+  return t + rows + "\n";
 }
 
 std::string readme(const std::vector<set_result>& results, const gallery_request& r,
@@ -272,6 +335,7 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
       "mean square over min(R, 32) realizations, beside the expected value for independent "
       "points, √((2⁻ˢ − 3⁻ˢ)/N) etc. (sampling/discrepancy.hpp).\n\n",
       r.realizations, spectrum_size);
+  t += user_sets_section(results, r);
   t += "![Radially averaged power spectra of all point sets](spectra.png)\n\n";
   t += fmt::format("## Power spectrum at N = {}, {} realizations\n\n", spectrum_size,
                    r.realizations);
@@ -280,16 +344,14 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
        "|\n";
   t += "|---|---|---|---|---|\n";
   for (const set_result& s : results) {
-    t += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", s.set->name,
+    t += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", table_name(*s.set),
                      band_power(s.spectrum, 1, 8), band_power(s.spectrum, 9, 24),
                      band_power(s.spectrum, 25, 40), band_power(s.spectrum, 41, 64));
   }
   t += "\n## L2 discrepancies\n\n";
   t += "Pictured realization (root mean square over the realizations in brackets).\n\n";
   t += "| point set | N | D* | CD | WD |\n|---|---|---|---|---|\n";
-  std::vector<std::uint64_t> sizes(scatter_sizes.begin(), scatter_sizes.end());
-  sizes.push_back(spectrum_size);
-  for (const std::uint64_t n : sizes) {
+  for (const std::uint64_t n : gallery_sizes) {
     const quadmc::l2_discrepancies e = independent_rms(n);
     t += fmt::format("| *independent, expected* | {} | {:.4f} | {:.4f} | {:.4f} |\n", n, e.l2_star,
                      e.centered, e.wraparound);
@@ -297,7 +359,7 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
       for (const discrepancy_row& d : s.discrepancy) {
         if (d.n != n) continue;
         t += fmt::format("| {} | {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) |\n",
-                         s.set->name, n, d.shown.l2_star, d.rms.l2_star, d.shown.centered,
+                         table_name(*s.set), n, d.shown.l2_star, d.rms.l2_star, d.shown.centered,
                          d.rms.centered, d.shown.wraparound, d.rms.wraparound);
       }
     }
@@ -308,12 +370,179 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
        "`discrepancy.csv` (set, n, realizations, l2_star, centered, wraparound and their _rms), "
        "`meta.csv` (what built the command). Regenerate with `quadmc gallery` "
        "(`build/release/bench/quadmc gallery`).\n";
+  if (results.back().set->entry == nullptr) {
+    t += "`user_points.csv` (set, template, n, realizations): the user's sets (--points).\n";
+  }
   t += "\nTime per point set (one thread each): ";
   for (std::size_t i = 0; i < results.size(); ++i) {
     t += fmt::format("{}{} {:.1f} s", i == 0 ? "" : ", ", results[i].set->name, results[i].seconds);
   }
   t += ".\n";
   return t;
+}
+
+std::string user_points_csv(const std::vector<gallery_set>& sets) {
+  std::string text = line({"set", "template", "n", "realizations"});
+  for (const gallery_set& g : sets) {
+    if (g.entry != nullptr) continue;
+    for (std::size_t k = 0; k < gallery_sizes.size(); ++k) {
+      text += line({g.name, g.path_template, std::to_string(gallery_sizes[k]),
+                    std::to_string(g.realizations[k])});
+    }
+  }
+  return text;
+}
+
+struct points_option {
+  std::string name;
+  std::string path_template;
+};
+
+// Splits and checks one --points value: the empty string, or what was expected of it.
+std::string points_option_problem(std::string_view text, points_option& out) {
+  const std::size_t eq = text.find('=');
+  const auto got = [&](std::string_view why) {
+    return fmt::format("expected NAME=PATH_TEMPLATE (e.g. mine=pts/{{N}}_{{r}}.csv), got '{}': {}",
+                       text, why);
+  };
+  if (eq == std::string_view::npos) return got("no '='");
+  out.name = std::string(text.substr(0, eq));
+  out.path_template = std::string(text.substr(eq + 1));
+  const bool safe = std::all_of(out.name.begin(), out.name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+  if (out.name.empty() || out.name.size() > max_user_name || !safe) {
+    return got(fmt::format("NAME must be 1 to {} letters, digits, '_' or '-'", max_user_name));
+  }
+  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
+    if (set.name == out.name) return got("NAME is a point set of the suite; choose another");
+  }
+  if (out.path_template.find("{N}") == std::string::npos) {
+    return got("PATH_TEMPLATE needs {N} (one file per N = 16, 64, 256, 1024)");
+  }
+  return {};
+}
+
+// The realizations of a user's set at N: the files r = 0, 1, … up to `wanted` (1 without "{r}"),
+// until the first that does not exist; r = 0 must. Each is read and checked (N rows, s = 2, every
+// coordinate in [0, 1)) here, before any computation, so a bad file costs nothing.
+std::uint64_t count_realizations(const points_option& p, std::uint64_t n, std::uint64_t wanted) {
+  const bool numbered = p.path_template.find("{r}") != std::string::npos;
+  std::uint64_t r = 0;
+  for (; r < (numbered ? wanted : 1); ++r) {
+    const fs::path file = quadmc::point_file_path(p.path_template, n, r);
+    std::error_code ignored;  // any other failure than absence: read_point_file says which
+    if (r > 0 && fs::status(file, ignored).type() == fs::file_type::not_found) break;
+    try {
+      (void)quadmc::read_point_file(file, quadmc::point_file_columns::points, n, dimension);
+    } catch (const quadmc::invalid_argument& e) {
+      throw std::runtime_error(
+          fmt::format("--points {}={}: {}", p.name, p.path_template, e.what()));
+    }
+  }
+  return r;
+}
+
+// The rows of the gallery: the catalogue's sets that hold every size (the others in `skipped`),
+// then the user's sets in the order given, their files counted and checked.
+std::vector<gallery_set> plan_sets(const gallery_request& r, std::vector<std::string>& skipped) {
+  std::vector<gallery_set> sets;
+  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
+    std::string problem;
+    for (const std::uint64_t n : gallery_sizes) {
+      if (problem.empty()) problem = quadmc::size_problem(set, dimension, n);
+    }
+    if (problem.empty()) {
+      gallery_set g{std::string(set.name), &set, {}, {}};
+      g.realizations.fill(r.realizations);
+      sets.push_back(std::move(g));
+    } else {
+      skipped.push_back(fmt::format("{}: {}", set.name, problem));
+    }
+  }
+  for (const std::string& text : r.points) {
+    points_option p;
+    const std::string problem = points_option_problem(text, p);
+    if (!problem.empty()) throw std::runtime_error(fmt::format("--points: {}", problem));
+    gallery_set g{p.name, nullptr, p.path_template, {}};
+    for (std::size_t k = 0; k < gallery_sizes.size(); ++k) {
+      const bool spectrum = gallery_sizes[k] == spectrum_size;
+      g.realizations[k] = count_realizations(
+          p, gallery_sizes[k],
+          spectrum ? r.realizations : std::min(r.realizations, max_discrepancy_realizations));
+    }
+    sets.push_back(std::move(g));
+  }
+  return sets;
+}
+
+std::string plan_text(const std::vector<gallery_set>& sets, std::size_t user_sets,
+                      const std::vector<std::string>& skipped, const gallery_request& r,
+                      unsigned threads, const fs::path& folder) {
+  const std::string counted = user_sets == 0
+                                  ? fmt::format("{} point sets", sets.size())
+                                  : fmt::format("{} point sets and {} from files (--points)",
+                                                sets.size() - user_sets, user_sets);
+  std::string plan = fmt::format(
+      "gallery: {} in s = 2 (seed {}), {} threads → {}\n"
+      "  scatter, strata and 1D projections at N = 16, 64, 256 (stream 0)\n"
+      "  radially averaged periodogram at N = {}, |f| = 1 … {}, over {} realizations per set\n"
+      "  L2-star, centered, wrap-around discrepancies at N = 16, 64, 256, {} (RMS over {} "
+      "realizations)\n",
+      counted, r.seed, threads, folder.string(), spectrum_size, spectrum_radius, r.realizations,
+      spectrum_size, std::min(r.realizations, max_discrepancy_realizations));
+  for (const gallery_set& s : sets) {
+    if (s.entry == nullptr) {
+      plan += fmt::format(
+          "  {:<16} strata: none (files {}; realizations at N = 16, 64, 256, {}: {}, {}, {}, "
+          "{})\n",
+          s.name, s.path_template, spectrum_size, s.realizations[0], s.realizations[1],
+          s.realizations[2], s.realizations[3]);
+      continue;
+    }
+    std::string grids;
+    for (const std::uint64_t n : scatter_sizes) {
+      if (const auto g = strata_of(s, n)) {
+        grids += fmt::format("{}N = {}: {} × {} {}", grids.empty() ? "" : ", ", n, g->per_axis,
+                             g->per_axis, quadmc::to_string(g->kind));
+      }
+    }
+    plan += fmt::format("  {:<16} strata: {}\n", s.name, grids.empty() ? "none" : grids);
+  }
+  for (const std::string& s : skipped) plan += fmt::format("  skipped {}\n", s);
+  return plan;
+}
+
+// Computes every set, one set per thread at a time: the numbers do not depend on `threads`.
+std::vector<set_result> compute_sets(const std::vector<gallery_set>& sets, const gallery_request& r,
+                                     unsigned threads) {
+  std::uint64_t total = 0;
+  for (const gallery_set& g : sets) total += g.realizations.back();
+  gallery_progress progress(total);
+  progress.sets_total = sets.size();
+  std::vector<set_result> results(sets.size());
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(threads);
+  {
+    std::vector<std::jthread> workers;
+    for (unsigned w = 0; w < threads; ++w) {
+      workers.emplace_back([&, w] {
+        try {
+          for (std::size_t i = next++; i < sets.size(); i = next++) {
+            results[i] = compute_set(sets[i], r, progress);
+          }
+        } catch (...) {
+          errors[w] = std::current_exception();
+        }
+      });
+    }
+  }
+  progress.finish();
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  return results;
 }
 
 }  // namespace
@@ -336,6 +565,31 @@ CLI::App* add_gallery_subcommand(CLI::App& app, gallery_request& request) {
       ->add_option("--threads", request.threads,
                    "Threads, 0 = all cores, at most 4096 (default 0; one point set per thread)")
       ->check(CLI::Range(0u, 4096u));
+  gallery
+      ->add_option("--points", request.points,
+                   "A row of your own points, repeatable: NAME=PATH_TEMPLATE, files (CSV or .npy, "
+                   "s = 2) with {N} and {r} replaced by N = 16, 64, 256, 1024 and r = 0, 1, … "
+                   "(as many as exist, up to R)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            points_option p;
+            return points_option_problem(text, p);
+          },
+          "NAME=PATH_TEMPLATE"));
+  // Two rows of one name would be one row in the CSVs: refused with the usage errors (exit 2).
+  gallery->callback([&request] {
+    std::vector<std::string> names;
+    for (const std::string& text : request.points) {
+      points_option p;
+      (void)points_option_problem(text, p);
+      if (std::find(names.begin(), names.end(), p.name) != names.end()) {
+        throw CLI::ValidationError(
+            "--points",
+            fmt::format("expected each NAME once, got '{}' twice (in '{}')", p.name, text));
+      }
+      names.push_back(p.name);
+    }
+  });
   return gallery;
 }
 
@@ -345,24 +599,14 @@ bool is_gallery_file_name(std::string_view name) {
 
 void run_gallery(const gallery_request& r, const std::function<void(std::string_view)>& print) {
   const quadmc::provenance build = quadmc::bench::build_provenance();
-  std::vector<const quadmc::point_set_entry*> sets;
   std::vector<std::string> skipped;
-  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
-    std::string problem;
-    for (const std::uint64_t n :
-         {std::uint64_t{16}, std::uint64_t{64}, std::uint64_t{256}, spectrum_size}) {
-      if (problem.empty()) problem = quadmc::size_problem(set, dimension, n);
-    }
-    if (problem.empty()) {
-      sets.push_back(&set);
-    } else {
-      skipped.push_back(fmt::format("{}: {}", set.name, problem));
-    }
-  }
+  const std::vector<gallery_set> sets = plan_sets(r, skipped);
+  const std::size_t user_sets = r.points.size();
 
   const bool given = !r.out.empty();
   const fs::path folder = quadmc::results_folder_path(r.out, "gallery");
-  const std::vector<std::string> files(gallery_files.begin(), gallery_files.end());
+  std::vector<std::string> files(gallery_files.begin(), gallery_files.end());
+  if (user_sets == 0) std::erase(files, std::string(user_points_file));
   quadmc::staged_output staged("gallery", given ? "--out" : "results folder",
                                given ? r.out : std::string("results/gallery"), folder, files,
                                &is_gallery_file_name);
@@ -370,52 +614,13 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
 
   const unsigned cores = r.threads == 0 ? std::thread::hardware_concurrency() : r.threads;
   const unsigned threads = std::max(1u, std::min(cores, static_cast<unsigned>(sets.size())));
-  std::string plan = fmt::format(
-      "gallery: {} point sets in s = 2 (seed {}), {} threads → {}\n"
-      "  scatter, strata and 1D projections at N = 16, 64, 256 (stream 0)\n"
-      "  radially averaged periodogram at N = {}, |f| = 1 … {}, over {} realizations per set\n"
-      "  L2-star, centered, wrap-around discrepancies at N = 16, 64, 256, {} (RMS over {} "
-      "realizations)\n",
-      sets.size(), r.seed, threads, folder.string(), spectrum_size, spectrum_radius, r.realizations,
-      spectrum_size, std::min(r.realizations, max_discrepancy_realizations));
-  for (const auto* s : sets) {
-    std::string grids;
-    for (const std::uint64_t n : scatter_sizes) {
-      if (const auto g = strata_of(*s, n)) {
-        grids += fmt::format("{}N = {}: {} × {} {}", grids.empty() ? "" : ", ", n, g->per_axis,
-                             g->per_axis, quadmc::to_string(g->kind));
-      }
-    }
-    plan += fmt::format("  {:<16} strata: {}\n", s->name, grids.empty() ? "none" : grids);
+  print(plan_text(sets, user_sets, skipped, r, threads, folder));
+  if (sets.size() == user_sets) {
+    throw std::runtime_error("gallery: no point set holds N = 16, 64, 256, 1024");
   }
-  for (const std::string& s : skipped) plan += fmt::format("  skipped {}\n", s);
-  print(plan);
-  if (sets.empty()) throw std::runtime_error("gallery: no point set holds N = 16, 64, 256, 1024");
 
   const auto start = std::chrono::steady_clock::now();
-  gallery_progress progress(r.realizations * sets.size());
-  progress.sets_total = sets.size();
-  std::vector<set_result> results(sets.size());
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(threads);
-  {
-    std::vector<std::jthread> workers;
-    for (unsigned w = 0; w < threads; ++w) {
-      workers.emplace_back([&, w] {
-        try {
-          for (std::size_t i = next++; i < sets.size(); i = next++) {
-            results[i] = compute_set(*sets[i], r, progress);
-          }
-        } catch (...) {
-          errors[w] = std::current_exception();
-        }
-      });
-    }
-  }
-  progress.finish();
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+  const std::vector<set_result> results = compute_sets(sets, r, threads);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -423,9 +628,10 @@ void run_gallery(const gallery_request& r, const std::function<void(std::string_
     write_file(dir / "scatter.csv", scatter_csv(results));
     write_file(dir / "strata.csv", strata_csv(results));
     write_file(dir / "discrepancy.csv", discrepancy_csv(results));
-    write_file(dir / "spectrum.csv", spectrum_csv(results, r.realizations));
+    write_file(dir / "spectrum.csv", spectrum_csv(results));
     write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
     write_file(dir / "README.md", readme(results, r, build, seconds, threads));
+    if (user_sets > 0) write_file(dir / std::string(user_points_file), user_points_csv(sets));
   });
   staged.run_child(quadmc::plot_command_line(gallery_script_path(), staged.staging()));
   const quadmc::staged_output::committed done = staged.commit();
