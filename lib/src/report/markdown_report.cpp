@@ -400,8 +400,8 @@ std::string render_results_markdown(const run_info& info,
     // which ones before any table (docs/theory.md#references-without-a-closed-form).
     out +=
         "References without a closed form: the errors of these integrands are measured from a "
-        "given or computed reference, not the family's exact value; errors below 10 times its "
-        "uncertainty are floor points, not fitted.\n\n";
+        "given or computed reference (not a family's exact value, where it has one); errors below "
+        "10 times its uncertainty are floor points, not fitted.\n\n";
     for (const std::string& r : info.references) out += fmt::format("- {}\n", r);
     out += "\n";
   }
