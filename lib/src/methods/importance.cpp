@@ -1,6 +1,8 @@
 // Importance sampling of a 1D integrand with a warp of sampling/inversion_warps.hpp as a method:
 // the warp's uniforms come from any point set (`point_set`, independent by default), so the
-// density and the stratification can be studied apart.
+// density and the stratification can be studied apart. With point_set = "external_points" they
+// are the rows of a user's 1-column files (external.hpp: `path`, `points`), run through the same
+// kernel, so a set's points read back from files give that set's bits.
 #include "families.hpp"
 
 #include "quadmc/methods/registry.hpp"

@@ -1,6 +1,7 @@
 // The irradiance estimators as methods: directions uniform or cosine-weighted on the hemisphere,
 // or points uniform on the light (estimators/irradiance_estimators.hpp), for the rendering
-// integrands only, each with its 2D uniforms from any point set (`point_set`).
+// integrands only, each with its 2D uniforms from any point set (`point_set`), or from a user's
+// 2-column files (point_set = "external_points", external.hpp: `path`, `points`).
 #include "families.hpp"
 
 #include <fmt/format.h>

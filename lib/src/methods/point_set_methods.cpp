@@ -1,6 +1,8 @@
 // Plain Monte Carlo and the stratified patterns as methods: each is the sample mean of f over a
 // point set of estimators/point_set_catalogue.hpp, named after it (plain_mc: independent points).
-// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²).
+// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²). Also the
+// `point_set` key of the methods that take one (families.hpp's read_point_set), a catalogue set
+// or the user's files.
 #include "families.hpp"
 
 #include <fmt/format.h>
