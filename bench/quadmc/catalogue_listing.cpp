@@ -47,6 +47,8 @@ std::string catalogue_listing() {
   for (const auto& p : quadmc::point_set_catalogue()) {
     fmt::format_to(line, "  {:<30} {}\n", p.name, p.description);
   }
+  fmt::format_to(line, "  {:<30} {}\n", quadmc::external_point_set,
+                 quadmc::external_point_set_description);
   fmt::format_to(line, "\nwarps ([[method]] warp = …, for importance):\n");
   for (const quadmc::warp_descriptor& w : quadmc::importance_warps()) {
     fmt::format_to(line, "  {:<30} {}; {{ name = \"{}\", {} = … }} (default {:g})\n", w.name,

@@ -264,5 +264,32 @@ TEST(BadInputTest, ExternalPointFilesAreCheckedAtPlanTime) {
       5, "method[1].path", "4_0.csv row 3 column 1 = 1.5");
 }
 
+TEST(BadInputTest, ExternalPointSetFilesMustFitTheMethodAtPlanTime) {
+  // importance warps one uniform per sample: a 2-column file is refused before any work.
+  scratch_folder points;
+  write_text(points / "4_0.csv", "x1,x2\n0.125,0.5\n0.375,0.25\n0.625,0.75\n0.875,0.0\n");
+  write_text(points / "u_4_0.csv", "x1\n0.125\n0.375\n0.625\n0.875\n");
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"importance\"\n"
+      "warp = \"power\"\npoint_set = \"external_points\"\npath = \"" +
+          (points / "{N}_{r}.csv").string() + "\"\nrepetitions = 1\n[budget]\nN = [4]\n",
+      7, "method[1].path",
+      "4_0.csv = 2 columns: expected 1 (importance warps one uniform per sample: "
+      "point_set = \"external_points\" needs s = 1)");
+  // An irradiance method maps two: a 1-column file is refused the same way.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"irradiance_area\"\n[[method]]\n"
+      "name = \"irradiance_light_area\"\npoint_set = \"external_points\"\npath = \"" +
+          (points / "u_{N}_{r}.csv").string() + "\"\nrepetitions = 1\n[budget]\nN = [4]\n",
+      6, "method[1].path", "u_4_0.csv = 1 columns: expected 2 (irradiance_light_area");
+  // The files' keys without the files' point set.
+  expect_scene_error(
+      "[[integrand]]\nfamily = \"exp\"\n[[method]]\nname = \"importance\"\n"
+      "warp = \"power\"\npath = \"pts/{N}_{r}.csv\"\n[budget]\nN = [8]\n",
+      6, "method[1].path",
+      "expected only with point_set = \"external_points\" (the files' rows as the "
+      "uniforms), got it with no point_set (independent points)");
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

@@ -167,9 +167,11 @@ names method_names() {
   for (const quadmc::method_descriptor* m : quadmc::method_registry()) out.emplace(m->name);
   return out;
 }
+// The catalogue's sets and the one that reads the user's files, as `quadmc list` prints them.
 names point_set_names() {
   names out;
   for (const quadmc::point_set_entry& p : quadmc::point_set_catalogue()) out.emplace(p.name);
+  out.emplace(quadmc::external_point_set);
   return out;
 }
 names warp_names() {

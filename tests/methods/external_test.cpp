@@ -2,6 +2,9 @@
 // CSV and .npy of the points the built-in `sobol` method would draw gives its estimate bitwise;
 // external_rule on a tensor Simpson grid's nodes and weights gives `simpson` within the rounding
 // bound of two summations; the options, sizes and error bars; the files checked before a run.
+// The same files as the uniforms of importance and the irradiance methods (point_set =
+// "external_points"): the bits of their `sobol` point set, the column count each needs, the keys
+// that belong to the files only.
 #include "method_error.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/estimators/point_set_catalogue.hpp"
@@ -207,6 +210,168 @@ TEST(ExternalMethods, CheckInputsReadsEveryRepetitionsFileBeforeAnyRun) {
   write_external_csv(dir.path / "2_1.csv", 1, {0.25, 0.5});
   EXPECT_THROW(m->check_inputs(1, size, 3), invalid_argument) << "2_2.csv is missing";
   EXPECT_THROW(m->check_inputs(2, size, 1), invalid_argument) << "s = 2, the file has 1 column";
+}
+
+// The points `quadmc points sobol` writes for (seed, stream), in s dimensions, as the CSV and the
+// .npy of the template "{N}_{r}" in `dir`.
+void write_sobol_files(const fs::path& dir, std::size_t s, std::uint64_t N, std::uint64_t r,
+                       const sample_stream& stream) {
+  std::vector<double> x;
+  find_point_set("sobol")->points(
+      s, N, stream,
+      [&](std::uint64_t, std::span<const double> batch) {
+        x.insert(x.end(), batch.begin(), batch.end());
+      },
+      point_set_options{});
+  write_external_csv(dir / fmt::format("{}_{}.csv", N, r), s, x);
+  write_external_npy(dir / fmt::format("{}_{}.npy", N, r), s, x);
+}
+
+// Runs `built_in` (point_set = "sobol") at the stream the runner gives repetition r of its cell
+// and the two file-fed methods on the files of those points, and compares the bits.
+void expect_sobol_bits(const method& built_in, const method& from_csv, const method& from_npy,
+                       const fs::path& dir, const any_integrand& f, const integrand_params& p,
+                       std::size_t uniforms, std::string_view where) {
+  constexpr std::uint64_t seed = 2026;
+  // 16384 samples cross a chunk boundary of the sample mean (12288 samples).
+  for (const std::uint64_t N : {std::uint64_t{1024}, std::uint64_t{16384}}) {
+    for (std::uint64_t r = 0; r < 3; ++r) {
+      // lib/src/scene/run.cpp's stream_id(cell.stream_parts…, r), as in the test above.
+      const std::uint64_t stream =
+          stream_id({name_id(f.info().name), 0, name_id(built_in.descriptor().name), N, r});
+      write_sobol_files(dir, uniforms, N, r, {seed, stream});
+      const cell_size size = *built_in.size_for(N, f.dimension()).size;
+      ASSERT_EQ(size.evaluations, N) << where;
+      const repetition_result sobol = run_external_cell(built_in, f, p, size, stream, r, seed);
+      const cell_size own = *from_csv.size_for(N, f.dimension()).size;
+      const repetition_result a = run_external_cell(from_csv, f, p, own, 0, r, 0);
+      const repetition_result b = run_external_cell(from_npy, f, p, own, 0, r, 0);
+      EXPECT_TRUE(std::isfinite(sobol.value)) << where;
+      EXPECT_EQ(bits(a.value), bits(sobol.value)) << where << ", N = " << N << ", r = " << r;
+      EXPECT_EQ(bits(b.value), bits(sobol.value)) << where << ", N = " << N << ", r = " << r;
+      EXPECT_EQ(a.evaluations, N) << where;
+    }
+  }
+}
+
+option_table file_uniforms(option_table options, const fs::path& file_template) {
+  options.insert_or_assign("point_set", "external_points");
+  options.insert_or_assign("path", file_template.string());
+  return options;
+}
+
+TEST(ExternalPointSet, ImportanceOnSobolFilesGivesImportanceWithSobolBitwise) {
+  const temporary_directory dir("external_importance", temporary_directory::start::empty);
+  integrand_params p;
+  p.dimension = 1;
+  const any_integrand f = make_integrand("exp", p);
+  for (const char* warp : {"power", "exponential"}) {
+    const option_table options{{"warp", warp}};
+    option_table sobol = options;
+    sobol.insert_or_assign("point_set", "sobol");
+    const auto built_in = make_method("importance", sobol);
+    const auto from_csv =
+        make_method("importance", file_uniforms(options, dir.path / "{N}_{r}.csv"));
+    const auto from_npy =
+        make_method("importance", file_uniforms(options, dir.path / "{N}_{r}.npy"));
+    expect_sobol_bits(*built_in, *from_csv, *from_npy, dir.path, f, p, 1,
+                      std::string("importance, warp ") + warp);
+  }
+}
+
+TEST(ExternalPointSet, IrradianceOnSobolFilesGivesIrradianceWithSobolBitwise) {
+  const temporary_directory dir("external_irradiance", temporary_directory::start::empty);
+  integrand_params p;
+  p.dimension = 2;
+  p.scalars["occluder"] = 1.0;  // the visibility test too
+  const any_integrand f = make_integrand("irradiance_area", p);
+  for (const char* name : {"irradiance_light_area", "irradiance_hemisphere_cosine"}) {
+    const auto built_in = make_method(name, {{"point_set", "sobol"}});
+    const auto from_csv = make_method(name, file_uniforms({}, dir.path / "{N}_{r}.csv"));
+    const auto from_npy = make_method(name, file_uniforms({}, dir.path / "{N}_{r}.npy"));
+    expect_sobol_bits(*built_in, *from_csv, *from_npy, dir.path, f, p, 2, name);
+  }
+}
+
+// check_inputs' message for a cell of N = 4 over one repetition, or "no error".
+std::string check_error(const method& m, std::size_t s) {
+  try {
+    m.check_inputs(s, *m.size_for(4, s).size, 1);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ExternalPointSet, AFileOfTheWrongColumnCountIsRefusedBeforeAnyRun) {
+  const temporary_directory dir("external_columns", temporary_directory::start::empty);
+  write_external_csv(dir.path / "4_0.csv", 1, {0.125, 0.375, 0.625, 0.875});
+  write_external_csv(dir.path / "two_4_0.csv", 2, {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8});
+  const auto importance_1d =
+      make_method("importance", file_uniforms({{"warp", "power"}}, dir.path / "{N}_{r}.csv"));
+  const auto importance_2d =
+      make_method("importance", file_uniforms({{"warp", "power"}}, dir.path / "two_{N}_{r}.csv"));
+  const auto light_1d =
+      make_method("irradiance_light_area", file_uniforms({}, dir.path / "{N}_{r}.csv"));
+  const auto light_2d =
+      make_method("irradiance_light_area", file_uniforms({}, dir.path / "two_{N}_{r}.csv"));
+  EXPECT_EQ(check_error(*importance_1d, 1), "no error");
+  EXPECT_EQ(check_error(*light_2d, 2), "no error");
+
+  const std::string importance = check_error(*importance_2d, 1);
+  EXPECT_NE(importance.find("two_4_0.csv = 2 columns: expected 1 (importance"), std::string::npos)
+      << importance;
+  EXPECT_NE(importance.find("point_set = \"external_points\" needs s = 1"), std::string::npos)
+      << importance;
+  const std::string light = check_error(*light_1d, 2);
+  EXPECT_NE(light.find("4_0.csv = 1 columns: expected 2 (irradiance_light_area"), std::string::npos)
+      << light;
+  EXPECT_NE(light.find("needs s = 2"), std::string::npos) << light;
+  for (const std::string& m : {importance, light}) {
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "one line: " << m;
+  }
+}
+
+TEST(ExternalPointSet, FileKeysBelongToTheExternalPointSetOnly) {
+  const option_table power{{"warp", "power"}};
+  option_table with_path = power;
+  with_path.insert_or_assign("path", "{N}_{r}.csv");
+  const std::string no_set = error_of("importance", with_path);
+  EXPECT_NE(no_set.find(".path: "), std::string::npos) << no_set;
+  EXPECT_NE(no_set.find("expected only with point_set = \"external_points\""), std::string::npos)
+      << no_set;
+  EXPECT_NE(no_set.find("got it with no point_set"), std::string::npos) << no_set;
+  with_path.insert_or_assign("point_set", "sobol");
+  EXPECT_NE(error_of("importance", with_path).find("got it with point_set = \"sobol\""),
+            std::string::npos);
+  const std::string points =
+      error_of("irradiance_hemisphere_uniform", {{"points", std::vector<double>{16, 32}}});
+  EXPECT_NE(points.find(".points: "), std::string::npos) << points;
+  EXPECT_NE(points.find("expected only with point_set"), std::string::npos) << points;
+  // The reverse: the files' set without its files.
+  const std::string no_path = error_of("irradiance_light_area", {{"point_set", "external_points"}});
+  EXPECT_NE(no_path.find("path"), std::string::npos) << no_path;
+  EXPECT_NE(error_of("importance", file_uniforms(power, "{N}.csv")).find("without {r}"),
+            std::string::npos);
+}
+
+TEST(ExternalPointSet, SizesErrorBarsAndLabelsAreThoseOfTheFiles) {
+  option_table options = file_uniforms({{"warp", "exponential"}}, "{N}_{r}.csv");
+  options.insert_or_assign("points", std::vector<double>{10, 300});
+  const auto m = make_method("importance", options);
+  EXPECT_EQ(m->label_suffix(), "_exponential_external_points");
+  EXPECT_EQ(m->kind(), method_kind::randomized);
+  EXPECT_EQ(m->error_bars(), error_bars::replicates);
+  EXPECT_EQ(m->explicit_sizes_key(), "points");
+  ASSERT_EQ(m->explicit_sizes(1).size(), 2u);
+  EXPECT_EQ(m->explicit_sizes(1)[1].size->evaluations, 300u);
+  EXPECT_EQ(m->size_for(1000, 1).size->evaluations, 1000u) << "N is the file's size, not mapped";
+  EXPECT_FALSE(m->theory({smoothness::smooth, 1, std::nan("")}).slope.has_value());
+  const auto light = make_method("irradiance_light_area", file_uniforms({}, "{N}_{r}.csv"));
+  EXPECT_EQ(light->label_suffix(), "_external_points");
+  EXPECT_EQ(light->error_bars(), error_bars::replicates);
+  EXPECT_TRUE(light->explicit_sizes(2).empty()) << "without points, the cells follow budget.N";
+  EXPECT_EQ(light->size_for(1000, 2).size->evaluations, 1000u);
 }
 
 }  // namespace

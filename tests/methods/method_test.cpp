@@ -1,7 +1,7 @@
 // Tests of method.hpp's shares_chunks: for every registered method, under every control it
 // supports and every option value that changes its kernel (the rules' accumulators, the sparse
 // grids' rules, the quasi-Monte Carlo randomizations, importance's warps and point sets; the
-// external methods on files written here), one cell
+// external methods and the external point set on files written here), one cell
 // is run by two "processes" (threads of this test, each with its own exchange of an in-process
 // group) and once alone. Both processes must return the lone run's bits, and the flag must say
 // what happened: a method that shares chunks had every reduction exchanged (none ran whole) and
@@ -78,6 +78,21 @@ std::filesystem::path external_files(bool weighted) {
   return dir.path / (weighted ? "rule_{N}_{r}.csv" : "{N}_{r}.csv");
 }
 
+// The same for importance's 1D uniforms (point_set = "external_points"): N = 2^16 midpoints.
+std::filesystem::path uniform_files_1d() {
+  static const test_support::temporary_directory dir(
+      "method_test_uniforms", test_support::temporary_directory::start::empty);
+  const std::filesystem::path file = dir.path / "65536_0.csv";
+  if (!std::filesystem::exists(file)) {
+    std::string text;
+    for (std::uint64_t i = 0; i < 65536; ++i) {
+      text += fmt::format("{}\n", (static_cast<double>(i) + 0.5) / 65536);
+    }
+    std::ofstream(file, std::ios::binary) << text;
+  }
+  return dir.path / "{N}_{r}.csv";
+}
+
 // Every option value that selects another kernel path, per method; {} is the defaults.
 std::vector<option_table> configurations(std::string_view name) {
   const std::string n(name);
@@ -107,9 +122,16 @@ std::vector<option_table> configurations(std::string_view name) {
     return {{{"warp", "exponential"}},
             {{"warp", "power"}},
             {{"warp", "exponential"}, {"point_set", "jittered"}},
-            {{"warp", "exponential"}, {"point_set", "sobol"}}};
+            {{"warp", "exponential"}, {"point_set", "sobol"}},
+            {{"warp", "power"},
+             {"point_set", "external_points"},
+             {"path", uniform_files_1d().string()}}};
   }
-  if (n.rfind("irradiance_", 0) == 0) return {{}, {{"point_set", "sobol"}}};
+  if (n.rfind("irradiance_", 0) == 0) {
+    return {{},
+            {{"point_set", "sobol"}},
+            {{"point_set", "external_points"}, {"path", external_files(false).string()}}};
+  }
   if (n == "external_points" || n == "external_rule") {
     return {{{"path", external_files(n == "external_rule").string()}}};
   }

@@ -14,6 +14,7 @@
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
+#include "quadmc/sampling/point_file.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
 #include "quadmc/sampling/sobol_points.hpp"
 #include "quadmc/sampling/stratum_grid.hpp"
@@ -320,10 +321,8 @@ estimate monte_carlo_over(const any_integrand& f, const point_set_options& optio
                     [&](const auto& points) { return monte_carlo(f, points, threads); });
 }
 
-template <class Set>
-estimate importance_over(const any_integrand& f, const unit_warp& warp,
-                         const point_set_options& options, const sample_stream& stream,
-                         std::uint64_t n, unsigned threads) {
+// The interval [a, b] of a 1D integrand, the warps' target; checked before any point is made.
+std::pair<double, double> importance_interval(const any_integrand& f) {
   require(f.dimension() == 1, "integrand dimension", f.dimension(),
           "1 (importance sampling with a 1D warp)");
   const box& domain = f.info().domain;
@@ -331,18 +330,48 @@ estimate importance_over(const any_integrand& f, const unit_warp& warp,
   const double b = domain.upper[0];
   require(std::isfinite(a) && std::isfinite(b) && b > a, "integrand interval upper", b,
           "a finite interval with b > a");
+  return {a, b};
+}
+
+template <point_set P>
+estimate importance_with(const any_integrand& f, const unit_warp& warp,
+                         std::pair<double, double> interval, const P& points, unsigned threads) {
+  const auto [a, b] = interval;
+  switch (warp.kind) {
+    case unit_warp_kind::power:
+      return importance_sampling(f, interval_warp(power_warp(warp.parameter), a, b), points,
+                                 threads);
+    case unit_warp_kind::truncated_exponential:
+      return importance_sampling(f, interval_warp(truncated_exponential_warp(warp.parameter), a, b),
+                                 points, threads);
+  }
+  throw invalid_argument("warp kind", std::to_string(static_cast<int>(warp.kind)),
+                         "power or truncated_exponential");
+}
+
+template <class Set>
+estimate importance_over(const any_integrand& f, const unit_warp& warp,
+                         const point_set_options& options, const sample_stream& stream,
+                         std::uint64_t n, unsigned threads) {
+  const std::pair<double, double> interval = importance_interval(f);
   return Set::visit(1, n, options, stream, [&](const auto& points) {
-    switch (warp.kind) {
-      case unit_warp_kind::power:
-        return importance_sampling(f, interval_warp(power_warp(warp.parameter), a, b), points,
-                                   threads);
-      case unit_warp_kind::truncated_exponential:
-        return importance_sampling(
-            f, interval_warp(truncated_exponential_warp(warp.parameter), a, b), points, threads);
-    }
-    throw invalid_argument("warp kind", std::to_string(static_cast<int>(warp.kind)),
-                           "power or truncated_exponential");
+    return importance_with(f, warp, interval, points, threads);
   });
+}
+
+template <point_set P>
+estimate irradiance_with(irradiance_sampling technique, const irradiance_setup& setup,
+                         const P& points, unsigned threads) {
+  switch (technique) {
+    case irradiance_sampling::uniform_hemisphere:
+      return irradiance_uniform_hemisphere(setup, points, threads);
+    case irradiance_sampling::cosine_hemisphere:
+      return irradiance_cosine_hemisphere(setup, points, threads);
+    case irradiance_sampling::light_area:
+      return irradiance_light_area(setup, points, threads);
+  }
+  throw invalid_argument("irradiance technique", std::to_string(static_cast<int>(technique)),
+                         "uniform_hemisphere, cosine_hemisphere or light_area");
 }
 
 template <class Set>
@@ -350,16 +379,7 @@ estimate irradiance_over(irradiance_sampling technique, const irradiance_setup& 
                          const point_set_options& options, const sample_stream& stream,
                          std::uint64_t n, unsigned threads) {
   return Set::visit(2, n, options, stream, [&](const auto& points) {
-    switch (technique) {
-      case irradiance_sampling::uniform_hemisphere:
-        return irradiance_uniform_hemisphere(setup, points, threads);
-      case irradiance_sampling::cosine_hemisphere:
-        return irradiance_cosine_hemisphere(setup, points, threads);
-      case irradiance_sampling::light_area:
-        return irradiance_light_area(setup, points, threads);
-    }
-    throw invalid_argument("irradiance technique", std::to_string(static_cast<int>(technique)),
-                           "uniform_hemisphere, cosine_hemisphere or light_area");
+    return irradiance_with(technique, setup, points, threads);
   });
 }
 
@@ -493,6 +513,16 @@ point_count_choice largest_point_count(point_count counts, std::uint64_t N, std:
       break;
   }
   return {0, N};
+}
+
+estimate importance_over_file(const any_integrand& f, const unit_warp& warp,
+                              const file_points& points, unsigned threads) {
+  return importance_with(f, warp, importance_interval(f), points, threads);
+}
+
+estimate irradiance_over_file(irradiance_sampling technique, const irradiance_setup& setup,
+                              const file_points& points, unsigned threads) {
+  return irradiance_with(technique, setup, points, threads);
 }
 
 std::span<const point_set_entry> point_set_catalogue() noexcept {

@@ -15,11 +15,15 @@
 // (error_bars::replicates, docs/theory.md#replicate-error-bars), as for randomized quasi-Monte
 // Carlo; repetitions = 1 is one deterministic run. The plan reads and checks every file of every
 // cell before any work (check_inputs); the run reads its one file again, once per (cell,
-// repetition), outside the per-sample loop, then evaluates f in the kernels' batches.
+// repetition), outside the per-sample loop, then evaluates f in the kernels' batches. The keys,
+// sizes and file reading are external.hpp's, which importance and the irradiance methods share.
+#include "external.hpp"
 #include "families.hpp"
 
+#include "quadmc/core/errors.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/methods/registry.hpp"
 #include "quadmc/rules/weighted_sum.hpp"
 #include "quadmc/sampling/point_file.hpp"
 
@@ -29,6 +33,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace quadmc::methods {
@@ -37,11 +42,19 @@ namespace {
 // The N of one cell may not exceed what one file may hold in one column.
 constexpr std::size_t max_point_counts = 256;
 
-struct external_options {
-  std::string path;  // the template, as given
-  std::filesystem::path folder;
-  std::vector<std::uint64_t> points;
-};
+std::vector<std::uint64_t> read_increasing_points(option_reader& r) {
+  const std::string what = fmt::format("a point count between 1 and {}", max_point_file_values);
+  auto given = r.counts("points", 1, max_point_file_values, max_point_counts, what);
+  if (!given) return {};
+  for (std::size_t i = 1; i < given->size(); ++i) {
+    if ((*given)[i] <= (*given)[i - 1]) {
+      r.fail_element(
+          "points", i,
+          fmt::format("point counts must increase, got {} after {}", (*given)[i], (*given)[i - 1]));
+    }
+  }
+  return std::move(*given);
+}
 
 // A file's nodes and weights as a weighted point set (rules/weighted_point_set.hpp): generate
 // copies rows, so the kernel sums them in the file's order.
@@ -61,32 +74,20 @@ struct file_rule {
 
 class external_method final : public method {
  public:
-  external_method(const method_descriptor& d, point_file_columns columns, external_options options)
+  external_method(const method_descriptor& d, point_file_columns columns,
+                  point_file_options options)
       : method(d), columns_(columns), options_(std::move(options)) {}
 
   quadmc::error_bars error_bars() const override { return error_bars::replicates; }
 
-  sizing size_for(std::uint64_t N, std::size_t) const override {
-    if (N > max_point_file_values) {
-      return {std::nullopt, fmt::format("N = {} is above the {} values a point file may hold", N,
-                                        max_point_file_values)};
-    }
-    return {cell_size{N, 0, 0, 0}, {}};
-  }
+  sizing size_for(std::uint64_t N, std::size_t) const override { return point_file_sizing(N); }
 
   std::vector<sizing> explicit_sizes(std::size_t) const override {
-    std::vector<sizing> out;
-    for (const std::uint64_t n : options_.points) out.push_back({cell_size{n, 0, 0, 0}, {}});
-    return out;
+    return point_file_sizes(options_);
   }
   std::string explicit_sizes_key() const override { return "points"; }
 
-  theoretical_rate theory(const integrand_class&) const override {
-    return {std::nullopt,
-            "points from a file: no rate is known for them; the replicates' spread gives the "
-            "error bars",
-            "docs/theory.md#replicate-error-bars"};
-  }
+  theoretical_rate theory(const integrand_class&) const override { return point_file_theory(); }
 
   bool shares_chunks() const override {
     return columns_ == point_file_columns::points
@@ -122,15 +123,40 @@ class external_method final : public method {
 
  private:
   point_file_data read(std::uint64_t N, std::uint64_t r, std::size_t s) const {
-    return read_point_file(point_file_path(options_.path, N, r, options_.folder), columns_, N, s);
+    return read_cell_file(options_, columns_, N, r, s);
   }
 
   point_file_columns columns_;
-  external_options options_;
+  point_file_options options_;
 };
 
-external_options read_external_options(option_reader& r) {
-  external_options o;
+constexpr std::array<option_doc, 2> external_option_docs{point_file_path_doc,
+                                                         point_file_points_doc};
+constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+
+const std::array<method_descriptor, 2> descriptors{{
+    {"external_points",
+     "equal-weight points read from files (CSV or .npy), one per N and realization; error bars "
+     "from replicates",
+     method_kind::randomized, external_option_docs, fixed_only,
+     [](const method_descriptor& d, option_reader& r) -> std::unique_ptr<const method> {
+       return std::make_unique<external_method>(d, point_file_columns::points,
+                                                read_point_file_options(r));
+     }},
+    {"external_rule",
+     "nodes and weights read from files (last column the weight, any sign): vol·Σ w f; error "
+     "bars from replicates",
+     method_kind::randomized, external_option_docs, fixed_only,
+     [](const method_descriptor& d, option_reader& r) -> std::unique_ptr<const method> {
+       return std::make_unique<external_method>(d, point_file_columns::points_and_weights,
+                                                read_point_file_options(r));
+     }},
+}};
+
+}  // namespace
+
+point_file_options read_point_file_options(option_reader& r) {
+  point_file_options o;
   auto path = r.string("path", "a file path template with {N} and {r}");
   if (!path) r.fail_missing("path", "expected a file path template with {N} and {r}");
   for (const std::string_view needed : {"{N}", "{r}"}) {
@@ -141,48 +167,51 @@ external_options read_external_options(option_reader& r) {
   }
   o.path = std::move(*path);
   o.folder = r.folder();
-  const std::string what = fmt::format("a point count between 1 and {}", max_point_file_values);
-  if (auto given = r.counts("points", 1, max_point_file_values, max_point_counts, what)) {
-    for (std::size_t i = 1; i < given->size(); ++i) {
-      if ((*given)[i] <= (*given)[i - 1]) {
-        r.fail_element("points", i,
-                       fmt::format("point counts must increase, got {} after {}", (*given)[i],
-                                   (*given)[i - 1]));
-      }
-    }
-    o.points = std::move(*given);
-  }
+  o.points = read_increasing_points(r);
   return o;
 }
 
-constexpr std::array<option_doc, 2> external_option_docs{{
-    {"path",
-     "the file per (N, realization): a template with {N} and {r} (r = 0 … repetitions − 1), "
-     "relative to the scene file's folder or absolute; CSV or .npy (required)"},
-    {"points", "explicit N per cell (an integer or an increasing list), replacing budget.N"},
-}};
-constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+sizing point_file_sizing(std::uint64_t N) {
+  if (N > max_point_file_values) {
+    return {std::nullopt, fmt::format("N = {} is above the {} values a point file may hold", N,
+                                      max_point_file_values)};
+  }
+  return {cell_size{N, 0, 0, 0}, {}};
+}
 
-const std::array<method_descriptor, 2> descriptors{{
-    {"external_points",
-     "equal-weight points read from files (CSV or .npy), one per N and realization; error bars "
-     "from replicates",
-     method_kind::randomized, external_option_docs, fixed_only,
-     [](const method_descriptor& d, option_reader& r) -> std::unique_ptr<const method> {
-       return std::make_unique<external_method>(d, point_file_columns::points,
-                                                read_external_options(r));
-     }},
-    {"external_rule",
-     "nodes and weights read from files (last column the weight, any sign): vol·Σ w f; error "
-     "bars from replicates",
-     method_kind::randomized, external_option_docs, fixed_only,
-     [](const method_descriptor& d, option_reader& r) -> std::unique_ptr<const method> {
-       return std::make_unique<external_method>(d, point_file_columns::points_and_weights,
-                                                read_external_options(r));
-     }},
-}};
+std::vector<sizing> point_file_sizes(const point_file_options& o) {
+  std::vector<sizing> out;
+  for (const std::uint64_t n : o.points) out.push_back({cell_size{n, 0, 0, 0}, {}});
+  return out;
+}
 
-}  // namespace
+point_file_data read_cell_file(const point_file_options& o, point_file_columns columns,
+                               std::uint64_t N, std::uint64_t r, std::size_t s) {
+  return read_point_file(point_file_path(o.path, N, r, o.folder), columns, N, s);
+}
+
+point_file_data read_uniform_file(const point_file_options& o, std::uint64_t N, std::uint64_t r,
+                                  std::size_t uniforms, std::string_view who,
+                                  std::string_view why) {
+  // Read with any s, then refuse another count here: the file's own check would blame the
+  // integrand's dimension, which is not what these columns are (the warp's input is).
+  const std::filesystem::path file = point_file_path(o.path, N, r, o.folder);
+  point_file_data data = read_point_file(file, point_file_columns::points, N, 0);
+  if (data.s != uniforms) {
+    throw invalid_argument(fmt::format("point file {}", file.string()),
+                           fmt::format("{} columns", data.s),
+                           fmt::format("{} ({} {}: point_set = \"{}\" needs s = {})", uniforms, who,
+                                       why, external_point_set, uniforms));
+  }
+  return data;
+}
+
+theoretical_rate point_file_theory() {
+  return {std::nullopt,
+          "points from a file: no rate is known for them; the replicates' spread gives the "
+          "error bars",
+          "docs/theory.md#replicate-error-bars"};
+}
 
 std::span<const method_descriptor> external_methods() noexcept {
   return descriptors;

@@ -1,6 +1,8 @@
 // Importance sampling of a 1D integrand with a warp of sampling/inversion_warps.hpp as a method:
 // the warp's uniforms come from any point set (`point_set`, independent by default), so the
-// density and the stratification can be studied apart.
+// density and the stratification can be studied apart. With point_set = "external_points" they
+// are the rows of a user's 1-column files (external.hpp: `path`, `points`), run through the same
+// kernel, so a set's points read back from files give that set's bits.
 #include "families.hpp"
 
 #include "quadmc/methods/registry.hpp"
@@ -82,13 +84,16 @@ std::pair<const warp_choice*, double> read_warp(option_reader& r) {
 }
 
 class importance_method final : public method {
+  // The warp is a 1D density: one u per sample, so a file of uniforms has one column.
+  static constexpr uniform_use uniforms{1, "importance", "warps one uniform per sample"};
+
  public:
   importance_method(const method_descriptor& d, const warp_choice& warp, double parameter,
                     point_set_choice points)
       : method(d), warp_(&warp), parameter_(parameter), points_(points) {}
 
   std::string label_suffix() const override {
-    return points_.given ? fmt::format("_{}_{}", warp_->name, points_.set->name)
+    return points_.given ? fmt::format("_{}_{}", warp_->name, points_.name())
                          : fmt::format("_{}", warp_->name);
   }
 
@@ -97,23 +102,35 @@ class importance_method final : public method {
     return fmt::format("the '{}' warp is a 1D density; the integrand has s = {}", warp_->name, f.s);
   }
 
-  sizing size_for(std::uint64_t N, std::size_t s) const override {
-    return point_set_sizing(*points_.set, N, s);
+  sizing size_for(std::uint64_t N, std::size_t s) const override { return points_.size_for(N, s); }
+  std::vector<sizing> explicit_sizes(std::size_t) const override {
+    return points_.explicit_sizes();
   }
+  std::string explicit_sizes_key() const override { return points_.explicit_sizes_key(); }
 
-  quadmc::error_bars error_bars() const override { return error_bars_of(points_.set->errors); }
+  quadmc::error_bars error_bars() const override { return points_.error_bars(); }
 
   theoretical_rate theory(const integrand_class& f) const override {
+    if (points_.file) return point_file_theory();
     return root_n_rate(f, "(∫f²/p − I²)/N; zero variance (no slope, rounding floor) iff p ∝ f ≥ 0",
                        "docs/theory.md#importance; [Ramamoorthi 2009, §4.1]");
   }
 
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
 
+  void check_inputs(std::size_t, const cell_size& size, std::uint64_t repetitions) const override {
+    check_uniform_files(points_, uniforms, size, repetitions);
+  }
+
   repetition_result run(const method_cell& cell, const run_context& context) const override {
-    return from_estimate(points_.set->importance(cell.function, {warp_->kind, parameter_},
-                                                 {context.seed, cell.stream}, cell.size.evaluations,
-                                                 context.threads));
+    const unit_warp warp{warp_->kind, parameter_};
+    if (points_.file) {
+      const point_file_data u = read_uniform_file(points_, uniforms, cell);
+      return from_estimate(
+          importance_over_file(cell.function, warp, file_points(u), context.threads));
+    }
+    return from_estimate(points_.set->importance(cell.function, warp, {context.seed, cell.stream},
+                                                 cell.size.evaluations, context.threads));
   }
 
  private:
@@ -122,7 +139,7 @@ class importance_method final : public method {
   point_set_choice points_;
 };
 
-constexpr std::array<option_doc, 2> option_docs{{
+constexpr std::array<option_doc, 4> option_docs{{
     {"warp",
      "required: \"power\", \"exponential\", or { name = \"power\", exponent = k } (p(x) = (k+1) "
      "x^k on [0,1], -1 < k <= 1e5, default 1) / { name = \"exponential\", rate = l } (the "
@@ -130,9 +147,15 @@ constexpr std::array<option_doc, 2> option_docs{{
      "label gets \"_<warp>\""},
     {"point_set",
      "the pattern of the uniforms fed to the warp (independent [default], jittered, unjittered, "
-     "padded_jittered, latin_hypercube, sobol, halton, lattice: their default randomization); "
-     "counts "
-     "are mapped as for that method"},
+     "padded_jittered, latin_hypercube, sobol, halton, lattice: their default randomization, "
+     "counts mapped as for that method; or external_points: the rows of the files of `path`, 1 "
+     "column, error bars from replicates); the label then gets \"_<warp>_<point_set>\""},
+    {"path",
+     "point_set = \"external_points\" only (then required): the file of uniforms per (N, "
+     "realization), 1 column, a template with {N} and {r} as for the external_points method"},
+    {"points",
+     "point_set = \"external_points\" only: explicit N per cell (an integer or an increasing "
+     "list), replacing budget.N"},
 }};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 

@@ -1,6 +1,8 @@
 // Plain Monte Carlo and the stratified patterns as methods: each is the sample mean of f over a
 // point set of estimators/point_set_catalogue.hpp, named after it (plain_mc: independent points).
-// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²).
+// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²). Also the
+// `point_set` key of the methods that take one (families.hpp's read_point_set), a catalogue set
+// or the user's files.
 #include "families.hpp"
 
 #include <fmt/format.h>
@@ -10,16 +12,70 @@
 
 namespace quadmc::methods {
 
+std::string_view point_set_choice::name() const noexcept {
+  return file ? external_point_set : set->name;
+}
+
+sizing point_set_choice::size_for(std::uint64_t N, std::size_t s) const {
+  return file ? point_file_sizing(N) : point_set_sizing(*set, N, s);
+}
+
+std::vector<sizing> point_set_choice::explicit_sizes() const {
+  return file ? point_file_sizes(*file) : std::vector<sizing>{};
+}
+
+quadmc::error_bars point_set_choice::error_bars() const noexcept {
+  return file ? error_bars::replicates : error_bars_of(set->errors);
+}
+
+namespace {
+
+// `path` and `points` belong to the files: beside a catalogue set (or none) they would be
+// silently unused, so each is refused at its key.
+void refuse_file_keys(option_reader& options, const point_set_choice& choice) {
+  const std::string got = choice.given ? fmt::format("point_set = \"{}\"", choice.set->name)
+                                       : std::string("no point_set (independent points)");
+  for (const std::string_view key : {"path", "points"}) {
+    if (!options.has(key)) continue;
+    options.fail(key, fmt::format("expected only with point_set = \"{}\" (the files' rows as the "
+                                  "uniforms), got it with {}",
+                                  external_point_set, got));
+  }
+}
+
+}  // namespace
+
 point_set_choice read_point_set(option_reader& options) {
   point_set_choice out;
   out.set = find_point_set("independent");
   std::vector<std::string_view> names;
   for (const point_set_entry& e : point_set_catalogue()) names.push_back(e.name);
+  names.push_back(external_point_set);
   if (auto name = options.choice("point_set", names)) {
-    out.set = find_point_set(*name);
     out.given = true;
+    if (*name == external_point_set) {
+      out.set = nullptr;
+      out.file = read_point_file_options(options);
+      return out;
+    }
+    out.set = find_point_set(*name);
   }
+  refuse_file_keys(options, out);
   return out;
+}
+
+void check_uniform_files(const point_set_choice& points, const uniform_use& use,
+                         const cell_size& size, std::uint64_t repetitions) {
+  if (!points.file) return;
+  for (std::uint64_t r = 0; r < repetitions; ++r) {
+    (void)read_uniform_file(*points.file, size.evaluations, r, use.s, use.who, use.why);
+  }
+}
+
+point_file_data read_uniform_file(const point_set_choice& points, const uniform_use& use,
+                                  const method_cell& cell) {
+  return read_uniform_file(*points.file, cell.size.evaluations, cell.repetition, use.s, use.who,
+                           use.why);
 }
 
 sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s) {

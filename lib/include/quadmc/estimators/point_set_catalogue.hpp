@@ -224,6 +224,17 @@ struct point_set_entry {
   error_source errors_with(const point_set_options& options) const noexcept;
 };
 
+class file_points;  // sampling/point_file.hpp
+
+// The importance and irradiance estimators of the entries, over a file's points instead of a
+// catalogue set (point_set = "external_points" of those methods): the same kernels in the same
+// chunks, so the points of a set, read back from a file, give the bits of that set's own
+// estimator.
+estimate importance_over_file(const any_integrand& f, const unit_warp& warp,
+                              const file_points& points, unsigned threads);
+estimate irradiance_over_file(irradiance_sampling technique, const irradiance_setup& setup,
+                              const file_points& points, unsigned threads);
+
 // Every set, in listing order.
 std::span<const point_set_entry> point_set_catalogue() noexcept;
 // The entry named `name`, or nullptr.

@@ -37,6 +37,14 @@ struct warp_descriptor {
 };
 std::span<const warp_descriptor> importance_warps() noexcept;
 
+// The one `point_set` of importance and the irradiance methods that is not a catalogue set
+// (estimators/point_set_catalogue.hpp): the u are the rows of the user's files, read with the keys
+// and checks of the external_points method (`path`, `points`). Its one line in `quadmc list`.
+inline constexpr std::string_view external_point_set = "external_points";
+inline constexpr std::string_view external_point_set_description =
+    "the rows of the user's files (keys path, points as for the external_points method): 1 "
+    "column for importance, 2 for the irradiance methods; error bars from replicates";
+
 // The plugin point for methods the library must not depend on: the peers of bench/peers/ (GSL,
 // cubature: GPL libraries, so an MIT build of quadmc cannot contain them). A build of the command
 // that links them adds their family from a static initialiser, before main, so every later lookup
