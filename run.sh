@@ -50,10 +50,16 @@ PEER_PACKAGES=(libgsl-dev libcubature-dev python3-scipy)
 # Open MPI: `mpirun -np K quadmc run SCENE.toml` (bench/quadmc/mpi_run.hpp). The command is
 # built with MPI where CMake finds it (QUADMC_MPI=AUTO), and tests/mpi/ runs mpirun on loopback.
 MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
+# The Python module `import quadmc` (bench/python/): Python's C headers (python3-dev; Debian's
+# pybind11-dev does not depend on them), numpy, pybind11, and pytest for its suite (tests/python/).
+# The test preset requires them (QUADMC_PYTHON=ON); the release preset builds the module only
+# where they happen to be installed (AUTO), so README command 1 needs none of them.
+PYTHON_MODULE_PACKAGES=(python3-dev python3-numpy pybind11-dev python3-pytest)
 # What the tests need: the library, the plots of the end-to-end runs, the peers, whose adapter
-# tests (tests/peers/) build only where they are installed (ctest passes without them too), and
-# Open MPI for the mpirun tests (tests/mpi/, likewise built only with it).
-TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}" "${MPI_PACKAGES[@]}")
+# tests (tests/peers/) build only where they are installed (ctest passes without them too), Open
+# MPI for the mpirun tests (tests/mpi/, likewise built only with it), and the Python module.
+TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
+               "${PYTHON_MODULE_PACKAGES[@]}")
 # What only the benchmark command adds: the peers measured beside quadmc in bench/peers, and
 # Open MPI for the command's mpirun use.
 BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}"

@@ -27,6 +27,11 @@ import sys
 COMMANDS = {"bench": "release", "benchmarks": "release", "test": "test", "sanitize": "sanitize",
             "fuzz": "sanitize", "package": "package"}
 FINDS = {"find_package", "find_path", "find_library", "find_program"}
+# find_package through CMake's own find modules, which cache what they found under other names
+# than <name>_DIR: (cache variable, file inside it) per component. FindPython3 (the Python module
+# of bench/python/): the C headers (Development.Module) and numpy's.
+MODULE_FINDS = {"Python3": [("_Python3_INCLUDE_DIR", "Python.h"),
+                            ("_Python3_NumPy_INCLUDE_DIR", "numpy/arrayobject.h")]}
 
 
 def run(args, **kw):
@@ -55,6 +60,9 @@ def required_finds(trace_file, source_dir):
             if command == "find_path":
                 inside = args[2] if args[1] == "NAMES" else args[1]
             finds.append((command, name, variable, inside))
+            # A find module that caches no <name>_DIR: the files it found, one per component.
+            for variable, inside in MODULE_FINDS.get(name, []):
+                finds.append((command, name, variable, inside))
     return finds
 
 

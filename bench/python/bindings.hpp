@@ -1,0 +1,36 @@
+// The Python module `quadmc` (bench/python/): a front end over the library like the `quadmc`
+// command, for scripts and notebooks that want the suite's points, discrepancies and integrands
+// as numpy arrays. The extension `_quadmc` is registered in module.cpp from one file per concept,
+// each adding its functions through one add_… below; a new concept (integrate, run) is a new file
+// and one line there. quadmc/__init__.py re-exports it, so Python-side classes can join it later.
+//
+// Contract of every function: arrays are float64, row-major (n, s), the layout of the batch
+// contract (docs/design.md#hot-path-contract); the library's one-line errors
+// (quadmc::invalid_argument) reach Python as ValueError with the same text; the GIL is released
+// while C++ computes, never while Python objects are touched.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace quadmc_python {
+
+void add_errors(pybind11::module_& m);       // errors.cpp: the exception translation
+void add_points(pybind11::module_& m);       // points.cpp: quadmc.points
+void add_discrepancy(pybind11::module_& m);  // discrepancy.cpp: quadmc.discrepancy
+void add_catalogue(pybind11::module_& m);    // catalogue.cpp: integrands(), methods(), point_sets()
+void add_integrand(pybind11::module_& m);    // integrand.cpp: quadmc.integrand, its class
+
+// A Python value as an error message quotes it: a string as a command line gives it (owen, not
+// 'owen'), anything else as repr() shows it.
+std::string quoted(const pybind11::handle& value);
+
+// A Python int as a count in [minimum, 2^64 − 1], else invalid_argument naming `parameter`
+// (pybind11's own conversion would raise TypeError for −1 without naming it).
+std::uint64_t to_count(const pybind11::handle& value, std::string_view parameter,
+                       std::uint64_t minimum);
+
+}  // namespace quadmc_python

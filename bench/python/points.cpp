@@ -1,0 +1,140 @@
+// quadmc.points(set, n, s, seed=0, stream=0, randomization=None, **options): the points of any
+// set of the catalogue (estimators/point_set_catalogue.hpp) as an (n, s) float64 array, bitwise
+// the numbers `quadmc points` writes for the same set, options, seed and stream: both take them
+// from the entry's own points(), which this writes straight into the array's buffer with the GIL
+// released. The set's options are Python keywords (randomization="owen", allow_any_n=True); a
+// key the set lacks is refused, as `quadmc points` refuses its flag, even when its value is the
+// default, so that a typo never passes for a choice.
+#include "bindings.hpp"
+
+#include "quadmc/core/errors.hpp"
+#include "quadmc/estimators/point_set_catalogue.hpp"
+
+#include <pybind11/numpy.h>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace quadmc_python {
+
+namespace {
+
+// The largest s `quadmc points` takes (its --s range): beyond it no set has tables.
+constexpr std::uint64_t max_dimension = std::uint64_t{1} << 20;
+
+// The sets that have `key`, for the message refusing it on a set that lacks it.
+std::string owners_of(std::string_view key) {
+  std::vector<std::string_view> owners;
+  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
+    if (set.option(key) != nullptr) owners.push_back(set.name);
+  }
+  return fmt::format("{}", fmt::join(owners, ", "));
+}
+
+// One keyword's value as the set reads it: a choice's text, "true" for a flag set, empty for a
+// flag left false (the default).
+std::string value_of(const quadmc::point_set_entry& set, const quadmc::point_set_option& option,
+                     const py::handle& value) {
+  const std::string text = quoted(value);
+  if (option.is_flag()) {
+    if (!py::isinstance<py::bool_>(value)) {
+      throw quadmc::invalid_argument(option.key, text, "True or False");
+    }
+    return value.cast<bool>() ? "true" : "";
+  }
+  const std::string choice = py::isinstance<py::str>(value) ? value.cast<std::string>() : "";
+  if (std::find(option.choices.begin(), option.choices.end(), choice) == option.choices.end()) {
+    throw quadmc::invalid_argument(
+        option.key, text,
+        fmt::format("one of {} for {}", fmt::join(option.choices, ", "), set.name));
+  }
+  return choice;
+}
+
+// The keywords as the set reads them, every key checked against the set's own.
+quadmc::point_set_options options_for(const quadmc::point_set_entry& set,
+                                      const py::dict& keywords) {
+  std::vector<std::string> texts(set.options.size());
+  for (const auto& [key, value] : keywords) {
+    const std::string name = py::str(key);
+    const quadmc::point_set_option* option = set.option(name);
+    if (option == nullptr) {
+      throw quadmc::invalid_argument(
+          name, quoted(value),
+          fmt::format("no {} for {} ({} only)", name, set.name, owners_of(name)));
+    }
+    texts[static_cast<std::size_t>(option - set.options.data())] = value_of(set, *option, value);
+  }
+  const std::vector<std::string_view> values(texts.begin(), texts.end());
+  return set.options_of(values);
+}
+
+const quadmc::point_set_entry& find_set(const std::string& name) {
+  const quadmc::point_set_entry* set = quadmc::find_point_set(name);
+  if (set == nullptr) {
+    throw quadmc::invalid_argument("set", name,
+                                   fmt::format("one of: {}", quadmc::point_set_names()));
+  }
+  return *set;
+}
+
+py::array_t<double> points(const std::string& set_name, const py::object& n_value,
+                           const py::object& s_value, const py::object& seed_value,
+                           const py::object& stream_value, const py::object& randomization,
+                           const py::kwargs& keywords) {
+  const quadmc::point_set_entry& set = find_set(set_name);
+  const std::uint64_t n = to_count(n_value, "n", 1);
+  const std::uint64_t s = to_count(s_value, "s", 1);
+  const quadmc::sample_stream stream{to_count(seed_value, "seed", 0),
+                                     to_count(stream_value, "stream", 0)};
+  py::dict given(keywords);
+  if (!randomization.is_none()) given["randomization"] = randomization;
+  const quadmc::point_set_options options = options_for(set, given);
+  // The dimension first, so that a set that cannot have s dimensions blames s, not n.
+  if (s > max_dimension) {
+    throw quadmc::invalid_argument("s", std::to_string(s), "s ≤ 2^20");
+  }
+  if (const std::string problem = quadmc::dimension_problem(set, s); !problem.empty()) {
+    throw quadmc::invalid_argument("s", std::to_string(s), problem);
+  }
+  if (const std::string problem = quadmc::size_problem(set, s, n, options); !problem.empty()) {
+    throw quadmc::invalid_argument("n", fmt::format("{} (s = {})", n, s), problem);
+  }
+  // numpy refuses a shape whose size overflows, and raises MemoryError when it cannot allocate.
+  py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(s)});
+  double* data = out.mutable_data();
+  {
+    py::gil_scoped_release unlocked;
+    set.points(
+        s, n, stream,
+        [&](std::uint64_t first, std::span<const double> x) {
+          std::memcpy(data + first * s, x.data(), x.size_bytes());
+        },
+        options);
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_points(py::module_& m) {
+  m.def("points", &points, py::arg("set"), py::arg("n"), py::arg("s"), py::arg("seed") = 0,
+        py::arg("stream") = 0, py::arg("randomization") = py::none(),
+        R"(The n points of a point set in s dimensions as an (n, s) float64 array.
+
+Bitwise the numbers `quadmc points SET --n N --s S --seed SEED --stream STREAM` writes.
+set: a name of quadmc.point_sets(); randomization and the set's other options (periodization,
+allow_any_n=True, drop_first_point=True) as keywords, as quadmc.point_sets() lists them.
+Raises ValueError naming the parameter for an unknown set or key, a bad value, or an n the set
+cannot hold (N = 2^m for a randomized net, k^s for a grid).)");
+}
+
+}  // namespace quadmc_python

@@ -1,0 +1,17 @@
+"""quadmc from Python: the suite's point sets, discrepancies, integrands and methods as numpy.
+
+    import quadmc
+    x = quadmc.points("sobol", 1024, 3, seed=7, randomization="owen")   # (1024, 3) float64
+    quadmc.discrepancy(x, "l2_star")
+    f = quadmc.integrand("genz_gaussian", s=3, seed=1)
+    f(x).mean() - f.exact
+
+The functions come from the C++ extension _quadmc (bench/python/*.cpp, one file per concept),
+built over the library; the points are bitwise those of `quadmc points`, the errors the
+library's one-line messages as ValueError. Python-side helpers join this package beside it.
+"""
+from ._quadmc import (Integrand, discrepancy, integrand, integrands, methods, point_sets,
+                      points)
+
+__all__ = ["Integrand", "discrepancy", "integrand", "integrands", "methods", "point_sets",
+           "points"]
