@@ -11,8 +11,9 @@
 #   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
 #   ./run.sh consumer   install the package into a prefix and build two outside find_package users
 #                       (tests/consumer/, bench/examples/own_integrand/)
-#   ./run.sh package    build the Debian package (cpack -G DEB) → build/package/deb/quadmc_*.deb
-#                       and check it extracted into a scratch root (tests/package/check_package.sh)
+#   ./run.sh package    build the Debian packages (cpack -G DEB) → build/package/deb/: quadmc_*.deb,
+#                       libquadmc-dev_*.deb, python3-quadmc_*.deb, and check them extracted into a
+#                       scratch root (tests/package/check_package.sh)
 #   ./run.sh deps       only install what is missing (idempotent: does nothing when all is present)
 #   ./run.sh packages [COMMAND]   print every package of every install list (or COMMAND's), one per
 #                       line (.ci/run uses it)
@@ -51,15 +52,16 @@ PEER_PACKAGES=(libgsl-dev libcubature-dev python3-scipy)
 # built with MPI where CMake finds it (QUADMC_MPI=AUTO), and tests/mpi/ runs mpirun on loopback.
 MPI_PACKAGES=(libopenmpi-dev openmpi-bin)
 # The Python module `import quadmc` (bench/python/): Python's C headers (python3-dev; Debian's
-# pybind11-dev does not depend on them), numpy, pybind11, and pytest for its suite (tests/python/).
-# The test preset requires them (QUADMC_PYTHON=ON); the release preset builds the module only
-# where they happen to be installed (AUTO), so README command 1 needs none of them.
-PYTHON_MODULE_PACKAGES=(python3-dev python3-numpy pybind11-dev python3-pytest)
+# pybind11-dev does not depend on them), numpy and pybind11. The test and package presets require
+# them (QUADMC_PYTHON=ON); the release preset builds the module only where they happen to be
+# installed (AUTO), so README command 1 needs none of them.
+PYTHON_MODULE_PACKAGES=(python3-dev python3-numpy pybind11-dev)
 # What the tests need: the library, the plots of the end-to-end runs, the peers, whose adapter
 # tests (tests/peers/) build only where they are installed (ctest passes without them too), Open
-# MPI for the mpirun tests (tests/mpi/, likewise built only with it), and the Python module.
+# MPI for the mpirun tests (tests/mpi/, likewise built only with it), and the Python module with
+# pytest for its suite (tests/python/).
 TEST_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}" "${MPI_PACKAGES[@]}"
-               "${PYTHON_MODULE_PACKAGES[@]}")
+               "${PYTHON_MODULE_PACKAGES[@]}" python3-pytest)
 # What only the benchmark command adds: the peers measured beside quadmc in bench/peers, and
 # Open MPI for the command's mpirun use.
 BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}"
@@ -77,11 +79,12 @@ FORMAT_PACKAGES=(clang-format)
 # MPI (the installed quadmc::command links it where the test build found it, and quadmcConfig.cmake
 # then finds it again), and python3 for the check of bench/examples/own_integrand's results.
 CONSUMER_PACKAGES=("${LIB_PACKAGES[@]}" "${MPI_PACKAGES[@]}" python3)
-# The Debian package: the library and the command (no tests, no benchmarks), CPack's DEB generator
-# with dpkg-shlibdeps (dpkg-dev) and `file` to declare the shared libraries it needs, and the
-# plots, since its check runs the extracted command with plots on.
-PACKAGE_PACKAGES=("${BUILD_PACKAGES[@]}" "${LIBRARY_PACKAGES[@]}" dpkg-dev file
-                  "${PLOT_PACKAGES[@]}")
+# The Debian packages: the library, the command and the Python module (no tests, no benchmarks),
+# CPack's DEB generator with dpkg-shlibdeps (dpkg-dev) and `file` to declare the shared libraries
+# they need, and the plots, since the check runs the extracted command with plots on (and imports
+# the extracted module with Debian's python3 and numpy).
+PACKAGE_PACKAGES=("${BUILD_PACKAGES[@]}" "${LIBRARY_PACKAGES[@]}" "${PYTHON_MODULE_PACKAGES[@]}"
+                  dpkg-dev file "${PLOT_PACKAGES[@]}")
 
 install_missing() {
   local missing=()
@@ -200,13 +203,10 @@ case "${1:-}" in
     cmake --preset package >/dev/null
     cmake --build --preset package
     rm -rf build/package/deb
+    # One .deb per install COMPONENT (cmake/packaging.cmake); the check finds each by its name
+    # and fails on a missing or a stray one.
     cpack -G DEB --config build/package/CPackConfig.cmake -B build/package/deb >/dev/null
-    debs=(build/package/deb/quadmc_*.deb)
-    if [ ${#debs[@]} -ne 1 ] || [ ! -f "${debs[0]}" ]; then
-      echo "run.sh: expected one build/package/deb/quadmc_*.deb, found: ${debs[*]}" >&2
-      exit 1
-    fi
-    tests/package/check_package.sh "${debs[0]}" build/package-check
+    tests/package/check_package.sh build/package/deb build/package-check
     ;;
   *)
     echo "usage: ./run.sh bench | test | benchmarks | sanitize | format | fuzz [SECONDS] | consumer | package | deps | packages" >&2
