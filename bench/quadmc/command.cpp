@@ -472,6 +472,9 @@ int quadmc::command_main(int argc, char** argv, const command_options& options) 
     // One line: the library's messages are single lines naming file, line, key or parameter.
     // Under mpirun every rank meets the same error; rank 0 says it.
     if (mpi.world.rank == 0) fmt::print(stderr, "{}: {}\n", program, one_line(e.what()));
+    // The failure is said: when another rank's exit makes mpirun end this one with SIGTERM while
+    // it finalizes MPI, that is no interruption to report (a second line the user did not cause).
+    interruption::set_quiet(true);
     return exit_failure;
   }
   return exit_usage;
