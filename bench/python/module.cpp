@@ -8,4 +8,5 @@ PYBIND11_MODULE(_quadmc, m) {
   quadmc_python::add_discrepancy(m);
   quadmc_python::add_catalogue(m);
   quadmc_python::add_integrand(m);
+  quadmc_python::add_integrate(m);
 }
