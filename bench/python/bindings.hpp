@@ -24,6 +24,7 @@ void add_discrepancy(pybind11::module_& m);  // discrepancy.cpp: quadmc.discrepa
 void add_catalogue(pybind11::module_& m);    // catalogue.cpp: integrands(), methods(), point_sets()
 void add_integrand(pybind11::module_& m);    // integrand.cpp: quadmc.integrand, its class
 void add_integrate(pybind11::module_& m);    // integrate.cpp: quadmc.integrate's C++ half
+void add_run(pybind11::module_& m);          // run.cpp: quadmc.run's C++ half, SceneRun
 
 // A Python value as an error message quotes it: a string as a command line gives it (owen, not
 // 'owen'), anything else as repr() shows it.

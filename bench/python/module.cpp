@@ -9,4 +9,5 @@ PYBIND11_MODULE(_quadmc, m) {
   quadmc_python::add_catalogue(m);
   quadmc_python::add_integrand(m);
   quadmc_python::add_integrate(m);
+  quadmc_python::add_run(m);
 }
