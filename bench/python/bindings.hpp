@@ -1,8 +1,8 @@
 // The Python module `quadmc` (bench/python/): a front end over the library like the `quadmc`
 // command, for scripts and notebooks that want the suite's points, discrepancies and integrands
 // as numpy arrays. The extension `_quadmc` is registered in module.cpp from one file per concept,
-// each adding its functions through one add_… below; a new concept (integrate, run) is a new file
-// and one line there. quadmc/__init__.py re-exports it, so Python-side classes can join it later.
+// each adding its functions through one add_… below; a new concept is a new file and one line
+// there. quadmc/__init__.py re-exports it, so Python-side classes can join it later.
 //
 // Contract of every function: arrays are float64, row-major (n, s), the layout of the batch
 // contract (docs/design.md#hot-path-contract); the library's one-line errors
@@ -23,6 +23,8 @@ void add_points(pybind11::module_& m);       // points.cpp: quadmc.points
 void add_discrepancy(pybind11::module_& m);  // discrepancy.cpp: quadmc.discrepancy
 void add_catalogue(pybind11::module_& m);    // catalogue.cpp: integrands(), methods(), point_sets()
 void add_integrand(pybind11::module_& m);    // integrand.cpp: quadmc.integrand, its class
+void add_integrate(pybind11::module_& m);    // integrate.cpp: quadmc.integrate's C++ half
+void add_run(pybind11::module_& m);          // run.cpp: quadmc.run's C++ half, SceneRun
 
 // A Python value as an error message quotes it: a string as a command line gives it (owen, not
 // 'owen'), anything else as repr() shows it.

@@ -8,4 +8,6 @@ PYBIND11_MODULE(_quadmc, m) {
   quadmc_python::add_discrepancy(m);
   quadmc_python::add_catalogue(m);
   quadmc_python::add_integrand(m);
+  quadmc_python::add_integrate(m);
+  quadmc_python::add_run(m);
 }

@@ -134,6 +134,8 @@ add_expected python3-quadmc "$dist_packages/quadmc/_quadmc$ext_suffix"
 for python_file in "$source_dir"/bench/python/quadmc/*.py; do
   add_expected python3-quadmc "$dist_packages/quadmc/$(basename "$python_file")"
 done
+# The command's plot script, which quadmc.run's write draws the SVGs with (bench/python/CMakeLists.txt).
+add_expected python3-quadmc "$dist_packages/quadmc/plot.py"
 add_expected python3-quadmc usr/share/doc/python3-quadmc/copyright
 allowed[python3-quadmc]="$dist_packages/quadmc/* usr/share/doc/python3-quadmc/*"
 

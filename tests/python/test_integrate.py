@@ -1,0 +1,129 @@
+"""quadmc.integrate: a method of the registry on a catalogue Integrand or a Python callable, run as
+a scene's cell (bench/python/integrate.cpp). A numpy twin of a catalogue integrand gives the
+catalogue's estimate; the same arguments give the same bits; errors raised by the callable reach
+Python as they were raised; bad input is ValueError with the library's one-line text."""
+import math
+
+import numpy as np
+import pytest
+
+import quadmc
+
+EPS = np.finfo(np.float64).eps
+A, U = [1.0, 2.0, 0.5, 1.5], [0.3, 0.6, 0.45, 0.2]
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return quadmc.integrand("genz_gaussian", s=4, a=A, u=U)
+
+
+def twin(x):
+    """genz_gaussian as functions/genz.hpp evaluates it: e = Σ_j a_j²·d_j·d_j in order j, exp(−e)."""
+    e = np.zeros(len(x))
+    for a, u, column in zip(A, U, x.T):
+        d = column - u
+        e = e + a * a * d * d
+    return np.exp(-e)
+
+
+# Both runs sum the same points with the same kernel, so they differ only by the values: the
+# twin's exp (numpy) and the catalogue's (libmvec) are each within a few ulp of exp, and the
+# C++ sum may fuse a multiply-add; say |Δf_i| ≤ 8 ε f_i (as tests/python/test_integrand.py). With
+# f > 0 the sums then differ by ≤ 8 ε Σf plus the rounding of two pairwise sums, ≤ 2 log2(N) ε Σf:
+# relative (8 + 2·16) ε ≈ 9e-15 at N = 2^16, 1e-13 with margin.
+RELATIVE = 1e-13
+
+
+@pytest.mark.parametrize("method, n", [("plain_mc", 2**16), ("simpson", 6561)])
+def test_a_numpy_twin_gives_the_catalogue_estimate(catalogue, method, n):
+    expected = quadmc.integrate(catalogue, method, n, seed=3, repetitions=2)
+    got = quadmc.integrate(twin, method, n, s=4, seed=3, repetitions=2, name="genz_gaussian_s4")
+    assert got.method == expected.method == method and got.n == n
+    assert got.evaluations == expected.evaluations
+    assert len(got.values) == len(expected.values) == (2 if method == "plain_mc" else 1)
+    for g, e in zip(got.values, expected.values):
+        assert abs(g - e) <= RELATIVE * abs(e), (method, g, e)
+    # And both are estimates of the integral: within 6 standard errors (Monte Carlo) or the
+    # Simpson error at 9 nodes per axis (|error| ≈ 4e-5 here; 1e-3 bounds it).
+    bound = 6 * expected.std_error if method == "plain_mc" else 1e-3
+    assert abs(expected.value - catalogue.exact) <= bound
+
+
+def test_the_same_arguments_give_the_same_bits(catalogue):
+    for f, s in [(catalogue, None), (twin, 4)]:
+        first = quadmc.integrate(f, "plain_mc", 5000, s=s, seed=11, repetitions=3)
+        again = quadmc.integrate(f, "plain_mc", 5000, s=s, seed=11, repetitions=3)
+        other = quadmc.integrate(f, "plain_mc", 5000, s=s, seed=12, repetitions=3)
+        assert first.values == again.values and first.value == again.value
+        assert first.values != other.values
+        assert len(set(first.values)) == 3  # each repetition its own stream
+
+
+def test_the_thread_count_does_not_change_a_bit(catalogue):
+    # 2^17 points: 11 chunks of 12288 (core/batching.hpp), so two threads share them.
+    one = quadmc.integrate(catalogue, "plain_mc", 2**17, seed=5, repetitions=2, threads=1)
+    two = quadmc.integrate(catalogue, "plain_mc", 2**17, seed=5, repetitions=2, threads=2)
+    assert one.values == two.values and one.std_error == two.std_error
+
+
+def test_the_result_folds_the_repetitions(catalogue):
+    r = quadmc.integrate(catalogue, "plain_mc", 4096, seed=1, repetitions=4)
+    assert r.value == math.fsum(r.values) / 4
+    assert r.evaluations == 4 * 4096 and r.seconds > 0
+    assert r.error_estimate == r.std_error > 0
+    rule = quadmc.integrate(catalogue, "simpson", 6561, repetitions=4)
+    assert len(rule.values) == 1 and math.isnan(rule.std_error)  # a rule runs once
+
+
+def test_an_exception_in_the_callable_propagates_with_its_traceback():
+    class Boom(Exception):
+        pass
+
+    def explodes(x):
+        raise Boom(f"no value for {len(x)} points")
+
+    with pytest.raises(Boom, match="no value for 256 points") as raised:
+        quadmc.integrate(explodes, "plain_mc", 1000, s=2)
+    assert raised.traceback[-1].name == "explodes"
+    # The module is usable afterwards (the GIL and the kernel's state unwound cleanly).
+    assert quadmc.integrate(lambda x: x[:, 0], "plain_mc", 1000, s=2).evaluations == 1000
+
+
+def test_a_non_finite_value_names_the_point():
+    def nan_beyond_half(x):
+        return np.where(x[:, 0] > 0.5, np.nan, 1.0)
+
+    with pytest.raises(ValueError, match=r"^f returned nan at x = \(0\.[5-9]\d*, 0\.\d+\)$"):
+        quadmc.integrate(nan_beyond_half, "plain_mc", 1000, s=2)
+
+
+def test_a_return_of_the_wrong_length_names_f():
+    with pytest.raises(ValueError, match=r"invalid f = an array of shape \(5,\) for 256 points: "
+                                         r"expected 256 values"):
+        quadmc.integrate(lambda x: x[:5, 0], "plain_mc", 1000, s=2)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: quadmc.integrate(twin, "plain_mc", 100), r"invalid s = None"),
+    (lambda: quadmc.integrate(twin, "plain_mc", 100, s=4, threads=2), r"invalid threads = 2"),
+    (lambda: quadmc.integrate(3, "plain_mc", 100, s=1), r"invalid f = 3"),
+    (lambda: quadmc.integrate(twin, "simpson", 2, s=4), r"invalid n = 2: .*smallest grid"),
+    (lambda: quadmc.integrate(twin, "no_such_method", 100, s=4), r"no_such_method"),
+    (lambda: quadmc.integrate(twin, "plain_mc", 100, s=4, bogus=1), r"bogus"),
+    (lambda: quadmc.integrate(twin, "simpson", 100, s=2, panels=[2, 4]),
+     r"invalid n = 100: expected one of the sizes `panels` gives: \[9, 25\]"),
+])
+def test_bad_input_is_a_value_error_naming_it(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_method_options_are_the_scene_keys(catalogue):
+    # panels picks the size by its evaluations, as a scene's cell of that N.
+    r = quadmc.integrate(catalogue, "simpson", 625, panels=[4])  # 4 panels: 5 nodes per axis
+    assert r.evaluations == 625 and r.values == quadmc.integrate(catalogue, "simpson", 625).values
+    # A dict is a nested table: importance's warp (s = 1 only).
+    exp = quadmc.integrand("exp")
+    warped = quadmc.integrate(exp, "importance", 1024, warp={"name": "power", "exponent": 1.0})
+    assert warped.method == "importance_power" and warped.evaluations == 1024
