@@ -72,8 +72,11 @@ def test_the_tables_are_the_csv_rows(results, command_folder):
             (row["integrand"], row["method"], int(row["N"]))
         assert isinstance(got["N"], int) and isinstance(got["rmse"], float)
         assert got["rmse"] == float(row["rmse"])  # the shortest text reads back to the double
+        # Empty fields are None; the timing columns come from another run than the command's,
+        # and a cell timed once leaves its spread empty, so only the others are compared.
         for key, text in row.items():
-            assert (got[key] is None) == (text == "")
+            if key not in TIMING:
+                assert (got[key] is None) == (text == "")
     assert [r["method"] for r in results.slopes] == ["simpson", "plain_mc"]
     assert results.name == "example"
 
