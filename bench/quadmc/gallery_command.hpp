@@ -52,7 +52,7 @@ struct gallery_request {
   std::string out;  // empty: results/gallery
   std::uint64_t realizations = 256;
   std::uint64_t seed = 2026;
-  unsigned threads = 0;  // 0: all cores; never more than the point sets
+  unsigned threads = 0;             // 0: all cores; never more than the point sets
   std::vector<std::string> points;  // --points NAME=PATH_TEMPLATE, as given (checked when parsed)
 };
 
