@@ -13,8 +13,10 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace quadmc_python {
 
@@ -29,6 +31,13 @@ void add_run(pybind11::module_& m);          // run.cpp: quadmc.run's C++ half, 
 // A Python value as an error message quotes it: a string as a command line gives it (owen, not
 // 'owen'), anything else as repr() shows it.
 std::string quoted(const pybind11::handle& value);
+
+// A Python int or float that is not a bool: what a scene's number is (TOML has no bool-as-int).
+bool is_number(const pybind11::handle& value);
+
+// The items of an iterable as doubles when every one is_number, else nullopt (empty for an empty
+// iterable): a scene's array of numbers.
+std::optional<std::vector<double>> numbers_of(const pybind11::handle& iterable);
 
 // A Python int as a count in [minimum, 2^64 − 1], else invalid_argument naming `parameter`
 // (pybind11's own conversion would raise TypeError for −1 without naming it).

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <optional>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -28,6 +30,20 @@ void add_errors(py::module_&) {
 
 std::string quoted(const py::handle& value) {
   return py::isinstance<py::str>(value) ? py::str(value) : py::repr(value);
+}
+
+bool is_number(const py::handle& value) {
+  return (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) &&
+         !py::isinstance<py::bool_>(value);
+}
+
+std::optional<std::vector<double>> numbers_of(const py::handle& iterable) {
+  std::vector<double> numbers;
+  for (const py::handle item : iterable) {
+    if (!is_number(item)) return std::nullopt;
+    numbers.push_back(item.cast<double>());
+  }
+  return numbers;
 }
 
 std::uint64_t to_count(const py::handle& value, std::string_view parameter, std::uint64_t minimum) {

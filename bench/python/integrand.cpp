@@ -21,6 +21,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -34,28 +35,15 @@ namespace {
 
 using input_array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-bool is_number(const py::handle& value) {
-  return (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) &&
-         !py::isinstance<py::bool_>(value);
-}
-
 // One keyword as a scalar or a vector key of integrand_params.
 void add_param(quadmc::integrand_params& params, const std::string& key, const py::handle& value) {
   if (is_number(value)) {
     params.scalars[key] = value.cast<double>();
     return;
   }
-  std::vector<double> values;
   if (!py::isinstance<py::str>(value) && py::isinstance<py::iterable>(value)) {
-    for (const py::handle item : value) {
-      if (!is_number(item)) {
-        values.clear();
-        break;
-      }
-      values.push_back(item.cast<double>());
-    }
-    if (!values.empty()) {
-      params.vectors[key] = std::move(values);
+    if (std::optional<std::vector<double>> values = numbers_of(value); values && !values->empty()) {
+      params.vectors[key] = std::move(*values);
       return;
     }
   }

@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,11 +93,6 @@ class python_integrand {
   quadmc::integrand_info info_;
 };
 
-bool is_number(const py::handle& value) {
-  return (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) &&
-         !py::isinstance<py::bool_>(value);
-}
-
 quadmc::option_table to_option_table(const py::dict& options);
 
 // One [[method]] key as the scene gives it: a bool, a number, a string, an array of numbers, or
@@ -109,14 +105,8 @@ quadmc::option_value to_option_value(const std::string& key, const py::handle& v
     return to_option_table(py::reinterpret_borrow<py::dict>(value));
   }
   if (py::isinstance<py::sequence>(value)) {
-    std::vector<double> numbers;
-    for (const py::handle item : value) {
-      if (!is_number(item)) {
-        throw quadmc::invalid_argument(key, quoted(value), "a sequence of numbers");
-      }
-      numbers.push_back(item.cast<double>());
-    }
-    return numbers;
+    if (std::optional<std::vector<double>> numbers = numbers_of(value)) return *numbers;
+    throw quadmc::invalid_argument(key, quoted(value), "a sequence of numbers");
   }
   throw quadmc::invalid_argument(key, quoted(value),
                                  "a bool, a number, a string, a sequence of numbers or a dict");
