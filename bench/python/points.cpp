@@ -30,51 +30,34 @@ namespace {
 // The largest s `quadmc points` takes (its --s range): beyond it no set has tables.
 constexpr std::uint64_t max_dimension = std::uint64_t{1} << 20;
 
-// The sets that have `key`, for the message refusing it on a set that lacks it.
-std::string owners_of(std::string_view key) {
-  std::vector<std::string_view> owners;
-  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
-    if (set.option(key) != nullptr) owners.push_back(set.name);
+// A keyword's value as text: a choice as the string given (any other type as repr(), which no
+// choice matches), a flag's True as "true" and False as empty (the default).
+std::string text_of(const quadmc::point_set_entry& set, std::string_view key,
+                    const py::handle& value) {
+  const quadmc::point_set_option* option = set.option(key);
+  if (option == nullptr || !option->is_flag()) return quoted(value);
+  if (!py::isinstance<py::bool_>(value)) {
+    throw quadmc::invalid_argument(key, quoted(value), "True or False");
   }
-  return fmt::format("{}", fmt::join(owners, ", "));
+  return value.cast<bool>() ? "true" : "";
 }
 
-// One keyword's value as the set reads it: a choice's text, "true" for a flag set, empty for a
-// flag left false (the default).
-std::string value_of(const quadmc::point_set_entry& set, const quadmc::point_set_option& option,
-                     const py::handle& value) {
-  const std::string text = quoted(value);
-  if (option.is_flag()) {
-    if (!py::isinstance<py::bool_>(value)) {
-      throw quadmc::invalid_argument(option.key, text, "True or False");
-    }
-    return value.cast<bool>() ? "true" : "";
-  }
-  const std::string choice = py::isinstance<py::str>(value) ? value.cast<std::string>() : "";
-  if (std::find(option.choices.begin(), option.choices.end(), choice) == option.choices.end()) {
-    throw quadmc::invalid_argument(
-        option.key, text,
-        fmt::format("one of {} for {}", fmt::join(option.choices, ", "), set.name));
-  }
-  return choice;
+// A keyword names its key as itself in errors.
+std::string keyword_of(std::string_view key) {
+  return std::string(key);
 }
 
-// The keywords as the set reads them, every key checked against the set's own.
+// The keywords as the set reads them, every key and choice checked (checked_options).
 quadmc::point_set_options options_for(const quadmc::point_set_entry& set,
                                       const py::dict& keywords) {
-  std::vector<std::string> texts(set.options.size());
+  std::vector<std::pair<std::string, std::string>> texts;
   for (const auto& [key, value] : keywords) {
     const std::string name = py::str(key);
-    const quadmc::point_set_option* option = set.option(name);
-    if (option == nullptr) {
-      throw quadmc::invalid_argument(
-          name, quoted(value),
-          fmt::format("no {} for {} ({} only)", name, set.name, owners_of(name)));
-    }
-    texts[static_cast<std::size_t>(option - set.options.data())] = value_of(set, *option, value);
+    texts.emplace_back(name, text_of(set, name, value));
   }
-  const std::vector<std::string_view> values(texts.begin(), texts.end());
-  return set.options_of(values);
+  std::vector<quadmc::named_option> given;
+  for (const auto& [key, text] : texts) given.push_back({key, text});
+  return quadmc::checked_options(set, given, keyword_of);
 }
 
 const quadmc::point_set_entry& find_set(const std::string& name) {

@@ -93,34 +93,12 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
 
 namespace {
 
-// The options as the set reads them, every key checked against the set's own: a key it lacks
-// names the sets that have it, a value it lacks names the ones it has.
+// The options as the set reads them, every key and choice checked (checked_options), named as
+// flags in its errors.
 quadmc::point_set_options options_for(const quadmc::point_set_entry& set, const points_request& r) {
-  for (const auto& [key, value] : r.set_options) {
-    if (set.option(key) != nullptr) continue;
-    std::vector<std::string_view> owners;
-    for (const set_key& k : set_keys()) {
-      if (k.key != key) continue;
-      for (const quadmc::point_set_entry* s : k.sets) owners.push_back(s->name);
-    }
-    throw quadmc::invalid_argument(
-        flag_of(key), value,
-        fmt::format("no {} for {} ({} only)", key, set.name, fmt::join(owners, ", ")));
-  }
-  std::vector<std::string_view> values(set.options.size());
-  for (std::size_t i = 0; i < set.options.size(); ++i) {
-    const quadmc::point_set_option& o = set.options[i];
-    const auto given = r.set_options.find(o.key);
-    if (given == r.set_options.end()) continue;
-    if (!o.is_flag() &&
-        std::find(o.choices.begin(), o.choices.end(), given->second) == o.choices.end()) {
-      throw quadmc::invalid_argument(
-          flag_of(o.key), given->second,
-          fmt::format("one of {} for {}", fmt::join(o.choices, ", "), set.name));
-    }
-    values[i] = given->second;
-  }
-  return set.options_of(values);
+  std::vector<quadmc::named_option> given;
+  for (const auto& [key, value] : r.set_options) given.push_back({key, value});
+  return quadmc::checked_options(set, given, flag_of);
 }
 
 struct file_closer {

@@ -557,6 +557,35 @@ const point_set_option* point_set_entry::option(std::string_view key) const noex
   return nullptr;
 }
 
+point_set_options checked_options(const point_set_entry& set, std::span<const named_option> given,
+                                  std::string (*parameter)(std::string_view key)) {
+  for (const named_option& g : given) {
+    if (set.option(g.key) != nullptr) continue;
+    std::vector<std::string_view> owners;
+    for (const point_set_entry& other : point_set_catalogue()) {
+      if (other.option(g.key) != nullptr) owners.push_back(other.name);
+    }
+    throw invalid_argument(
+        parameter(g.key), g.value,
+        fmt::format("no {} for {} ({} only)", g.key, set.name, fmt::join(owners, ", ")));
+  }
+  // Values in the set's own order, so that of two bad ones the first of its table is named.
+  std::vector<std::string_view> values(set.options.size());
+  for (std::size_t i = 0; i < set.options.size(); ++i) {
+    const point_set_option& o = set.options[i];
+    const auto g = std::find_if(given.begin(), given.end(),
+                                [&](const named_option& n) { return n.key == o.key; });
+    if (g == given.end() || g->value.empty()) continue;
+    if (!o.is_flag() &&
+        std::find(o.choices.begin(), o.choices.end(), g->value) == o.choices.end()) {
+      throw invalid_argument(parameter(o.key), g->value,
+                             fmt::format("one of {} for {}", fmt::join(o.choices, ", "), set.name));
+    }
+    values[i] = g->value;
+  }
+  return set.options_of(values);
+}
+
 std::optional<randomization> parse_randomization(std::string_view name) noexcept {
   for (const randomization r :
        {randomization::none, randomization::shift, randomization::lms_shift, randomization::owen,

@@ -241,6 +241,19 @@ std::span<const point_set_entry> point_set_catalogue() noexcept;
 const point_set_entry* find_point_set(std::string_view name) noexcept;
 // Comma-separated names, for "expected one of …" messages.
 std::string point_set_names();
+// One option a caller names by key (`quadmc points`' flags, the Python module's keywords), as
+// text: a choice's name, "true" for a flag that is set, empty for one left at its default.
+struct named_option {
+  std::string_view key;
+  std::string_view value;
+};
+// The options `given` configure, every key and choice checked against the set's own: a key the
+// set lacks (given with any value) is invalid_argument naming the sets that have it, a choice it
+// lacks one naming the choices it has. Keys are checked before values. `parameter` is the name
+// an error gives a key (the command's --allow-any-n, the module's allow_any_n).
+point_set_options checked_options(const point_set_entry& set, std::span<const named_option> given,
+                                  std::string (*parameter)(std::string_view key));
+
 // Whether the set can hold exactly n points in s dimensions (with these options).
 bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
                   const point_set_options& options = {});
