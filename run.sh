@@ -8,7 +8,7 @@
 #                       (Release, beside README command 1's command) → build/release/bench/
 #   ./run.sh sanitize   the same tests (the command's end-to-end runs included) under ASan + UBSan
 #   ./run.sh format     check that every C++ file is clang-format clean
-#   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s
+#   ./run.sh fuzz [SECONDS]   fuzz the scene parser (libFuzzer + ASan/UBSan), default 60 s on each core
 #   ./run.sh consumer   install the package into a prefix and build two outside find_package users
 #                       (tests/consumer/, bench/examples/own_integrand/)
 #   ./run.sh package    build the Debian packages (cpack -G DEB) → build/package/deb/: quadmc_*.deb,
