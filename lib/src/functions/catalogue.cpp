@@ -5,6 +5,7 @@
 #include "quadmc/functions/genz.hpp"
 #include "quadmc/functions/indicators.hpp"
 #include "quadmc/functions/irradiance.hpp"
+#include "quadmc/functions/ishigami.hpp"
 #include "quadmc/functions/keister.hpp"
 #include "quadmc/functions/sobol_g.hpp"
 #include "quadmc/functions/stability_1d.hpp"
@@ -34,6 +35,7 @@ constexpr std::array<std::string_view, 1> w_key{"w"};
 constexpr std::array<std::string_view, 1> t_key{"t"};
 constexpr std::array<std::string_view, 1> a_key{"a"};
 constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
+constexpr std::array<std::string_view, 2> ab_keys{"a", "b"};
 
 constexpr std::string_view genz_doc =
     "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b), "
@@ -139,6 +141,10 @@ any_integrand make_sobol_g(const integrand_params& p) {
   return any_integrand(sobol_g(vector_of_length(p, "a", s, sobol_g::default_a(s))));
 }
 
+any_integrand make_ishigami(const integrand_params& p) {
+  return any_integrand(ishigami(scalar_or(p, "a", 7.0), scalar_or(p, "b", 0.1)));
+}
+
 any_integrand make_keister(const integrand_params& p) {
   return any_integrand(keister(dimension_or(p, 1)));
 }
@@ -148,7 +154,7 @@ any_integrand make_irradiance(const integrand_params& p) {
   return any_integrand(Family(make_irradiance_setup(p)));
 }
 
-const std::array<catalogue_entry, 26> entries = {{
+const std::array<catalogue_entry, 27> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc, make_genz<genz_oscillatory, genz_family::oscillatory>,
      draw_genz<genz_family::oscillatory>, false, false, 0},
@@ -204,6 +210,9 @@ const std::array<catalogue_entry, 26> entries = {{
      "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)", make_sobol_g, nullptr, false, false, 0},
     {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,
      "no parameters; 1 ≤ s ≤ 20", make_keister, nullptr, false, false, 0},
+    {"ishigami", "sin X₁ + a·sin² X₂ + b·X₃⁴·sin X₁, Xᵢ = π(2xᵢ − 1), on [0,1]³", "analytic",
+     no_keys, ab_keys, "a, b: finite numbers (default 7, 0.1); dimension 3", make_ishigami, nullptr,
+     false, false, 3},
     {"irradiance_hemisphere", "2π·u₁·L_i(x, ω(u)) on [0,1]², uniform hemisphere map",
      "discontinuous", no_keys, irradiance_keys,
      "occluder: 0 or 1 (default 0), adds default_irradiance_setup's occluder; radiance: L > 0 "
