@@ -7,8 +7,10 @@ import math
 import os
 import pathlib
 import signal
+import sys
 import threading
 import tomllib
+import types
 
 import pytest
 
@@ -88,16 +90,48 @@ def test_findings_are_the_slope_rows_with_a_finding_verdict(results):
     assert all(r["verdict"] in quadmc._run.FINDING_VERDICTS for r in results.findings)
 
 
-def test_to_pandas_gives_dataframes_or_says_pandas_is_missing(results):
-    try:
-        import pandas  # noqa: F401
-    except ImportError:
-        with pytest.raises(ImportError, match="to_pandas needs pandas"):
-            results.to_pandas()
-        return
+class _StandInPandas(types.ModuleType):
+    """A module named pandas whose DataFrame only records how it was called.
+
+    python3-pandas is not among the packages the tests need (README command 2), so this checks our
+    side of to_pandas, installed or not: which rows and columns it hands to pandas.DataFrame. It does not check pandas itself, nor that a real
+    DataFrame built from these arguments has the columns we expect: that is pandas' contract
+    (DataFrame(list of dicts) takes the keys as columns; columns= names them when no row does).
+    """
+
+    def __init__(self):
+        super().__init__("pandas")
+        self.calls = []
+
+    def DataFrame(self, data=None, columns=None):  # noqa: N802 (pandas' name)
+        self.calls.append((data, columns))
+        return ("frame", len(self.calls) - 1)
+
+
+def test_to_pandas_passes_each_table_to_a_dataframe(results, monkeypatch):
+    pandas = _StandInPandas()
+    monkeypatch.setitem(sys.modules, "pandas", pandas)
     frames = results.to_pandas()
-    assert len(frames["convergence"]) == len(results.convergence)
-    assert list(frames["slopes"].columns) == list(results.slopes[0])
+    assert sorted(frames) == ["convergence", "findings", "slopes"]
+    tables = {"convergence": results.convergence, "slopes": results.slopes,
+              "findings": results.findings}
+    assert len(pandas.calls) == 3
+    for name, table in tables.items():
+        data, columns = pandas.calls[frames[name][1]]
+        assert data == table, name  # the rows as the lists hold them, in CSV order
+        # findings may have no row at all; its frame still gets slopes.csv's columns, in order.
+        assert columns == (list(results.slopes[0]) if name == "findings" else None), name
+    assert len(results.convergence) > 0 and len(results.slopes) > 0
+
+
+def test_to_pandas_without_pandas_says_what_to_install(results, monkeypatch):
+    # None in sys.modules makes `import pandas` raise ImportError whether or not it is installed.
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    with pytest.raises(ImportError, match=r"to_pandas needs pandas.*python3-pandas.*"
+                                          r"\.convergence, \.slopes, \.findings") as raised:
+        results.to_pandas()
+    assert "\n" not in str(raised.value)  # one line
+    assert isinstance(raised.value.__cause__, ImportError)  # the import's own error, chained
 
 
 def test_integrate_gives_a_scenes_cell(results):
