@@ -27,7 +27,9 @@
 // kernel (parallel_reduce rethrows the lowest chunk's exception after joining), and pybind11
 // restores the original Python exception with its traceback. A NaN or ±inf from f is the
 // kernels' non_finite_value naming the point (check_finite_batch, functions/integrand.hpp), a
-// wrong-length return an invalid_argument naming f: both ValueError (errors.cpp).
+// wrong-length return an invalid_argument naming f: both ValueError (errors.cpp). A method it
+// cannot run (one that runs only to a tolerance, an irradiance method) is a ValueError naming the
+// method, raised before f is evaluated once.
 #include "bindings.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -167,14 +169,41 @@ quadmc::cell_size size_of(const quadmc::method& m, std::uint64_t n, std::size_t 
   return *sized.size;
 }
 
-// What the method runs: its default control, which must size cells from N.
+// What the method runs: its default control (the first it supports). A scene may run a method to
+// a tolerance; quadmc.integrate sizes every cell from n, so a method that supports no other
+// control cannot run here.
 quadmc::cell_control control_of(const quadmc::method& m) {
   const quadmc::cell_control control = m.descriptor().controls.front();
-  if (control == quadmc::cell_control::tolerance) {
-    throw quadmc::invalid_argument("method", std::string(m.descriptor().name),
-                                   "a method that runs at a size or a budget N");
+  if (!m.descriptor().supports(quadmc::cell_control::fixed_size) &&
+      !m.descriptor().supports(quadmc::cell_control::budget)) {
+    const std::string_view name = m.descriptor().name;
+    throw quadmc::invalid_argument(
+        "method", name,
+        fmt::format("a method that runs at a size or a budget N = n ({} runs only to a "
+                    "tolerance, which quadmc.integrate does not take: run it in a scene)",
+                    name));
   }
   return control;
+}
+
+// The irradiance methods (lib/src/methods/irradiance_methods.cpp) take a rendering integrand
+// only, and read its light and surface from the instance's integrand_params (method_cell::params),
+// not from f: an Integrand does not carry those, and a callable has none, so quadmc.integrate
+// refuses them by name, whatever f is, rather than calling an irradiance integrand "not a
+// rendering integrand" as the method's own incompatibility would. Asked of the method itself
+// (refuses every integrand but a rendering one), so a new method of that kind is refused too.
+void refuse_rendering_only(const quadmc::method& m, std::size_t s) {
+  const std::string_view name = m.descriptor().name;
+  const bool takes_rendering = !m.incompatibility({name, s, true});
+  const bool takes_other = !m.incompatibility({name, s, false});
+  if (takes_rendering && !takes_other) {
+    throw quadmc::invalid_argument(
+        "method", name,
+        fmt::format("a method that integrates f from its values ({} estimates irradiance "
+                    "from the light and surface of a scene's irradiance integrand, which "
+                    "quadmc.integrate does not pass: run it in a scene, quadmc.run)",
+                    name));
+  }
 }
 
 struct integration {
@@ -244,13 +273,15 @@ py::dict integrate(const py::object& f, const std::string& method, const py::obj
   const std::unique_ptr<const quadmc::method> m =
       quadmc::make_method(method, to_option_table(options));
   const std::size_t dimension = integrand.dimension();
+  // Every check before the first evaluation: what the method cannot run here, then f, then n.
+  const quadmc::cell_control control = control_of(*m);
+  refuse_rendering_only(*m, dimension);
   const quadmc::integrand_traits traits{integrand.info().name, dimension, false};
   if (const auto why = m->incompatibility(traits)) {
     throw quadmc::invalid_argument("f", integrand.info().name, *why);
   }
   const std::uint64_t N = to_count(n, "n", 1);
   const quadmc::cell_size size = size_of(*m, N, dimension);
-  const quadmc::cell_control control = control_of(*m);
   std::uint64_t runs = to_count(repetitions, "repetitions", 1);
   if (m->kind() == quadmc::method_kind::deterministic) runs = 1;
   const quadmc::run_context context{to_count(seed, "seed", 0),

@@ -127,3 +127,60 @@ def test_method_options_are_the_scene_keys(catalogue):
     exp = quadmc.integrand("exp")
     warped = quadmc.integrate(exp, "importance", 1024, warp={"name": "power", "exponent": 1.0})
     assert warped.method == "importance_power" and warped.evaluations == 1024
+
+
+class Counting:
+    """A callable integrand that counts its calls: a refusal must come before the first."""
+
+    def __init__(self):
+        self.calls = 0
+
+    def __call__(self, x):
+        self.calls += 1
+        return np.ones(len(x))
+
+
+IRRADIANCE = ["irradiance_hemisphere_uniform", "irradiance_hemisphere_cosine",
+              "irradiance_light_area"]
+
+
+@pytest.mark.parametrize("method", IRRADIANCE)
+@pytest.mark.parametrize("kind", ["callable", "genz_gaussian", "irradiance_hemisphere"])
+def test_an_irradiance_method_is_refused_by_name_before_any_work(method, kind):
+    # They read the light and surface of a scene's irradiance integrand (its integrand_params),
+    # which integrate does not pass, so they are refused even for an irradiance Integrand.
+    f = Counting()
+    args = {"s": 2}
+    if kind != "callable":
+        f, args = quadmc.integrand(kind, s=2), {}
+    with pytest.raises(ValueError) as raised:
+        quadmc.integrate(f, method, 1024, **args)
+    message = str(raised.value)
+    assert message.startswith(f"invalid method = {method}: expected a method that integrates f "
+                              f"from its values ({method} estimates irradiance"), message
+    assert "quadmc.run" in message and "\n" not in message
+    assert "is not a rendering integrand" not in message
+    if kind == "callable":
+        assert f.calls == 0
+
+
+@pytest.mark.parametrize("method", [m["name"] for m in quadmc.methods()])
+def test_every_method_runs_or_is_refused_before_any_work(method):
+    # With its default options on a callable in s = 2 at N = 1024: a method either runs, or raises
+    # a ValueError before calling f (a missing option, a size it cannot take, s = 2 for a 1D rule,
+    # an irradiance method, or one that runs only to a tolerance), never after some work.
+    controls = next(m["controls"] for m in quadmc.methods() if m["name"] == method)
+    f = Counting()
+    try:
+        r = quadmc.integrate(f, method, 1024, s=2)
+    except ValueError as e:
+        assert f.calls == 0, (method, str(e))
+        assert "\n" not in str(e), (method, str(e))
+        if not {"fixed", "budget"} & set(controls):
+            assert f"{method} runs only to a tolerance" in str(e)
+        return
+    assert {"fixed", "budget"} & set(controls), (method, controls)
+    assert method not in IRRADIANCE
+    # f = 1: every method's estimate is 1 up to the rounding of its weights' sum (a Gauss or
+    # Smolyak rule's weights are not dyadic); 2^-44 leaves room for thousands of them.
+    assert f.calls > 0 and r.evaluations > 0 and abs(r.value - 1.0) <= 256 * EPS, (method, r)
