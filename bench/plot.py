@@ -3,7 +3,7 @@
 
 Use:   /usr/bin/python3 bench/plot.py results/<scene> [more folders...]
 Needs: Debian's python3 and python3-matplotlib (run.sh installs them); stdlib csv, no pandas.
-Not for: reading anything but the two CSV files of a results folder (their column contract is
+Not for: reading anything but the CSV files of a results folder (their column contract is
 lib/include/quadmc/report/results_csv.hpp; added columns are ignored, a missing one is an error).
 
 Per (integrand, s) it writes, next to the CSV files, the two files README.md links, under names
@@ -23,13 +23,26 @@ keep the two in step):
                                        dash-dotted, beside the guide.
   work_precision_<name>.svg            RMSE against seconds per estimate (the stable timing,
                                        `seconds_per_estimate`; seconds/repetitions before it).
-Output is deterministic (fixed svg.hashsalt, no date in the metadata), so regenerating the plots
-of unchanged data does not churn git.
+and the two summary figures that the answer at the top of README.md links (the names of
+lib/include/quadmc/report/answer_first.hpp, keep the two in step), each as SVG and PNG:
+  slope_against_theory.svg, .png       every series' fitted slope (95% interval as a bar) against
+                                       its theory slope, coloured by verdict, with the diagonal:
+                                       a disagreement is a point off the line (slopes.csv).
+  who_leads.svg, .png                  the "Who leads at equal N" tables as a picture: a row per
+                                       integrand family and s, a column per N, the winning method
+                                       as the cell's colour (who_leads.csv), faded and hatched
+                                       where the winner is a rounding-floor point (the methods
+                                       then differ by rounding); not drawn when the file has no
+                                       row (no table on the page) or is absent (a folder from
+                                       before it).
+Output is deterministic (fixed svg.hashsalt, no date in the metadata, no software version in the
+PNG), so regenerating the plots of unchanged data does not churn git.
 """
 
 import argparse
 import csv
 import math
+import os
 import sys
 
 import matplotlib
@@ -42,6 +55,22 @@ plt.rcParams["figure.figsize"] = (7.0, 5.0)
 
 CONVERGENCE_COLUMNS = ["integrand", "s", "method", "evaluations", "repetitions", "rmse", "seconds"]
 SLOPES_COLUMNS = ["integrand", "s", "method", "slope", "theory"]
+SUMMARY_SLOPES_COLUMNS = SLOPES_COLUMNS + ["ci_low", "ci_high", "verdict"]
+WHO_LEADS_COLUMNS = ["family", "s", "N", "method"]
+SLOPE_FIGURE = "slope_against_theory"
+WHO_LEADS_FIGURE = "who_leads"
+# One colour per verdict (slope_verdict.hpp), the same in every folder: agreement green, a
+# difference with a computed reason blue or grey, a finding (no computed reason) red or orange.
+VERDICT_COLORS = {
+    "agrees": "#2ca02c",
+    "within_envelope": "#17becf",
+    "superconvergent": "#1f77b4",
+    "pre_asymptotic": "#9467bd",
+    "at_floor": "#7f7f7f",
+    "steeper": "#ff7f0e",
+    "shallower": "#d62728",
+    "above_envelope": "#8c564b",
+}
 SAFE = set(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-")
 
 
@@ -161,6 +190,120 @@ def finish(fig, ax, path, xlabel, title, floor_seen, theory_seen, envelope_seen=
     plt.close(fig)
 
 
+def save_both(fig, folder, stem):
+    """The summary figures as SVG and PNG, both without a date or a version in them."""
+    fig.tight_layout()
+    fig.savefig(f"{folder}/{stem}.svg", format="svg", metadata={"Date": None})
+    fig.savefig(f"{folder}/{stem}.png", format="png", dpi=100, metadata={"Software": None})
+    plt.close(fig)
+    return [f"{stem}.svg", f"{stem}.png"]
+
+
+def plot_slopes_against_theory(folder):
+    """Every series with a fit and a theory as one marker: x its theory slope, y its fitted slope
+    with the 95% interval as a bar, coloured by verdict; the diagonal slope = theory."""
+    rows = read_csv(f"{folder}/slopes.csv", SUMMARY_SLOPES_COLUMNS)
+    fig, ax = plt.subplots(figsize=(6.5, 6.0))
+    drawn = {}
+    left_out = 0
+    for row in rows:
+        slope, theory = number(row["slope"]), number(row["theory"])
+        if math.isnan(slope) or math.isnan(theory):
+            left_out += 1  # no fit or no theory: nothing to place
+            continue
+        drawn.setdefault(row["verdict"], []).append(
+            (theory, slope, number(row["ci_low"]), number(row["ci_high"])))
+    every = [p for points in drawn.values() for p in points]
+    if every:
+        low = min(min(p[0], p[1]) for p in every)
+        high = max(max(p[0], p[1]) for p in every)
+        pad = 0.05 * (high - low) + 0.1
+        ax.plot([low - pad, high + pad], [low - pad, high + pad], "-", color="gray",
+                linewidth=0.8, label="slope = theory")
+    # Findings last, so that no agreeing marker hides one.
+    order = list(VERDICT_COLORS) + sorted(v for v in drawn if v not in VERDICT_COLORS)
+    for verdict in order:
+        points = drawn.get(verdict)
+        if not points:
+            continue
+        color = VERDICT_COLORS.get(verdict, "black")
+        below = [p[1] - p[2] if not math.isnan(p[2]) else 0.0 for p in points]
+        above = [p[3] - p[1] if not math.isnan(p[3]) else 0.0 for p in points]
+        ax.errorbar([p[0] for p in points], [p[1] for p in points], yerr=[below, above],
+                    fmt="o", color=color, markersize=4, elinewidth=0.7, alpha=0.75,
+                    label=f"{verdict} ({len(points)})")
+    ax.set_xlabel("theory slope")
+    ax.set_ylabel("fitted slope of |error| or RMSE against N (95% interval)")
+    title = f"{len(every)} series: fitted slope against theory"
+    if left_out:
+        title += f" ({left_out} without a fit or a theory left out)"
+    ax.set_title(title, fontsize=10)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    ax.legend(fontsize=7, loc="best")
+    return save_both(fig, folder, SLOPE_FIGURE)
+
+
+def plot_who_leads(folder):
+    """The "Who leads at equal N" tables as one picture: rows (family, s) in the page's order,
+    columns every N of any ladder, each cell the winner's colour; a blank cell is "—" or an N
+    that the family's ladder does not have."""
+    path = f"{folder}/who_leads.csv"
+    if not os.path.exists(path):
+        return []  # a folder from before the file
+    rows = read_csv(path, WHO_LEADS_COLUMNS)
+    if not rows:
+        return []  # no table on the page, so no figure and no link
+    keys, ladder, methods, winner, floor = [], set(), [], {}, set()
+    for row in rows:
+        key = (row["family"], int(row["s"]))
+        if key not in keys:
+            keys.append(key)
+        n = int(row["N"])
+        ladder.add(n)
+        if row["method"]:
+            if row["method"] not in methods:
+                methods.append(row["method"])
+            winner[(key, n)] = row["method"]
+            if row.get("at_floor") == "1":
+                floor.add((key, n))
+    ladder = sorted(ladder)
+    # tab20's ten strong colours first, then their light partners, then tab20b: the methods that
+    # appear first (usually those that lead most) get the colours easiest to tell apart.
+    tab20 = plt.get_cmap("tab20")
+    palette = ([tab20(k) for k in range(0, 20, 2)] + [tab20(k) for k in range(1, 20, 2)] +
+               [plt.get_cmap("tab20b")(k) for k in range(20)])
+    color_of = {m: palette[k % len(palette)] for k, m in enumerate(methods)}
+    width = max(6.5, 1.6 + 0.42 * len(ladder))
+    fig, ax = plt.subplots(figsize=(width, 1.4 + 0.3 * len(keys) + 0.16 * len(methods)))
+    for i, key in enumerate(keys):
+        for j, n in enumerate(ladder):
+            method = winner.get((key, n))
+            if method is None:
+                continue
+            at_floor = (key, n) in floor
+            ax.add_patch(plt.Rectangle((j, i), 1, 1, facecolor=color_of[method],
+                                       edgecolor="white", linewidth=0.5,
+                                       alpha=0.35 if at_floor else 1.0,
+                                       hatch="///" if at_floor else None))
+    ax.set_xlim(0, len(ladder))
+    ax.set_ylim(len(keys), 0)
+    ax.set_xticks([j + 0.5 for j in range(len(ladder))])
+    ax.set_xticklabels([f"{n:,}" for n in ladder], rotation=60, ha="right", fontsize=7)
+    ax.set_yticks([i + 0.5 for i in range(len(keys))])
+    ax.set_yticklabels([f"{family}, s = {s}" for family, s in keys], fontsize=7)
+    ax.set_xlabel("N (integrand evaluations)")
+    ax.set_title("Who leads at equal N: the method of smallest error per family, s and N",
+                 fontsize=10)
+    handles = [plt.Rectangle((0, 0), 1, 1, facecolor=color_of[m]) for m in methods]
+    labels = list(methods)
+    if floor:
+        handles.append(plt.Rectangle((0, 0), 1, 1, facecolor="gray", alpha=0.35, hatch="///"))
+        labels.append("winner at the rounding floor")
+    ax.legend(handles, labels, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1),
+              ncol=min(4, max(1, len(labels))), frameon=False)
+    return save_both(fig, folder, WHO_LEADS_FIGURE)
+
+
 def plot_folder(folder):
     groups, slopes = load(folder)
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -205,6 +348,8 @@ def plot_folder(folder):
         finish(wfig, wax, f"{folder}/{work_precision_file}", "seconds per estimate",
                f"{integrand}, s = {s}: work-precision", floor_seen, False)
         written += [error_file, work_precision_file]
+    written += plot_slopes_against_theory(folder)
+    written += plot_who_leads(folder)
     return written
 
 

@@ -3,15 +3,20 @@
 
 Use:   /usr/bin/python3 bench/same_results.py EXPECTED ACTUAL [--relative-tolerance R]
        (CI: the committed results/default against a fresh run of README command 1)
-Exit:  0 when convergence.csv and slopes.csv agree row for row, 1 with one line per difference
-       (file, row key, column, both values; at most 20 shown), 2 for a usage or read error.
+Exit:  0 when convergence.csv, slopes.csv and who_leads.csv agree row for row, 1 with one line
+       per difference (file, row key, column, both values; at most 20 shown), 2 for a usage or
+       read error.
 Not for: judging whether a change made convergence better or worse — that is `quadmc compare`,
 which fits slopes and allows noise. This script says whether a figure moved at all, so a change
 that moves one must come with regenerated results.
 
-Compared: every column of both files except the timing ones (`seconds`, `evals_per_second`,
+Compared: every column of the files except the timing ones (`seconds`, `evals_per_second`,
 `seconds_per_estimate`, `seconds_spread`, `timed_estimates`), which depend on the machine's load. Rows are matched by their key (integrand, s, method, and N
-and tolerance for convergence.csv); a row or column present on one side only is a difference.
+and tolerance for convergence.csv, family, s and N for who_leads.csv); a row or column present on
+one side only is a difference. who_leads.csv (the page's "Who leads at equal N" tables) is compared
+where EXPECTED has it (a folder from before the file has none) and only with R = 0: it is made from
+convergence.csv's errors, and where two methods are level to the last bits, bits that differ may
+name the other one.
 With R = 0 (the default) fields must be equal as text: the writer prints the shortest text that
 reads back to the same double, so equal text is equal bits. R > 0 is for two machines with
 different vector units, whose exp/cos differ in the last bits (the README's SIMD section): numbers
@@ -22,6 +27,7 @@ scale of its error columns. Stdlib only (csv), so it runs wherever python3 does.
 import argparse
 import csv
 import math
+import os
 import sys
 
 TIMING_COLUMNS = {"seconds", "evals_per_second", "seconds_per_estimate", "seconds_spread",
@@ -29,7 +35,10 @@ TIMING_COLUMNS = {"seconds", "evals_per_second", "seconds_per_estimate", "second
 KEYS = {
     "convergence.csv": ("integrand", "s", "method", "N", "tolerance"),
     "slopes.csv": ("integrand", "s", "method"),
+    "who_leads.csv": ("family", "s", "N"),
 }
+OPTIONAL_FILES = {"who_leads.csv"}  # added later: compared where the expected folder has it
+EXACT_ONLY_FILES = {"who_leads.csv"}  # winners of near ties: compared as text only
 OPTIONAL_KEYS = {"tolerance"}  # a column added later: empty when a file predates it
 SHOWN = 20
 
@@ -115,6 +124,10 @@ def main():
                      f"{args.relative_tolerance}")
     found = []
     for name in KEYS:
+        if name in OPTIONAL_FILES and not os.path.exists(f"{args.expected}/{name}"):
+            continue
+        if name in EXACT_ONLY_FILES and args.relative_tolerance != 0.0:
+            continue
         found += differences(args.expected, args.actual, name, args.relative_tolerance)
     if found:
         for line in found[:SHOWN]:

@@ -3,6 +3,7 @@
 //
 // Use these for the contract between the two sides; the rule itself is tested in
 // tests/report/markdown_report_test.cpp.
+#include "quadmc/report/answer_first.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc_process.hpp"
 
@@ -43,6 +44,10 @@ TEST(PlotNamesTest, CollidingIntegrandNamesGetTheirOwnPlots) {
     expected.insert(quadmc::work_precision_plot_file(name, 1));
   }
   ASSERT_EQ(expected.size(), 8u) << "the library's names are distinct";
+  // And the two summary figures (report/answer_first.hpp): `x` and `x_s1` in s = 1 are one
+  // family, `x` (report/who_leads.hpp), so the page has a "Who leads" table.
+  expected.insert(std::string(quadmc::slope_figure_stem) + ".svg");
+  expected.insert(std::string(quadmc::who_leads_figure_stem) + ".svg");
   EXPECT_EQ(svgs, expected) << describe(r);
   const std::string readme = read_text(dir / "out" / "README.md");
   for (const auto& svg : svgs) {
@@ -78,6 +83,7 @@ TEST(PlotNamesTest, PlotScriptWritesTheNamesTheLibraryLinks) {
     script += "    (b'" + quoted + "'.decode('utf-8'), " + std::to_string(s) + "),\n";
   }
   script += "]\nfor name, s in cases:\n    print(*plot.plot_files(name, s))\n";
+  script += "print(plot.SLOPE_FIGURE, plot.WHO_LEADS_FIGURE)\n";
   write_text(logs / "names.py", script);
   process_options options;
   options.stdout_file = logs / "out";
@@ -94,6 +100,12 @@ TEST(PlotNamesTest, PlotScriptWritesTheNamesTheLibraryLinks) {
     EXPECT_EQ(work_precision_file, quadmc::work_precision_plot_file(name, s))
         << name << ", s = " << s;
   }
+  // The summary figures' names (report/answer_first.hpp).
+  std::string slope_figure;
+  std::string who_leads_figure;
+  lines >> slope_figure >> who_leads_figure;
+  EXPECT_EQ(slope_figure, quadmc::slope_figure_stem);
+  EXPECT_EQ(who_leads_figure, quadmc::who_leads_figure_stem);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 // docs/theory.md#rate-table (composite midpoint/trapezoid O(n⁻²), Simpson O(n⁻⁴); plain MC RMSE
 // σ/√N; jittered points on a smooth f in s dimensions O(N^(−1/2−1/s)), [Owen 2013, ch. 10]).
 #include "quadmc/analysis/slope_verdict.hpp"
+#include "quadmc/report/answer_first.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_csv.hpp"
 #include "quadmc_command.hpp"
@@ -19,6 +20,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc_cli_test {
@@ -296,16 +298,29 @@ N = [16, 64, 256]
     if (e.path().extension() == ".svg") svgs.push_back(e.path().filename().string());
   }
   // bench/plot.py writes the two plots per (integrand, s) under the names the README links
-  // (report/markdown_report.hpp): error against N and work-precision.
-  ASSERT_EQ(svgs.size(), 2u) << describe(r);
+  // (report/markdown_report.hpp), error against N and work-precision, and the two summary
+  // figures of the answer at the top (report/answer_first.hpp), also as PNG.
+  ASSERT_EQ(svgs.size(), 4u) << describe(r);
   EXPECT_TRUE(fs::exists(out / quadmc::convergence_plot_file("kink", 1))) << describe(r);
   EXPECT_TRUE(fs::exists(out / quadmc::work_precision_plot_file("kink", 1))) << describe(r);
+  for (const std::string_view stem : {quadmc::slope_figure_stem, quadmc::who_leads_figure_stem}) {
+    EXPECT_TRUE(fs::exists(out / (std::string(stem) + ".svg"))) << stem << describe(r);
+    const std::string png = read_text(out / (std::string(stem) + ".png"));
+    EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n") << stem;
+  }
   const std::string readme = read_text(out / "README.md");
   for (const auto& svg : svgs) {
     EXPECT_NE(readme.find("](" + svg + ")"), std::string::npos)
         << svg << " is not linked from README.md:\n"
         << readme;
     EXPECT_NE(read_text(out / svg).find("<svg"), std::string::npos) << svg;
+  }
+  // And every file the page links is there: no link to a figure that was not drawn.
+  for (std::size_t at = readme.find("]("); at != std::string::npos;
+       at = readme.find("](", at + 1)) {
+    const std::string target = readme.substr(at + 2, readme.find(')', at) - at - 2);
+    if (target.starts_with("#")) continue;  // a section of the page
+    EXPECT_TRUE(fs::exists(out / target)) << target << " is linked but not written";
   }
 }
 

@@ -267,15 +267,66 @@ TEST(MarkdownReport, ThePageLinksOnlyTheFilesTheRunWrote) {
   const std::string all = render_results_markdown(info, tables);
   EXPECT_NE(all.find(".svg)"), std::string::npos);
   EXPECT_NE(all.find("`convergence.csv`"), std::string::npos);
+  EXPECT_NE(all.find("](slope_against_theory.svg)"), std::string::npos) << all;
+  EXPECT_NE(all.find("](who_leads.png)"), std::string::npos) << all;
   info.plots = false;
   const std::string no_plots = render_results_markdown(info, tables);
   EXPECT_EQ(no_plots.find(".svg"), std::string::npos) << no_plots;
+  EXPECT_EQ(no_plots.find(".png"), std::string::npos) << no_plots;
   EXPECT_NE(no_plots.find("`convergence.csv`"), std::string::npos);
   info.csv = false;
   const std::string neither = render_results_markdown(info, tables);
   EXPECT_EQ(neither.find(".svg"), std::string::npos) << neither;
   EXPECT_EQ(neither.find(".csv`"), std::string::npos) << neither;
   EXPECT_NE(neither.find("[output] turns csv off"), std::string::npos) << neither;
+}
+
+// The answer (answer_first.hpp) sits between the title with the scene's description and the
+// metadata list, in five lines at most, and says what the "Who leads" table further down says:
+// change the table's winner and the answer changes with it.
+TEST(MarkdownReport, TheAnswerComesFirstInFiveLinesAtMost) {
+  run_info info;
+  info.scene = "answered";
+  info.description = "What the scene is for.";
+  info.seed = 7;
+  auto tables = markdown_sample_tables();
+  std::string page = render_results_markdown(info, tables);
+  const std::size_t start = page.find("What the scene is for.\n\n");
+  const std::size_t metadata = page.find("- seed: 7\n");
+  ASSERT_NE(start, std::string::npos) << page;
+  ASSERT_NE(metadata, std::string::npos) << page;
+  const std::string block = page.substr(start, metadata - start);
+  std::size_t lines = 0;
+  for (std::size_t at = block.find("\n> - "); at != std::string::npos;
+       at = block.find("\n> - ", at + 1)) {
+    ++lines;
+  }
+  EXPECT_GE(lines, 1u) << block;
+  EXPECT_LE(lines, 5u) << block;
+  EXPECT_LT(page.find("**Slopes:**"), metadata);
+  EXPECT_LT(metadata, page.find("## Who leads at equal N"));
+  // trapezoid (0.5/N²) against plain_mc (1/√N): the rule leads the table and the answer.
+  EXPECT_NE(page.find("| 1 | trapezoid ("), std::string::npos) << page;
+  // It leads from the first N until its own errors reach the rounding floor (±5e-16), where a
+  // lead is rounding, not convergence (answer_first.hpp).
+  EXPECT_NE(block.find("`trapezoid` leads `genz|odd` (s = 1) at every N until the rounding floor "
+                       "at N = "),
+            std::string::npos)
+      << block;
+  // The rule ten million times worse: plain_mc leads both.
+  convergence_series rule = series_of("genz|odd", 1, "trapezoid", smoothness::analytic, 2.0,
+                                      rule_theory(2, smoothness::analytic));
+  for (int k = 1; k <= 12; ++k) {
+    const auto n = std::uint64_t{1} << k;
+    const double x = static_cast<double>(n);
+    rule.cells.push_back(cell_at(n, {repetition(2.0 + 5e6 / (x * x), nan, n, 1e-8 * x)}));
+  }
+  tables.front() = analyse_convergence(rule);
+  page = render_results_markdown(info, tables);
+  EXPECT_NE(page.find("| 1 | plain_mc ("), std::string::npos) << page;
+  const std::string changed = page.substr(0, page.find("- seed: 7\n"));
+  EXPECT_NE(changed.find("`plain_mc` leads `genz|odd` (s = 1)"), std::string::npos) << changed;
+  EXPECT_EQ(changed.find("`trapezoid` leads"), std::string::npos) << changed;
 }
 
 TEST(MarkdownReport, PlotFileNamesArePredictable) {
@@ -337,9 +388,9 @@ TEST(MarkdownReport, DescriptionAndThreadsUsedAreOnThePage) {
   info.threads_allowed = 64;
   const auto tables = markdown_sample_tables();
   const std::string page = render_results_markdown(info, tables);
-  // The author's Markdown, trimmed, right under the title.
+  // The author's Markdown, trimmed, right under the title, and the answer right under it.
   EXPECT_EQ(page.rfind("# Results: described\n\nWhy this scene exists: **Simpson** against plain "
-                       "MC.\n\n- seed:",
+                       "MC.\n\n> - ",
                        0),
             0u)
       << page;

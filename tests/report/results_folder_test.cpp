@@ -3,6 +3,7 @@
 
 #include "../analysis/series_builder.hpp"
 
+#include "quadmc/report/csv.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
 #include "support/temporary_directory.hpp"
@@ -68,6 +69,8 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   // to ~1e-11, not to ε.
   EXPECT_NEAR(slopes[0].slope, -2.0, 1e-10);
   EXPECT_EQ(slopes[0].verdict, "agrees");
+  // One method per family: who_leads.csv is its header alone (no "Who leads" table).
+  EXPECT_EQ(read_csv_file(folder / "who_leads.csv").rows.size(), 0u);
 }
 
 // End to end from a series to the files: a rule on a jump whose flat ladder (slope 0 against the
@@ -116,6 +119,7 @@ TEST(ResultsFolder, WritesOnlyTheOutputsAskedFor) {
   EXPECT_TRUE(fs::exists(dir.path / "README.md"));
   EXPECT_FALSE(fs::exists(dir.path / "convergence.csv"));
   EXPECT_FALSE(fs::exists(dir.path / "slopes.csv"));
+  EXPECT_FALSE(fs::exists(dir.path / "who_leads.csv"));
   // meta.csv is written with any output: it is what a later run checks before it replaces the
   // folder (lib/include/quadmc/report/results_staging.hpp).
   EXPECT_TRUE(fs::exists(dir.path / "meta.csv"));
@@ -131,7 +135,8 @@ TEST(ResultsFolder, PlotCommandLine) {
 
 TEST(ResultsFolder, ResultsFileNamesAreWhatARunWrites) {
   for (const char* name : {"convergence.csv", "slopes.csv", "meta.csv", "README.md",
-                           "error_exp_s=1.svg", "exp_s1.svg", "work_precision_gaussian_s3.svg"}) {
+                           "error_exp_s=1.svg", "exp_s1.svg", "work_precision_gaussian_s3.svg",
+                           "who_leads.csv", "who_leads.png", "slope_against_theory.png"}) {
     EXPECT_TRUE(is_results_file_name(name)) << name;
   }
   // Near misses: other cases, other files, a bare extension (a hidden file, not a plot).

@@ -2,7 +2,9 @@
 #include "quadmc/report/markdown_report.hpp"
 
 #include "quadmc/analysis/estimate_reliability.hpp"
+#include "quadmc/report/answer_first.hpp"
 #include "quadmc/report/time_to_error_table.hpp"
+#include "quadmc/report/who_leads.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -201,94 +203,25 @@ std::string targets_not_reached(std::span<const convergence_table> tables) {
       missed, one ? "cell" : "cells", its, its, its, one ? "its" : "each one's", list);
 }
 
-// The name of an integrand's family across dimensions: the name without the "_s<s>" that a
-// `dimensions` list appends (scene/parse.hpp), so dim_gaussian_s2 … _s16 form one family.
-std::string family_stem(std::string_view integrand, std::size_t s) {
-  const std::string suffix = fmt::format("_s{}", s);
-  if (integrand.size() > suffix.size() && integrand.ends_with(suffix)) {
-    return std::string(integrand.substr(0, integrand.size() - suffix.size()));
-  }
-  return std::string(integrand);
-}
-
-// "Who leads at equal N": per integrand family (family_stem), a table of s × the ladder's N with
-// the method of smallest error at that N — RMSE for a random method, |error| for a rule — among
-// the methods that spend at most N evaluations there: each method enters with its cell of the
-// largest ladder N' ≤ N, so a rule whose grid for N is the one it already ran for N' (a plan
-// "same grid" skip) still competes, and the cell says "at N = N'". Only ladder cells (N > 0),
-// only N where some method ran exactly N and two or more compete; a family run by one method has
-// no table. The same rule for every scene, no integrand named.
-void append_leaders(std::string& out, std::span<const convergence_table> tables) {
-  std::vector<std::string> families;
-  for (const convergence_table& t : tables) {
-    const std::string f = family_stem(t.integrand, t.s);
-    if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
-  }
-  struct entry {
-    std::uint64_t n;  // the cell's ladder N
-    double error;
-    const std::string* method;
-  };
+// "Who leads at equal N" (who_leads.hpp): per family, a table of s × the ladder's N.
+void append_leaders(std::string& out, std::span<const family_leaders> families) {
   std::string body;
-  for (const std::string& family : families) {
-    std::vector<const convergence_table*> members;
-    for (const convergence_table& t : tables) {
-      if (family_stem(t.integrand, t.s) == family) members.push_back(&t);
-    }
-    // Each series' cell with the largest ladder N' ≤ n (rows are in increasing N).
-    auto competitors = [&](std::size_t s, std::uint64_t n) {
-      std::vector<entry> at;
-      for (const convergence_table* t : members) {
-        if (t->s != s) continue;
-        const convergence_row* best = nullptr;
-        for (const convergence_row& row : t->rows) {
-          if (row.n > 0 && row.n <= n && (best == nullptr || row.n > best->n)) best = &row;
-        }
-        if (best != nullptr) at.push_back({best->n, best->stats.rmse, &t->method});
-      }
-      return at;
-    };
-    auto ran_exactly = [](const std::vector<entry>& at, std::uint64_t n) {
-      return std::any_of(at.begin(), at.end(), [n](const entry& e) { return e.n == n; });
-    };
-    std::vector<std::size_t> dimensions;
-    std::vector<std::uint64_t> ladder;
-    for (const convergence_table* t : members) {
-      for (const convergence_row& row : t->rows) {
-        if (row.n == 0) continue;  // a cell run to a tolerance has no N
-        const auto at = competitors(t->s, row.n);
-        if (at.size() < 2) continue;
-        if (std::find(dimensions.begin(), dimensions.end(), t->s) == dimensions.end()) {
-          dimensions.push_back(t->s);
-        }
-        if (std::find(ladder.begin(), ladder.end(), row.n) == ladder.end()) {
-          ladder.push_back(row.n);
-        }
-      }
-    }
-    if (ladder.empty()) continue;
-    std::sort(dimensions.begin(), dimensions.end());
-    std::sort(ladder.begin(), ladder.end());
-    body += fmt::format("### {}\n\n| s |", cell(family));
-    for (const std::uint64_t n : ladder) body += fmt::format(" N = {} |", n);
+  for (const family_leaders& f : families) {
+    body += fmt::format("### {}\n\n| s |", cell(f.family));
+    for (const std::uint64_t n : f.ladder) body += fmt::format(" N = {} |", n);
     body += "\n|---:|";
-    for (std::size_t k = 0; k < ladder.size(); ++k) body += "---|";
+    for (std::size_t k = 0; k < f.ladder.size(); ++k) body += "---|";
     body += '\n';
-    for (const std::size_t s : dimensions) {
-      body += fmt::format("| {} |", s);
-      for (const std::uint64_t n : ladder) {
-        const auto at = competitors(s, n);
-        if (at.size() < 2 || !ran_exactly(at, n)) {
+    for (const leaders_row& r : f.rows) {
+      body += fmt::format("| {} |", r.s);
+      for (std::size_t k = 0; k < f.ladder.size(); ++k) {
+        const std::optional<leader>& c = r.cells[k];
+        if (!c) {
           body += " — |";
           continue;
         }
-        // The smallest error; a tie goes to the series listed first.
-        const entry* best = &at.front();
-        for (const entry& e : at) {
-          if (e.error < best->error) best = &e;
-        }
-        body += fmt::format(" {} ({}", cell(*best->method), sci(best->error));
-        if (best->n != n) body += fmt::format(" at N = {}", best->n);
+        body += fmt::format(" {} ({}", cell(c->method), sci(c->error));
+        if (c->at_n != f.ladder[k]) body += fmt::format(" at N = {}", c->at_n);
         body += ") |";
       }
       body += '\n';
@@ -345,6 +278,14 @@ std::string render_results_markdown(const run_info& info,
   // The scene's own words first, as Markdown (it is the author's text): what the run is for.
   const std::string_view description = trimmed(info.description);
   if (!description.empty()) out += fmt::format("{}\n\n", description);
+  // The answer first (answer_first.hpp): five lines at most, from the same "Who leads" tables as
+  // the section further down, before the metadata, so that a reader sees it on the first screen.
+  // A quotation, so that its list does not run into the metadata list below it.
+  const std::vector<family_leaders> leaders = who_leads(tables);
+  for (const std::string& line : answer_first_lines(tables, leaders, info.plots)) {
+    out += fmt::format("> - {}\n", line);
+  }
+  out += '\n';
   out += fmt::format("- seed: {}\n", info.seed);
   out += info.threads_allowed != 0 && info.threads_allowed != info.threads
              ? fmt::format("- threads: {} used ({} allowed; no cell had work for more)\n",
@@ -494,7 +435,7 @@ std::string render_results_markdown(const run_info& info,
   // (time_to_error_table.hpp).
   out += time_to_error_markdown(tables);
 
-  append_leaders(out, tables);
+  append_leaders(out, leaders);
 
   // Groups in order of first appearance.
   std::vector<std::pair<std::string, std::size_t>> groups;

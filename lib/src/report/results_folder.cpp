@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
+#include "quadmc/report/who_leads.hpp"
 
 #include <fstream>
 
@@ -32,13 +33,16 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
   if (outputs.csv) {
     write_text(folder / "convergence.csv", convergence_csv_text(info.scene, tables));
     write_text(folder / "slopes.csv", slopes_csv_text(info.scene, tables));
+    // The "Who leads" tables of the page as data, for bench/plot.py's summary figure.
+    write_text(folder / who_leads_csv_file, who_leads_csv_text(info.scene, who_leads(tables)));
   }
   if (outputs.markdown) write_text(folder / "README.md", render_results_markdown(info, tables));
 }
 
 bool is_results_file_name(std::string_view name) {
   return name == "convergence.csv" || name == "slopes.csv" || name == meta_csv_file ||
-         name == "README.md" || (name.size() > 4 && name.ends_with(".svg"));
+         name == who_leads_csv_file || name == "README.md" ||
+         (name.size() > 4 && (name.ends_with(".svg") || name.ends_with(".png")));
 }
 
 std::vector<std::string> plot_command_line(const std::filesystem::path& script,

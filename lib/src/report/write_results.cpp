@@ -2,8 +2,10 @@
 #include "quadmc/report/write_results.hpp"
 
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/report/answer_first.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/report/who_leads.hpp"
 
 #include <fmt/format.h>
 
@@ -62,7 +64,9 @@ bool writes_results(const plan& p, const results_options& options) {
 std::vector<std::string> result_file_names(const plan& p, const results_options& options) {
   std::vector<std::string> files = {std::string(meta_csv_file)};
   const output_spec& output = p.source.output;
-  if (output.csv) files.insert(files.end(), {"convergence.csv", "slopes.csv"});
+  if (output.csv) {
+    files.insert(files.end(), {"convergence.csv", "slopes.csv", std::string(who_leads_csv_file)});
+  }
   if (output.markdown) files.emplace_back("README.md");
   if (draws_plots(p, options)) {
     std::set<std::pair<std::string, std::size_t>> groups;
@@ -72,6 +76,14 @@ std::vector<std::string> result_file_names(const plan& p, const results_options&
     for (const auto& [integrand, s] : groups) {
       files.push_back(convergence_plot_file(integrand, s));
       files.push_back(work_precision_plot_file(integrand, s));
+    }
+    // The summary figures: the who-leads one is drawn only where the page has a table, which
+    // the plan cannot tell; the list is for the checks of names before the run, so it may hold
+    // one name more than the run writes.
+    for (const std::string_view stem : {slope_figure_stem, who_leads_figure_stem}) {
+      for (const char* extension : {".svg", ".png"}) {
+        files.push_back(std::string(stem) + extension);
+      }
     }
   }
   return files;

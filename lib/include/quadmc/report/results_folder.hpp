@@ -1,5 +1,6 @@
-// Writes a results folder: results/<scene>/{convergence.csv, slopes.csv, meta.csv, README.md};
-// the SVGs are added by bench/plot.py, run as plot_command_line(script, folder) after this.
+// Writes a results folder: results/<scene>/{convergence.csv, slopes.csv, who_leads.csv, meta.csv,
+// README.md}; the plots are added by bench/plot.py, run as plot_command_line(script, folder) after
+// this.
 //
 // Use it once per run, after analyse_convergence on every series. Not for partial output: the
 // files are written together from the same tables and run_info, so they never disagree.
@@ -20,8 +21,8 @@ namespace quadmc {
 // docs/design.md#skip-what-a-scene-does-not-need). bench/plot.py reads the CSV files, so a scene
 // that wants plots needs csv = true.
 struct results_outputs {
-  bool csv = true;       // convergence.csv, slopes.csv and meta.csv (provenance.hpp: what made
-                         // them, from run_info::build)
+  bool csv = true;       // convergence.csv, slopes.csv, who_leads.csv (who_leads.hpp) and
+                         // meta.csv (provenance.hpp: what made them, from run_info::build)
   bool markdown = true;  // README.md
 };
 
@@ -32,7 +33,8 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
                           const results_outputs& outputs = {});
 
 // True for the names of the files a run writes into a results folder: convergence.csv,
-// slopes.csv, meta.csv, README.md and plots (*.svg, including the names of earlier versions).
+// slopes.csv, who_leads.csv, meta.csv, README.md and plots (*.svg, including the names of earlier
+// versions, and *.png: the summary figures of answer_first.hpp).
 // The output-folder rules of `quadmc run` replace a folder only when every entry passes. Only the
 // name: whether the entry is a regular file (a folder "figures.svg" is not a plot) is the
 // caller's check, since it needs the file system.

@@ -33,7 +33,8 @@ struct results_options {
 // (the folder is then left alone and needs no staging).
 bool writes_results(const plan& p, const results_options& options);
 
-// The names of the files a run of `p` writes, for the checks made before it.
+// The names of the files a run of `p` writes, for the checks made before it (a superset: the
+// who-leads figure of answer_first.hpp is listed though a page without a table has none).
 std::vector<std::string> result_file_names(const plan& p, const results_options& options);
 
 // The staged folder of a run of `p`: `out` when given ("--out" in messages), else
