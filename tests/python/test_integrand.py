@@ -70,7 +70,7 @@ def test_drawn_parameters_follow_the_seed():
 @pytest.mark.parametrize("call,text", [
     (lambda: quadmc.integrand("genz_gaussian", s=2, b=[1, 2]),
      "invalid b: unknown key: not a parameter of genz_gaussian (its parameters: arrays: a, u; "
-     "numbers: none)"),
+     "numbers: none; strings: coefficient_decay)"),
     (lambda: quadmc.integrand("genz_gaussian", s=2, a=2.0),
      "invalid a: expected an array of numbers for genz_gaussian, got 2"),
     (lambda: quadmc.integrand("genz_gaussian", s=2, a="ab"),
