@@ -39,6 +39,9 @@ py::list integrands() {
     d["smoothness"] = text(e.smoothness);
     d["vector_keys"] = strings(e.vector_keys);
     d["scalar_keys"] = strings(e.scalar_keys);
+    py::dict string_keys;
+    for (const quadmc::string_key& k : e.string_keys) string_keys[text(k.key)] = strings(k.choices);
+    d["string_keys"] = string_keys;
     d["parameters"] = text(e.parameters);
     d["dimension"] = e.fixed_dimension == 0 ? py::object(py::none()) : py::int_(e.fixed_dimension);
     out.append(d);
@@ -90,10 +93,11 @@ py::list point_sets() {
 }  // namespace
 
 void add_catalogue(py::module_& m) {
-  m.def("integrands", &integrands,
-        "The integrand families as `quadmc list` prints them: dicts of name, description "
-        "(formula and domain), smoothness, vector_keys, scalar_keys, parameters (what each key "
-        "means) and dimension (the only s it takes, or None).");
+  m.def(
+      "integrands", &integrands,
+      "The integrand families as `quadmc list` prints them: dicts of name, description "
+      "(formula and domain), smoothness, vector_keys, scalar_keys, string_keys ({key: its "
+      "choices}), parameters (what each key means) and dimension (the only s it takes, or None).");
   m.def("methods", &methods,
         "The methods as `quadmc list` prints them: dicts of name, description, kind "
         "('deterministic' or 'randomized'), controls (the first is the default) and options "

@@ -5,8 +5,9 @@
 // (.domain), as the batch contract says (docs/design.md#hot-path-contract).
 //
 // params as the scene keys: a number is a scalar key, a sequence of numbers a vector key (Genz
-// a and u); omitted Genz parameters are drawn from `seed`. The catalogue checks the keys and
-// names an unknown one or one of the wrong kind.
+// a and u), a str a string key (Genz coefficient_decay); omitted Genz parameters are drawn from
+// `seed`. The catalogue checks the keys and names an unknown one, one of the wrong kind or a
+// string outside its choices.
 #include "bindings.hpp"
 
 #include "quadmc/core/batching.hpp"
@@ -35,10 +36,14 @@ namespace {
 
 using input_array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// One keyword as a scalar or a vector key of integrand_params.
+// One keyword as a scalar, a vector or a string key of integrand_params.
 void add_param(quadmc::integrand_params& params, const std::string& key, const py::handle& value) {
   if (is_number(value)) {
     params.scalars[key] = value.cast<double>();
+    return;
+  }
+  if (py::isinstance<py::str>(value)) {
+    params.strings[key] = value.cast<std::string>();
     return;
   }
   if (!py::isinstance<py::str>(value) && py::isinstance<py::iterable>(value)) {
@@ -47,7 +52,8 @@ void add_param(quadmc::integrand_params& params, const std::string& key, const p
       return;
     }
   }
-  throw quadmc::invalid_argument(key, quoted(value), "a number or a non-empty sequence of numbers");
+  throw quadmc::invalid_argument(key, quoted(value),
+                                 "a number, a non-empty sequence of numbers or a str");
 }
 
 quadmc::any_integrand make(const std::string& family, const py::object& s, const py::object& seed,
@@ -118,7 +124,8 @@ void add_integrand(py::module_& m) {
         R"(The catalogue family `family` in s dimensions (None: its default) as an Integrand.
 
 Keywords are its keys as quadmc.integrands() lists them: a number for a scalar key, a sequence
-for a vector key (genz a=[...], u=[...]); omitted Genz parameters are drawn from seed. Raises
+for a vector key (genz a=[...], u=[...]), a str for a string key (genz
+coefficient_decay="quadratic"); omitted Genz parameters are drawn from seed. Raises
 ValueError with the library's text for an unknown family or key.)");
 }
 

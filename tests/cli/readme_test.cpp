@@ -232,6 +232,7 @@ TEST(Readme, FamilyTableHasEachFamilysKeys) {
     ASSERT_GE(it->second->size(), 2u) << e.name;
     names keys(e.vector_keys.begin(), e.vector_keys.end());
     keys.insert(e.scalar_keys.begin(), e.scalar_keys.end());
+    for (const quadmc::string_key& k : e.string_keys) keys.emplace(k.key);
     EXPECT_EQ(joined(identifiers((*it->second)[1])), joined(keys)) << e.name << "'s keys";
   }
 }

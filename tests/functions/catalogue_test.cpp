@@ -99,6 +99,10 @@ TEST(Catalogue, KeysAreDocumentedAndNamesUnique) {
       EXPECT_NE(e.parameters.find(key), std::string_view::npos) << e.name << " " << key;
     for (std::string_view key : e.scalar_keys)
       EXPECT_NE(e.parameters.find(key), std::string_view::npos) << e.name << " " << key;
+    for (const string_key& key : e.string_keys) {
+      EXPECT_NE(e.parameters.find(key.key), std::string_view::npos) << e.name << " " << key.key;
+      EXPECT_FALSE(key.choices.empty()) << e.name << " " << key.key;
+    }
   }
   EXPECT_EQ(names.size(), 27u);
 }
@@ -189,6 +193,56 @@ TEST(Catalogue, GenzParametersFromSeedOrGiven) {
   const auto d = genz_random_parameters(genz_family::discontinuous, 3, 0);
   EXPECT_EQ(make_integrand("genz_discontinuous", q).info().exact,
             genz_discontinuous(d.a, d.u, {1, 2, 3}).info().exact);
+}
+
+// coefficient_decay, the one string key: it shapes the drawn a (genz_random_parameters), is
+// checked in find_key_problem with the other keys, and is refused beside an explicit a.
+TEST(Catalogue, GenzCoefficientDecayShapesTheDrawnAAndIsChecked) {
+  integrand_params p;
+  p.dimension = 5;
+  p.seed = 9;
+  for (const genz_decay d : {genz_decay::none, genz_decay::quadratic, genz_decay::exponential}) {
+    p.strings["coefficient_decay"] = std::string(to_string(d));
+    const auto drawn = genz_random_parameters(genz_family::gaussian, 5, 9, d);
+    EXPECT_EQ(make_integrand("genz_gaussian", p).info().exact,
+              genz_gaussian(drawn.a, drawn.u).info().exact)
+        << to_string(d);
+    const drawn_parameters shown = find_catalogue_entry("genz_gaussian").drawn(p);
+    EXPECT_EQ(shown.at("a"), drawn.a) << to_string(d);
+    EXPECT_EQ(shown.at("u"), drawn.u) << to_string(d);
+  }
+  p.strings["coefficient_decay"] = "cubic";
+  EXPECT_NE(message_of("genz_gaussian", p)
+                .find("invalid coefficient_decay: expected one of \"none\", \"quadratic\", "
+                      "\"exponential\", got \"cubic\""),
+            std::string::npos)
+      << message_of("genz_gaussian", p);
+  p.strings["coefficient_decay"] = "quadratic";
+  p.vectors["a"] = {1.0, 2.0, 3.0, 4.0, 5.0};
+  EXPECT_NE(message_of("genz_gaussian", p)
+                .find("invalid coefficient_decay = \"quadratic\": expected no explicit a"),
+            std::string::npos)
+      << message_of("genz_gaussian", p);
+  p = {};
+  p.scalars["coefficient_decay"] = 2.0;
+  EXPECT_NE(message_of("genz_product_peak", p)
+                .find("invalid coefficient_decay: expected a string, one of \"none\", "
+                      "\"quadratic\", \"exponential\", for genz_product_peak, got 2"),
+            std::string::npos)
+      << message_of("genz_product_peak", p);
+  p = {};
+  p.strings["a"] = "quadratic";
+  EXPECT_NE(message_of("genz_product_peak", p)
+                .find("invalid a: expected an array of numbers for genz_product_peak, got "
+                      "\"quadratic\""),
+            std::string::npos)
+      << message_of("genz_product_peak", p);
+  p = {};
+  p.strings["coefficient_decay"] = "none";
+  EXPECT_NE(message_of("sqrt", p).find("invalid coefficient_decay: unknown key: not a parameter "
+                                       "of sqrt"),
+            std::string::npos)
+      << message_of("sqrt", p);
 }
 
 }  // namespace

@@ -234,6 +234,88 @@ TEST(Genz, NormalisationMakesTheSumOfAEqualTheDifficulty) {
             (std::vector<double>{7.03 / 4, 3 * 7.03 / 4}));
 }
 
+// The draw as it was before coefficient_decay existed, copied here so that "none" is held to it
+// bit for bit: every committed result was computed with these parameters.
+genz_parameters draw_without_decay(genz_family f, std::size_t s, std::uint64_t seed) {
+  const philox_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
+  std::vector<double> w(s), u(s);
+  for (std::size_t j = 0; j < s; ++j) {
+    w[j] = 1.0 - rng.uniform(j);
+    u[j] = rng.uniform(s + j);
+  }
+  return {genz_normalise(f, w), std::move(u)};
+}
+
+constexpr genz_family all_genz_families[] = {genz_family::oscillatory, genz_family::product_peak,
+                                             genz_family::corner_peak, genz_family::gaussian,
+                                             genz_family::continuous,  genz_family::discontinuous};
+
+TEST(GenzDecay, NoneIsBitForBitTheDrawWithoutADecay) {
+  for (const genz_family f : all_genz_families) {
+    for (const std::size_t s : {1u, 2u, 3u, 7u, 16u, 20u}) {
+      for (const std::uint64_t seed : {0ull, 1ull, 42ull, 0x9e3779b97f4a7c15ull}) {
+        const genz_parameters old = draw_without_decay(f, s, seed);
+        const genz_parameters none = genz_random_parameters(f, s, seed, genz_decay::none);
+        EXPECT_EQ(none.a, old.a) << to_string(f) << " s = " << s << " seed = " << seed;
+        EXPECT_EQ(none.u, old.u) << to_string(f) << " s = " << s << " seed = " << seed;
+        EXPECT_EQ(genz_random_parameters(f, s, seed).a, old.a) << "the default is none";
+      }
+    }
+  }
+}
+
+// aⱼ = b·wⱼ·dⱼ/Σ wₖdₖ with wⱼ = 1 − Uⱼ regenerated here from the stream and dⱼ = j⁻² or 2⁻ʲ
+// (1-based j), in long double; Σa = b to 1e-15 relative; u as without a decay.
+TEST(GenzDecay, QuadraticAndExponentialScaleTheWeightsAndKeepTheDifficulty) {
+  for (const genz_decay decay : {genz_decay::quadratic, genz_decay::exponential}) {
+    for (const genz_family f : all_genz_families) {
+      for (const std::size_t s : {1u, 2u, 5u, 12u, 20u}) {
+        for (const std::uint64_t seed : {3ull, 2026ull}) {
+          const genz_parameters p = genz_random_parameters(f, s, seed, decay);
+          const philox_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
+          std::vector<long double> scaled(s);
+          long double total = 0.0L;
+          for (std::size_t j = 0; j < s; ++j) {
+            const long double index = static_cast<long double>(j + 1);
+            const long double d = decay == genz_decay::quadratic
+                                      ? 1.0L / (index * index)
+                                      : std::ldexp(1.0L, -static_cast<int>(j + 1));
+            scaled[j] = (1.0L - rng.uniform(j)) * d;
+            total += scaled[j];
+          }
+          const std::string context =
+              fmt::format("{} {} s = {} seed = {}", to_string(decay), to_string(f), s, seed);
+          long double sum = 0.0L;
+          for (std::size_t j = 0; j < s; ++j) {
+            const long double expected = genz_difficulty(f) * scaled[j] / total;
+            EXPECT_LE(std::abs(p.a[j] - expected),
+                      4 * std::numeric_limits<double>::epsilon() * expected)
+                << context << " j = " << j + 1;
+            sum += p.a[j];
+          }
+          EXPECT_LE(std::abs(sum - genz_difficulty(f)), 1e-15 * genz_difficulty(f)) << context;
+          EXPECT_EQ(p.u, draw_without_decay(f, s, seed).u) << context;
+          // Lower effective dimension: the first coefficient carries more of b than without.
+          if (s > 1) {
+            EXPECT_GT(p.a[0], draw_without_decay(f, s, seed).a[0]) << context;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(GenzDecay, NamesAreParsedAndABadOneNamesTheChoices) {
+  for (const genz_decay d : {genz_decay::none, genz_decay::quadratic, genz_decay::exponential}) {
+    EXPECT_EQ(genz_decay_from(to_string(d)), d);
+  }
+  const std::string m = message_of([] { genz_decay_from("cubic"); });
+  EXPECT_NE(m.find("invalid coefficient_decay = \"cubic\": expected one of \"none\", "
+                   "\"quadratic\", \"exponential\""),
+            std::string::npos)
+      << m;
+}
+
 // The corner-peak closed form in 100 significant digits, the reference for the rounding study.
 double corner_peak_100_digits(const std::vector<double>& a) {
   using big = boost::multiprecision::cpp_bin_float_100;

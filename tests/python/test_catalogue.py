@@ -34,6 +34,8 @@ def test_integrands_are_the_listings(listing):
         assert isinstance(family["vector_keys"], list) and isinstance(family["scalar_keys"], list)
     genz = next(f for f in families if f["name"] == "genz_gaussian")
     assert (genz["vector_keys"], genz["scalar_keys"], genz["dimension"]) == (["a", "u"], [], None)
+    assert genz["string_keys"] == {"coefficient_decay": ["none", "quadratic", "exponential"]}
+    assert next(f for f in families if f["name"] == "sqrt")["string_keys"] == {}
 
 
 def test_methods_are_the_listings(listing):

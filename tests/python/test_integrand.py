@@ -67,14 +67,29 @@ def test_drawn_parameters_follow_the_seed():
     assert np.isfinite(a.exact)
 
 
+def test_coefficient_decay_shapes_only_the_drawn_a():
+    plain = quadmc.integrand("genz_gaussian", s=4, seed=3)
+    none = quadmc.integrand("genz_gaussian", s=4, seed=3, coefficient_decay="none")
+    assert none.exact == plain.exact
+    for decay in ("quadratic", "exponential"):
+        f = quadmc.integrand("genz_gaussian", s=4, seed=3, coefficient_decay=decay)
+        assert np.isfinite(f.exact) and f.exact != plain.exact, decay
+
+
 @pytest.mark.parametrize("call,text", [
     (lambda: quadmc.integrand("genz_gaussian", s=2, b=[1, 2]),
      "invalid b: unknown key: not a parameter of genz_gaussian (its parameters: arrays: a, u; "
-     "numbers: none)"),
+     "numbers: none; strings: coefficient_decay)"),
     (lambda: quadmc.integrand("genz_gaussian", s=2, a=2.0),
      "invalid a: expected an array of numbers for genz_gaussian, got 2"),
     (lambda: quadmc.integrand("genz_gaussian", s=2, a="ab"),
-     "invalid a = ab: expected a number or a non-empty sequence of numbers"),
+     'invalid a: expected an array of numbers for genz_gaussian, got "ab"'),
+    (lambda: quadmc.integrand("genz_gaussian", s=2, a=None),
+     "invalid a = None: expected a number, a non-empty sequence of numbers or a str"),
+    (lambda: quadmc.integrand("genz_gaussian", s=2, coefficient_decay="cubic"),
+     'invalid coefficient_decay: expected one of "none", "quadratic", "exponential", got "cubic"'),
+    (lambda: quadmc.integrand("genz_gaussian", s=2, a=[1, 2], coefficient_decay="quadratic"),
+     'invalid coefficient_decay = "quadratic": expected no explicit a beside it'),
     (lambda: quadmc.integrand("genz_gaussian", s=0), "invalid s = 0: expected an integer in [1, "),
     (lambda: quadmc.integrand("genz_gaussian", s=2)(np.zeros((4, 3))),
      "invalid x = an array of shape (4, 3): expected a 2D array of shape (n, 2) for genz_gaussian"),

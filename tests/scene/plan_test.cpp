@@ -479,6 +479,56 @@ N = [16]
   expect_plan_error(t, line_of(t, "a = "), "integrand[1].a", "a");
 }
 
+// coefficient_decay (genz.hpp): the drawn a follows it, and the catalogue's key rule refuses a bad
+// choice, a number, and the key beside an explicit a, each at the line of the key.
+TEST(MakePlan, GenzCoefficientDecayShapesTheDrawnAAndBadUsesAreRefusedAtTheKey) {
+  constexpr std::string_view ok = R"(seed = 5
+[[integrand]]
+family = "genz_product_peak"
+dimension = 6
+coefficient_decay = "quadratic"
+ensemble = 2
+[[method]]
+name = "plain_mc"
+[budget]
+N = [16]
+)";
+  const plan p = plan_of(ok);
+  ASSERT_EQ(p.instances.size(), 2u);
+  for (const auto& inst : p.instances) {
+    const genz_parameters expected =
+        genz_random_parameters(genz_family::product_peak, 6, inst.seed, genz_decay::quadratic);
+    EXPECT_EQ(inst.drawn.at("a"), expected.a);
+    EXPECT_EQ(inst.drawn.at("u"), expected.u);
+    // The seed is (seed, family, s, k) as without a decay: only the weights change.
+    EXPECT_EQ(inst.seed, stream_id({5, name_id("genz_product_peak"), 6, inst.instance}));
+    EXPECT_NE(expected.a,
+              genz_random_parameters(genz_family::product_peak, 6, inst.seed, genz_decay::none).a);
+  }
+  EXPECT_NE(format_plan(p).find(fmt::format("    a = [{:.17g}]  (drawn from seed",
+                                            fmt::join(p.instances[0].drawn.at("a"), ", "))),
+            std::string::npos)
+      << format_plan(p);
+  // "none" is the default: the same plan as without the key.
+  const plan none = plan_of(replace(ok, "\"quadratic\"", "\"none\""));
+  const plan omitted = plan_of(replace(ok, "coefficient_decay = \"quadratic\"\n", ""));
+  EXPECT_EQ(none.instances[1].drawn, omitted.instances[1].drawn);
+
+  std::string t = replace(ok, "\"quadratic\"", "\"cubic\"");
+  expect_plan_error(t, line_of(t, "coefficient_decay"), "integrand[1].coefficient_decay",
+                    "expected one of \"none\", \"quadratic\", \"exponential\", got \"cubic\"");
+  t = replace(ok, "\"quadratic\"", "2");
+  expect_plan_error(t, line_of(t, "coefficient_decay"), "integrand[1].coefficient_decay",
+                    "expected a string, one of \"none\", \"quadratic\", \"exponential\"");
+  t = replace(ok, "dimension = 6\n", "dimension = 6\na = [1, 2, 3, 4, 5, 6]\n");
+  expect_plan_error(t, line_of(t, "coefficient_decay"), "integrand[1].coefficient_decay",
+                    "invalid coefficient_decay = \"quadratic\": expected no explicit a beside it");
+  // A string where the family takes an array.
+  t = replace(ok, "coefficient_decay = \"quadratic\"", "u = \"centre\"");
+  expect_plan_error(t, line_of(t, "u = "), "integrand[1].u",
+                    "expected an array of numbers for genz_product_peak, got \"centre\"");
+}
+
 // ---------------------------------------------------------------------------------------------
 // What a run would refuse is refused by make_plan, before any work, at the key concerned.
 

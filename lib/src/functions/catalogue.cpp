@@ -36,11 +36,14 @@ constexpr std::array<std::string_view, 1> t_key{"t"};
 constexpr std::array<std::string_view, 1> a_key{"a"};
 constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
 constexpr std::array<std::string_view, 2> ab_keys{"a", "b"};
+constexpr std::array<string_key, 1> genz_string_keys{{{"coefficient_decay", genz_decay_names}}};
 
 constexpr std::string_view genz_doc =
     "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b), "
     "not subnormal, and such that f's values and ∫f are normal doubles; u: shift in [0,1], "
-    "length s (default: drawn from seed)";
+    "length s (default: drawn from seed); coefficient_decay: \"none\" (default), "
+    "\"quadratic\" or \"exponential\", drawn w multiplied by j⁻² or 2⁻ʲ before normalising "
+    "(fewer effective dimensions at the same Σa = b), not with an explicit a";
 
 std::size_t dimension_or(const integrand_params& p, std::size_t default_s) {
   return p.dimension == 0 ? default_s : p.dimension;
@@ -65,11 +68,23 @@ std::vector<double> vector_of_length(const integrand_params& p, std::string_view
   return it->second;
 }
 
+// The Genz key coefficient_decay (default none). It shapes only the a drawn from the seed, so it
+// is refused beside an explicit a rather than silently ignored.
+genz_decay decay_of(const integrand_params& p) {
+  const auto it = p.strings.find("coefficient_decay");
+  if (it == p.strings.end()) return genz_decay::none;
+  const genz_decay decay = genz_decay_from(it->second);
+  require(!p.vectors.contains("a"), "coefficient_decay", fmt::format("\"{}\"", it->second),
+          "no explicit a beside it (coefficient_decay shapes only the a drawn from the seed; "
+          "give a or coefficient_decay, not both)");
+  return decay;
+}
+
 template <class Family, genz_family F>
 any_integrand make_genz(const integrand_params& p) {
   const std::size_t s = dimension_or(p, 1);
   require(s >= 1, "dimension", s, "s ≥ 1");
-  genz_parameters drawn = genz_random_parameters(F, s, p.seed);
+  genz_parameters drawn = genz_random_parameters(F, s, p.seed, decay_of(p));
   std::vector<double> a = vector_of_length(p, "a", s, std::move(drawn.a));
   std::vector<double> u = vector_of_length(p, "u", s, std::move(drawn.u));
   if constexpr (std::is_same_v<Family, genz_discontinuous>) {
@@ -90,8 +105,8 @@ any_integrand make_genz(const integrand_params& p) {
 
 // The parameters a Genz family draws from the seed when the scene omits them (genz.hpp).
 template <genz_family F>
-drawn_parameters draw_genz(std::size_t s, std::uint64_t seed) {
-  genz_parameters drawn = genz_random_parameters(F, s, seed);
+drawn_parameters draw_genz(const integrand_params& p) {
+  genz_parameters drawn = genz_random_parameters(F, p.dimension, p.seed, decay_of(p));
   return {{"a", std::move(drawn.a)}, {"u", std::move(drawn.u)}};
 }
 
@@ -157,27 +172,29 @@ any_integrand make_irradiance(const integrand_params& p) {
 const std::array<catalogue_entry, 27> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc, make_genz<genz_oscillatory, genz_family::oscillatory>,
-     draw_genz<genz_family::oscillatory>, false, false, 0},
+     draw_genz<genz_family::oscillatory>, false, false, 0, genz_string_keys},
     {"genz_product_peak", "Π 1/(aᵢ⁻² + (xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys,
      no_keys, genz_doc, make_genz<genz_product_peak, genz_family::product_peak>,
-     draw_genz<genz_family::product_peak>, false, false, 0},
+     draw_genz<genz_family::product_peak>, false, false, 0, genz_string_keys},
     {"genz_corner_peak", "(1 + Σ aᵢxᵢ)^−(s+1) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
-     "as the other Genz families; s ≤ 20 (its closed form sums 2^s terms in 50-digit arithmetic "
+     "a, u, coefficient_decay as the other Genz families; s ≤ 20 (its closed form sums 2^s terms "
+     "in 50-digit arithmetic "
      "and must carry a rounding bound ≤ 1e-10, true for Genz's difficulty at every s ≤ 20)",
      make_genz<genz_corner_peak, genz_family::corner_peak>, draw_genz<genz_family::corner_peak>,
-     false, true, 0},
+     false, true, 0, genz_string_keys},
     {"genz_gaussian", "exp(−Σ aᵢ²(xᵢ − uᵢ)²) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc, make_genz<genz_gaussian, genz_family::gaussian>, draw_genz<genz_family::gaussian>,
-     false, false, 0},
+     false, false, 0, genz_string_keys},
     {"genz_continuous", "exp(−Σ aᵢ|xᵢ − uᵢ|) on [0,1]^s", "C0", genz_vector_keys, no_keys, genz_doc,
      make_genz<genz_continuous, genz_family::continuous>, draw_genz<genz_family::continuous>, false,
-     false, 0},
+     false, 0, genz_string_keys},
     {"genz_discontinuous", "0 if x_c > u_c for a c in cut, else exp(Σ aᵢxᵢ) on [0,1]^s",
      "discontinuous", genz_discontinuous_keys, no_keys,
-     "a, u as the other Genz families; cut: 1-based indices of the cut coordinates, distinct, in "
+     "a, u, coefficient_decay as the other Genz families; cut: 1-based indices of the cut "
+     "coordinates, distinct, in "
      "1..s (default [1, 2], [1] when s = 1; [1, …, s] cuts every coordinate)",
      make_genz<genz_discontinuous, genz_family::discontinuous>,
-     draw_genz<genz_family::discontinuous>, false, false, 0},
+     draw_genz<genz_family::discontinuous>, false, false, 0, genz_string_keys},
     {"poly", "x⁵ on [lower, upper]", "analytic", no_keys, interval_keys,
      "lower, upper: the interval (default 0, 1), |lower|, |upper| ≤ 1e51; dimension 1",
      make_interval<poly_1d>, nullptr, false, false, 1},
@@ -254,15 +271,39 @@ std::optional<key_problem> find_key_problem(const catalogue_entry& e, const inte
   auto list_of = [](std::span<const std::string_view> keys) {
     return keys.empty() ? std::string("none") : fmt::format("{}", fmt::join(keys, ", "));
   };
-  const std::string parameters =
+  const auto string_key_of = [&e](std::string_view key) -> const string_key* {
+    for (const string_key& k : e.string_keys) {
+      if (k.key == key) return &k;
+    }
+    return nullptr;
+  };
+  // "one of \"none\", \"quadratic\", \"exponential\"", the choices as a scene writes them.
+  const auto choices_of = [](const string_key& k) {
+    std::string out;
+    for (std::string_view c : k.choices) out += fmt::format("{}\"{}\"", out.empty() ? "" : ", ", c);
+    return fmt::format("one of {}", out);
+  };
+  std::string parameters =
       fmt::format("arrays: {}; numbers: {}", list_of(e.vector_keys), list_of(e.scalar_keys));
+  if (!e.string_keys.empty()) {
+    std::vector<std::string_view> names;
+    for (const string_key& k : e.string_keys) names.push_back(k.key);
+    parameters += fmt::format("; strings: {}", fmt::join(names, ", "));
+  }
+  const auto unknown = [&](const std::string& key) {
+    return key_problem{key, fmt::format("unknown key: not a parameter of {} (its parameters: {})",
+                                        e.name, parameters)};
+  };
   for (const auto& [key, value] : p.vectors) {
     if (contains(e.vector_keys, key)) continue;
     if (contains(e.scalar_keys, key)) {
       return key_problem{key, fmt::format("expected a number for {}, got an array", e.name)};
     }
-    return key_problem{key, fmt::format("unknown key: not a parameter of {} (its parameters: {})",
-                                        e.name, parameters)};
+    if (const string_key* k = string_key_of(key)) {
+      return key_problem{
+          key, fmt::format("expected a string, {}, for {}, got an array", choices_of(*k), e.name)};
+    }
+    return unknown(key);
   }
   for (const auto& [key, value] : p.scalars) {
     if (contains(e.scalar_keys, key)) continue;
@@ -270,8 +311,25 @@ std::optional<key_problem> find_key_problem(const catalogue_entry& e, const inte
       return key_problem{key,
                          fmt::format("expected an array of numbers for {}, got {}", e.name, value)};
     }
-    return key_problem{key, fmt::format("unknown key: not a parameter of {} (its parameters: {})",
-                                        e.name, parameters)};
+    if (const string_key* k = string_key_of(key)) {
+      return key_problem{
+          key, fmt::format("expected a string, {}, for {}, got {}", choices_of(*k), e.name, value)};
+    }
+    return unknown(key);
+  }
+  for (const auto& [key, value] : p.strings) {
+    if (const string_key* k = string_key_of(key)) {
+      if (std::find(k->choices.begin(), k->choices.end(), value) != k->choices.end()) continue;
+      return key_problem{key, fmt::format("expected {}, got \"{}\"", choices_of(*k), value)};
+    }
+    if (contains(e.scalar_keys, key)) {
+      return key_problem{key, fmt::format("expected a number for {}, got \"{}\"", e.name, value)};
+    }
+    if (contains(e.vector_keys, key)) {
+      return key_problem{
+          key, fmt::format("expected an array of numbers for {}, got \"{}\"", e.name, value)};
+    }
+    return unknown(key);
   }
   return std::nullopt;
 }

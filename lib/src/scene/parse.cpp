@@ -173,7 +173,7 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
     }
     const entry e{&key, &value, scene_reader::path(prefix, k)};
     const std::string what =
-        fmt::format("a number or an array of numbers (a parameter of {})", base.family);
+        fmt::format("a number, an array of numbers or a string (a parameter of {})", base.family);
     if (value.is_number()) {
       base.scalars.emplace(toml_original_text(k), r.number(e, what));
     } else if (const auto* a = value.as_array()) {
@@ -190,6 +190,9 @@ void parse_integrand(const scene_reader& r, const toml::table& t, std::size_t in
         v.push_back(r.number(element, "a finite number"));
       }
       base.vectors.emplace(toml_original_text(k), std::move(v));
+    } else if (value.is_string()) {
+      // Which strings the key takes is the catalogue's rule (find_key_problem), as for the others.
+      base.strings.emplace(toml_original_text(k), r.string(e, what));
     } else {
       r.expected(e, what);
     }

@@ -127,7 +127,11 @@ drawn_parameters drawn_for(const integrand_spec& f, std::size_t s, std::uint64_t
   drawn_parameters out;
   const catalogue_entry* entry = find_family(f.family);
   if (entry == nullptr || entry->drawn == nullptr) return out;
-  for (auto& [key, values] : entry->drawn(s, seed)) {
+  integrand_params params;
+  params.dimension = s;
+  params.seed = seed;
+  params.strings = f.strings;  // how a draw is shaped (Genz coefficient_decay)
+  for (auto& [key, values] : entry->drawn(params)) {
     if (!f.vectors.contains(key)) out.emplace(key, std::move(values));
   }
   return out;
@@ -265,6 +269,7 @@ void build_instances(scene& sc, std::size_t index, std::vector<plan_instance>& o
   params.dimension = f.dimension;
   for (const auto& [k, v] : f.scalars) params.scalars.emplace(k, v);
   for (const auto& [k, v] : f.vectors) params.vectors.emplace(k, v);
+  params.strings = f.strings;
   if (const auto problem = find_key_problem(*entry, params)) {
     throw scene_error(key_location(f.keys, problem->key, f.table),
                       fmt::format("{}.{}", prefix, problem->key), problem->message);

@@ -7,9 +7,11 @@
 // family at compile time construct the concrete type (genz.hpp, classic_1d.hpp, …) instead and
 // skip the type erasure.
 //
-// Rules: unknown names, unknown keys and keys of the wrong kind (a vector given as a scalar or
-// the reverse) are quadmc::invalid_argument naming them; a family's own validation reports bad
-// values. Omitted Genz a/u are drawn from `seed` (genz_random_parameters) and normalised.
+// Rules: unknown names, unknown keys, keys of the wrong kind (a vector given as a scalar, a
+// number for a string key, …) and a string outside its key's choices are
+// quadmc::invalid_argument naming them; a family's own validation reports bad values. Omitted
+// Genz a/u are drawn from `seed` (genz_random_parameters, weights shaped by the string key
+// `coefficient_decay`) and normalised.
 #pragma once
 
 #include "quadmc/functions/any_integrand.hpp"
@@ -33,11 +35,19 @@ struct integrand_params {
   std::size_t dimension = 0;
   std::map<std::string, std::vector<double>, std::less<>> vectors;
   std::map<std::string, double, std::less<>> scalars;
+  // String keys, each one of the choices its catalogue_entry::string_keys lists.
+  std::map<std::string, std::string, std::less<>> strings;
   std::uint64_t seed = 0;  // for parameters drawn at random (Genz a, u)
 };
 
 // Parameters a family draws from the seed when they are omitted (Genz a and u), by key.
 using drawn_parameters = std::map<std::string, std::vector<double>, std::less<>>;
+
+// A string-valued key and the only values it takes (the first is its default, by convention).
+struct string_key {
+  std::string_view key;
+  std::span<const std::string_view> choices;
+};
 
 // One family: its keys, its factory and what the planner needs to know, together (a new family
 // is one header of this layer and one entry of the table in catalogue.cpp).
@@ -50,12 +60,15 @@ struct catalogue_entry {
   std::string_view parameters;  // what each key means, its default and constraints
   // Builds the family from parameters whose keys are checked and whose dimension is resolved.
   any_integrand (*make)(const integrand_params& params);
-  // The values of the parameters drawn from `seed` for dimension s; nullptr: the family draws
-  // none, so every instance of an ensemble is the same integrand.
-  drawn_parameters (*drawn)(std::size_t s, std::uint64_t seed) = nullptr;
+  // The values of the parameters drawn from params.seed for s = params.dimension (resolved, ≥ 1),
+  // shaped by params.strings (keys checked); nullptr: the family draws none, so every instance
+  // of an ensemble is the same integrand.
+  drawn_parameters (*drawn)(const integrand_params& params) = nullptr;
   bool rendering = false;             // an irradiance integrand (make_irradiance_setup)
   bool vertex_sum_reference = false;  // the reference sums 2^s vertex terms (costly in s)
   std::size_t fixed_dimension = 0;    // the only s it takes (1D classics 1, irradiance 2); 0 any
+  // Last, so that entries written before it (outside families) still initialise in order.
+  std::span<const string_key> string_keys = {};
 };
 
 // All families, in a fixed order (Genz, classic 1D, geometry, rendering), then those added by
@@ -81,8 +94,10 @@ const catalogue_entry& find_catalogue_entry(std::string_view name);
 // `dimension` itself, or the family's only s, or 1. make_integrand resolves 0 the same way.
 std::size_t resolved_dimension(const catalogue_entry& entry, std::size_t dimension) noexcept;
 
-// A key the family does not take, or one given as a number where it takes an array (or the
-// reverse): which key and why. The scene planner and make_integrand both ask this one rule.
+// A key the family does not take, one given as a number where it takes an array (or the
+// reverse, or a string where it takes either, or either where it takes a string), or a string
+// outside its choices: which key and why. The scene planner and make_integrand both ask this one
+// rule.
 struct key_problem {
   std::string key;
   std::string message;

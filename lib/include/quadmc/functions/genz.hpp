@@ -97,20 +97,52 @@ inline std::vector<double> genz_normalise(genz_family f, std::span<const double>
   return a;
 }
 
+// The weights the difficulty is spread over when a is drawn (the scene key `coefficient_decay`):
+// none keeps wⱼ = 1 − Uⱼ; quadratic multiplies them by j⁻², exponential by 2⁻ʲ (1-based j), and
+// genz_normalise then restores Σa = b. The same b spread over decaying weights puts most of the
+// variation into the first coordinates: a lower effective dimension at the same difficulty
+// (docs/theory.md#genz-difficulty).
+enum class genz_decay { none, quadratic, exponential };
+
+constexpr std::array<std::string_view, 3> genz_decay_names = {"none", "quadratic", "exponential"};
+
+constexpr std::string_view to_string(genz_decay d) noexcept {
+  return genz_decay_names[static_cast<std::size_t>(d)];
+}
+
+// The decay named `name`; throws invalid_argument("coefficient_decay", …) naming the choices.
+inline genz_decay genz_decay_from(std::string_view name) {
+  for (std::size_t i = 0; i < genz_decay_names.size(); ++i) {
+    if (genz_decay_names[i] == name) return static_cast<genz_decay>(i);
+  }
+  throw invalid_argument("coefficient_decay", fmt::format("\"{}\"", name),
+                         "one of \"none\", \"quadratic\", \"exponential\"");
+}
+
 struct genz_parameters {
   std::vector<double> a;  // difficulty, normalised so that Σa = genz_difficulty(family)
   std::vector<double> u;  // shift, in [0,1)
 };
 
 // w_j = 1 − U_j (in (0,1], so no aᵢ is 0: the product peak and Gaussian need aᵢ > 0) and
-// u_j = U_{s+j}, U_k = philox_stream(seed, stream_id({family})).uniform(k); then normalised.
-inline genz_parameters genz_random_parameters(genz_family f, std::size_t s, std::uint64_t seed) {
+// u_j = U_{s+j}, U_k = philox_stream(seed, stream_id({family})).uniform(k); w_j times the decay's
+// factor (j⁻² or 2⁻ʲ, 1-based j); then normalised. The U_k do not depend on the decay, so the
+// three decays of one seed share u and differ only in how b is spread (a paired comparison).
+// genz_decay::none is bit for bit the draw without a decay. An exponential decay makes aⱼ ≈ b·2⁻ʲ,
+// subnormal beyond j ≈ 1020, which the families refuse (validate_genz), as they refuse products
+// Π aⱼ that underflow.
+inline genz_parameters genz_random_parameters(genz_family f, std::size_t s, std::uint64_t seed,
+                                              genz_decay decay = genz_decay::none) {
   require(s >= 1, "dimension", s, "s ≥ 1");
   const philox_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
   std::vector<double> w(s), u(s);
   for (std::size_t j = 0; j < s; ++j) {
     w[j] = 1.0 - rng.uniform(j);
     u[j] = rng.uniform(s + j);
+    const double index = static_cast<double>(j + 1);  // exact: s ≤ 2^53
+    // One rounding for j⁻² (j² is exact for j < 2^26); 2⁻ʲ by ldexp is exact while w stays normal.
+    if (decay == genz_decay::quadratic) w[j] /= index * index;
+    if (decay == genz_decay::exponential) w[j] = std::ldexp(w[j], -static_cast<int>(j + 1));
   }
   return {genz_normalise(f, w), std::move(u)};
 }

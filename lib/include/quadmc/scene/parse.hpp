@@ -41,8 +41,10 @@
 //                             (docs/theory.md#references-without-a-closed-form).
 //   a = [1.0, 2.0, 0.5]       any other key is a family parameter, passed to the catalogue:
 //   u = [0.3, 0.6, 0.45]      a number → scalar, an array of numbers → vector (length s where
-//   cut = [1, 2]              the family says so). Omitted ones are drawn from the seed and the
-//                             plan prints the values drawn. The catalogue rejects unknown ones.
+//   cut = [1, 2]              the family says so), a string → string (one of the key's choices,
+//   coefficient_decay =       e.g. Genz coefficient_decay). Omitted ones are drawn from the seed
+//     "quadratic"             and the plan prints the values drawn. The catalogue rejects
+//                             unknown keys, wrong kinds and strings outside the choices.
 //
 // [[method]]              one table per method (at least one). The keys every method has:
 //   name = "midpoint"     required; a method of methods/registry.hpp (`quadmc list` prints them

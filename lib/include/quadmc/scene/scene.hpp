@@ -42,9 +42,11 @@ struct integrand_spec {
   // reference_source::given: the value and its absolute uncertainty (≥ 0) as the file gives them.
   double reference_value = std::numeric_limits<double>::quiet_NaN();
   double reference_uncertainty = 0.0;
-  // Family parameters passed through to the catalogue: numbers → scalars, arrays → vectors.
+  // Family parameters passed through to the catalogue: numbers → scalars, arrays → vectors,
+  // strings → strings.
   std::map<std::string, double, std::less<>> scalars;
   std::map<std::string, std::vector<double>, std::less<>> vectors;
+  std::map<std::string, std::string, std::less<>> strings;
 
   std::size_t table_index = 1;  // 1-based number of its [[integrand]] table in the file
   source_location table;        // the [[integrand]] header
