@@ -3,6 +3,7 @@
 
 #include "quadmc/functions/classic_1d.hpp"
 #include "quadmc/functions/genz.hpp"
+#include "quadmc/functions/geometric_asian.hpp"
 #include "quadmc/functions/indicators.hpp"
 #include "quadmc/functions/irradiance.hpp"
 #include "quadmc/functions/ishigami.hpp"
@@ -37,6 +38,9 @@ constexpr std::array<std::string_view, 1> a_key{"a"};
 constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
 constexpr std::array<std::string_view, 2> ab_keys{"a", "b"};
 constexpr std::array<string_key, 1> genz_string_keys{{{"coefficient_decay", genz_decay_names}}};
+constexpr std::array<std::string_view, 5> option_keys{"spot", "strike", "rate", "volatility",
+                                                      "maturity"};
+constexpr std::array<string_key, 1> asian_string_keys{{{"construction", path_construction_names}}};
 
 constexpr std::string_view genz_doc =
     "a: difficulty, length s (default: drawn from seed, w = 1 − U, a = b·w/Σw with Genz's b), "
@@ -164,12 +168,25 @@ any_integrand make_keister(const integrand_params& p) {
   return any_integrand(keister(dimension_or(p, 1)));
 }
 
+any_integrand make_geometric_asian(const integrand_params& p) {
+  geometric_asian_parameters g;
+  g.spot = scalar_or(p, "spot", g.spot);
+  g.strike = scalar_or(p, "strike", g.strike);
+  g.rate = scalar_or(p, "rate", g.rate);
+  g.volatility = scalar_or(p, "volatility", g.volatility);
+  g.maturity = scalar_or(p, "maturity", g.maturity);
+  if (const auto it = p.strings.find("construction"); it != p.strings.end()) {
+    g.construction = parse_path_construction(it->second);
+  }
+  return any_integrand(geometric_asian(dimension_or(p, 1), g));
+}
+
 template <class Family>
 any_integrand make_irradiance(const integrand_params& p) {
   return any_integrand(Family(make_irradiance_setup(p)));
 }
 
-const std::array<catalogue_entry, 27> entries = {{
+const std::array<catalogue_entry, 28> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc, make_genz<genz_oscillatory, genz_family::oscillatory>,
      draw_genz<genz_family::oscillatory>, false, false, 0, genz_string_keys},
@@ -230,6 +247,13 @@ const std::array<catalogue_entry, 27> entries = {{
     {"ishigami", "sin X₁ + a·sin² X₂ + b·X₃⁴·sin X₁, Xᵢ = π(2xᵢ − 1), on [0,1]³", "analytic",
      no_keys, ab_keys, "a, b: finite numbers (default 7, 0.1); dimension 3", make_ishigami, nullptr,
      false, false, 3},
+    {"geometric_asian",
+     "e^(−rT)·max((Π S(tᵢ))^(1/s) − K, 0), Black–Scholes path at tᵢ = iT/s from Φ⁻¹(x), on [0,1]^s",
+     "C0", no_keys, option_keys,
+     "spot S₀ > 0, strike K > 0, rate r, volatility σ > 0, maturity T > 0 (default 100, 100, "
+     "0.05, 0.2, 1); construction: \"standard\" (default), \"bridge\" or \"pca\", how W(tᵢ) is "
+     "built from the normals; s = the number of monitoring times, 1 ≤ s ≤ 1024",
+     make_geometric_asian, nullptr, false, false, 0, asian_string_keys},
     {"irradiance_hemisphere", "2π·u₁·L_i(x, ω(u)) on [0,1]², uniform hemisphere map",
      "discontinuous", no_keys, irradiance_keys,
      "occluder: 0 or 1 (default 0), adds default_irradiance_setup's occluder; radiance: L > 0 "
