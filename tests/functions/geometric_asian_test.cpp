@@ -375,15 +375,18 @@ TEST(GeometricAsian, BadKeysAndValuesAreNamed) {
   p.dimension = 4;
   p.strings["construction"] = "brownian";
   EXPECT_EQ(message_of(p),
-            "invalid construction = \"brownian\": expected one of \"standard\", \"bridge\", "
-            "\"pca\"");
+            "invalid construction: expected one of \"standard\", \"bridge\", \"pca\", got "
+            "\"brownian\"");
   p = {};
   p.scalars["construction"] = 1.0;
-  EXPECT_EQ(message_of(p), "invalid construction: expected a string for geometric_asian, got 1");
+  EXPECT_EQ(message_of(p),
+            "invalid construction: expected a string, one of \"standard\", \"bridge\", \"pca\", "
+            "for geometric_asian, got 1");
   p = {};
   p.vectors["construction"] = {1.0};
   EXPECT_EQ(message_of(p),
-            "invalid construction: expected a string for geometric_asian, got an array");
+            "invalid construction: expected a string, one of \"standard\", \"bridge\", \"pca\", "
+            "for geometric_asian, got an array");
   p = {};
   p.strings["spot"] = "high";
   EXPECT_EQ(message_of(p), "invalid spot: expected a number for geometric_asian, got \"high\"");

@@ -91,9 +91,10 @@ def test_coefficient_decay_shapes_only_the_drawn_a():
     (lambda: quadmc.integrand("genz_gaussian", s=2, a=[1, 2], coefficient_decay="quadratic"),
      'invalid coefficient_decay = "quadratic": expected no explicit a beside it'),
     (lambda: quadmc.integrand("geometric_asian", s=4, construction="brownian"),
-     'invalid construction = "brownian": expected one of "standard", "bridge", "pca"'),
+     'invalid construction: expected one of "standard", "bridge", "pca", got "brownian"'),
     (lambda: quadmc.integrand("geometric_asian", s=4, construction=1),
-     "invalid construction: expected a string for geometric_asian, got 1"),
+     'invalid construction: expected a string, one of "standard", "bridge", "pca", for '
+     "geometric_asian, got 1"),
     (lambda: quadmc.integrand("genz_gaussian", s=0), "invalid s = 0: expected an integer in [1, "),
     (lambda: quadmc.integrand("genz_gaussian", s=2)(np.zeros((4, 3))),
      "invalid x = an array of shape (4, 3): expected a 2D array of shape (n, 2) for genz_gaussian"),
