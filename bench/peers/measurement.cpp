@@ -43,6 +43,13 @@
 #ifndef QUADMC_PEERS_SCIPY_SCRIPT
 #define QUADMC_PEERS_SCIPY_SCRIPT "bench/peers/scipy_qmc.py"
 #endif
+#ifndef QUADMC_PEERS_PYTHON_MODULE_SCRIPT
+#define QUADMC_PEERS_PYTHON_MODULE_SCRIPT "bench/peers/python_module_speed.py"
+#endif
+// The folder of this build's Python module (bench/python/CMakeLists.txt), empty without one.
+#ifndef QUADMC_PEERS_PYTHON_MODULE_DIR
+#define QUADMC_PEERS_PYTHON_MODULE_DIR ""
+#endif
 
 namespace quadmc::peers {
 namespace {
@@ -454,6 +461,39 @@ void measure_qmc_points(const configuration& c, study& out) {
       r.repetitions = c.qmc_point_runs;
       out.rows.push_back(r);
     }
+  }
+  std::cerr << "\n";
+}
+
+void measure_python_module(const configuration& c, study& out) {
+  std::cerr << "Python module: " << c.python_module_rounds << " rounds" << std::flush;
+  out.python_module = quadmc::peers::measure_python_module(
+      QUADMC_PEERS_PYTHON, QUADMC_PEERS_PYTHON_MODULE_SCRIPT, QUADMC_PEERS_PYTHON_MODULE_DIR,
+      c.python_module_rounds, base_seed);
+  if (!out.python_module.skipped.empty()) {
+    out.skipped.push_back("the Python module: " + out.python_module.skipped);
+  }
+  for (const python_timing& t : out.python_module.timings) {
+    const python_row_names names = names_of(t);
+    row r;
+    r.run = "python";
+    r.method = names.method;
+    r.family = names.family;
+    r.integrand = names.integrand;
+    r.s = t.s;
+    r.threads = 1;
+    r.n = t.n;
+    r.control = t.group == "points_reused" ? "N points (reused memory)"
+                : t.group == "points"      ? "N points (fresh memory)"
+                                           : "N evaluations";
+    r.evaluations = static_cast<double>(t.n);
+    r.seconds = t.median;
+    r.seconds_min = t.min;
+    r.seconds_max = t.max;
+    r.rate = static_cast<double>(t.n) / t.median;
+    r.abs_error = NAN;
+    r.repetitions = t.rounds;
+    out.rows.push_back(r);
   }
   std::cerr << "\n";
 }

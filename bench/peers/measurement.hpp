@@ -37,6 +37,11 @@ void measure_methods(const configuration& c, study& out);
 // out.agreement, the checks that each peer's points are of the kind it is compared with.
 void measure_qmc_points(const configuration& c, study& out);
 
+// The Python module against scipy and its own C++ (python_module_speed.hpp), when this build has
+// the module: out.python_module, and its contenders as rows with run = "python" (seconds = the
+// median of c.python_module_rounds rounds, seconds_min/max their range, rate = n / median).
+void measure_python_module(const configuration& c, study& out);
+
 // /proc/loadavg as "1 / 5 / 15 min": how busy the shared machine was.
 std::string load_average();
 

@@ -7,7 +7,8 @@
 // of coordinates) with the same references, for s ∈ {1, 2, 4, 8}: evaluations per second, time to
 // 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the answer; and quasi-Monte Carlo
 // point generation (quadmc's Sobol', Halton and lattice sets beside Boost.Random, GSL and
-// scipy.stats.qmc: qmc_point_peers.hpp) in points per second.
+// scipy.stats.qmc: qmc_point_peers.hpp) in points per second; and the Python module `quadmc`
+// against scipy.stats.qmc and against its own C++ (python_module_speed.hpp).
 //
 //   quadmc_peers [--out DIR] [--quick]        writes DIR/peers.csv, DIR/meta.csv, DIR/README.md
 //   quadmc_peers --one METHOD INTEGRAND S N THREADS
@@ -86,6 +87,7 @@ int study_command(const std::filesystem::path& out, bool quick) {
   measure_methods(c, st);
   st.phase_seconds.push_back(since_start());
   measure_qmc_points(c, st);
+  measure_python_module(c, st);
   st.phase_seconds.push_back(since_start() - st.phase_seconds[0]);
   measure_peak_memory(c, st);
   st.load_after = load_average();
@@ -97,8 +99,8 @@ int study_command(const std::filesystem::path& out, bool quick) {
   write_meta_csv(out / quadmc::meta_csv_file, st);
   write_markdown_report(out / "README.md", c, st);
   std::cerr << fmt::format(
-      "wrote {}/peers.csv, meta.csv and README.md in {:.0f} s (methods {:.0f} s, QMC points {:.0f} "
-      "s, peak memory {:.0f} s)\n",
+      "wrote {}/peers.csv, meta.csv and README.md in {:.0f} s (methods {:.0f} s, QMC points and "
+      "the Python module {:.0f} s, peak memory {:.0f} s)\n",
       out.string(), st.wall_seconds, st.phase_seconds[0], st.phase_seconds[1], st.phase_seconds[2]);
   return 0;
 }

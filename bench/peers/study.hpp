@@ -6,10 +6,12 @@
 // (report.hpp). Not the place for how anything is measured or printed.
 #pragma once
 
+#include "python_module_speed.hpp"
 #include "qmc_point_peers.hpp"
 
 #include "quadmc/report/provenance.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -58,6 +60,10 @@ struct configuration {
   std::vector<std::size_t> qmc_dimensions{2, 8};
   std::uint64_t qmc_points = std::uint64_t{1} << 18;
   int qmc_point_runs = 5;
+  // The Python module against scipy and C++ (python_module_speed.hpp): rounds of every
+  // contender. A round of the three groups takes about 0.3 s on 2 cores, so 15 rounds (and one
+  // to warm up) cost ~5 s, and give a median that a burst of load moves little.
+  int python_module_rounds = 15;
 };
 
 // `--quick`: a smoke run (small N, seconds); its numbers are not for the record.
@@ -74,12 +80,15 @@ inline configuration quick_configuration() {
   c.qmc_point_runs = 2;
   c.rss_sizes = {10000, 1000000};
   c.qmc_points = std::uint64_t{1} << 12;
+  c.python_module_rounds = 2;
   return c;
 }
 
 // One line of peers.csv.
 struct row {
-  std::string run;  // "throughput", "ladder" or "points" (QMC point generation, no integrand)
+  // "throughput", "ladder", "points" (QMC point generation, no integrand) or "python" (the
+  // Python module: seconds is the median of its rounds, seconds_min/max their range)
+  std::string run;
   std::string method;
   std::string family;
   std::string integrand;
@@ -96,6 +105,7 @@ struct row {
   std::optional<double> ratio_to_scalar_loop;
   // Throughput rows: rate / the integrand-only rate (same integrand and s, one thread).
   std::optional<double> ratio_to_integrand_only;
+  double seconds_min = NAN, seconds_max = NAN;  // python rows: the range of the rounds
 };
 
 // quadmc's plain MC at 1 and 2 threads must agree bit for bit; Boost's naive_monte_carlo at a
@@ -121,9 +131,10 @@ struct study {
   std::vector<std::string> skipped;
   std::vector<rss_row> rss;
   std::vector<point_agreement> agreement;  // QMC peers: same kind of points as quadmc's
+  python_module_study python_module;       // the Python module against scipy and C++
   long rss_baseline_kib = 0;               // the same child doing no integration
   double wall_seconds = 0.0;               // the whole run
-  std::vector<double> phase_seconds;       // methods, QMC points, peak memory
+  std::vector<double> phase_seconds;       // methods, QMC points and the Python module, peak memory
   quadmc::provenance build;  // what made the numbers (meta.csv, the README's machine paragraph)
 };
 
