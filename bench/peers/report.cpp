@@ -94,7 +94,7 @@ class report {
   report(const configuration& c, const study& st) : c_(c), st_(st) {
     for (const row& r : st.rows) {
       if (r.run == "python") continue;  // the Python module's section reads st.python_module
-      if (r.run == "points") {  // no integrand: the QMC section reads them itself
+      if (r.run == "points") {          // no integrand: the QMC section reads them itself
         points_[{r.method, r.s}] = r;
         if (std::find(generators_.begin(), generators_.end(), r.method) == generators_.end()) {
           generators_.push_back(r.method);
