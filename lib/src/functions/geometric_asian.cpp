@@ -33,21 +33,12 @@ double largest_normal() {
 }  // namespace
 
 std::string_view to_string(path_construction c) noexcept {
-  switch (c) {
-    case path_construction::standard:
-      return "standard";
-    case path_construction::bridge:
-      return "bridge";
-    case path_construction::pca:
-      return "pca";
-  }
-  return "standard";
+  return path_construction_names[static_cast<std::size_t>(c)];
 }
 
 path_construction parse_path_construction(std::string_view text) {
-  for (path_construction c :
-       {path_construction::standard, path_construction::bridge, path_construction::pca}) {
-    if (text == to_string(c)) return c;
+  for (std::size_t i = 0; i < path_construction_names.size(); ++i) {
+    if (text == path_construction_names[i]) return static_cast<path_construction>(i);
   }
   throw invalid_argument("construction", fmt::format("\"{}\"", text),
                          "one of \"standard\", \"bridge\", \"pca\"");
