@@ -1,11 +1,12 @@
 // Running python_module_speed.py and reading its lines; what and why: python_module_speed.hpp.
 #include "python_module_speed.hpp"
 
+#include "shell_output.hpp"
+
 #include <fmt/format.h>
 
-#include <sys/wait.h>
-#include <cstdio>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -32,23 +33,16 @@ python_module_study measure_python_module(const std::string& python, const std::
   // stderr joins stdout: a failing script's one line is then the reason printed.
   const std::string command =
       fmt::format("PYTHONPATH='{}' '{}' '{}' {} {} 2>&1", module_dir, python, script, rounds, seed);
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
+  const std::optional<shell_output> run = run_shell(command);
+  if (!run) {
     out.skipped = "cannot start " + python;
     return out;
   }
-  std::string text;
-  char buffer[1 << 12];
-  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) {
-    text.append(buffer, got);
-  }
-  const int status = pclose(pipe);
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    out.skipped =
-        fmt::format("`{}` failed (exit status {}): {}", command,
-                    WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.substr(0, text.find('\n')));
+  if (!run->failure.empty()) {
+    out.skipped = run->failure;
     return out;
   }
+  const std::string& text = run->text;
   std::istringstream lines(text);
   constexpr std::string_view versions_prefix = "# versions: ";
   for (std::string line; std::getline(lines, line);) {

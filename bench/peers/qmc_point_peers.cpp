@@ -2,6 +2,8 @@
 // qmc_point_peers.hpp.
 #include "qmc_point_peers.hpp"
 
+#include "shell_output.hpp"
+
 #include "quadmc/core/batching.hpp"
 #include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
@@ -11,11 +13,9 @@
 #include <gsl/gsl_qrng.h>
 #include <boost/random/sobol.hpp>
 
-#include <sys/wait.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <limits>
@@ -128,19 +128,10 @@ point_generator scipy_generator(std::string name, std::string engine, std::strin
                                                         std::uint64_t seed, int runs, bool keep) {
     const std::string command = fmt::format("'{}' '{}' {} {} {} {} {}{} 2>&1", python, script,
                                             engine, s, n, seed, runs, keep ? " points" : "");
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) throw std::runtime_error(label + ": cannot start " + python);
-    std::string text;
-    char buffer[1 << 16];
-    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) {
-      text.append(buffer, got);
-    }
-    const int status = pclose(pipe);
-    if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-      const std::string first = text.substr(0, text.find('\n'));
-      throw std::runtime_error(fmt::format("{}: `{}` failed (exit status {}): {}", label, command,
-                                           WIFEXITED(status) ? WEXITSTATUS(status) : -1, first));
-    }
+    const std::optional<shell_output> run = run_shell(command);
+    if (!run) throw std::runtime_error(label + ": cannot start " + python);
+    if (!run->failure.empty()) throw std::runtime_error(label + ": " + run->failure);
+    const std::string& text = run->text;
     generated_points out;
     std::istringstream in(text);
     in >> out.seconds >> out.checksum;
