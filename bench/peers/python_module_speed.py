@@ -26,8 +26,9 @@ Does:  two groups of contenders, each run ROUNDS times in alternating rounds (ev
     integrate_numpy      quadmc.integrate(f, s=8) with f the same integrand written in numpy
     integrate_ones       quadmc.integrate(g, s=8) with g returning numpy.ones(m): the calls alone
     numpy_all            f on 2^20 points in one call (no quadmc.integrate)
-    numpy_batches        f on the same points in 64 calls of 2^14
-    catalogue_batches    the catalogue Integrand on the same 64 batches (C++ batch evaluate)
+    numpy_batches        f on the same points in the blocks quadmc.integrate calls f on: 86
+                         calls, 85 of 12288 points (a Monte Carlo chunk) and one of 4096
+    catalogue_batches    the catalogue Integrand on the same blocks (C++ batch evaluate)
 Prints: a line "# versions: numpy V, scipy V" and then one tab-separated line per contender:
        group key s n median min max rounds cores, times in seconds; cores = process CPU time /
        wall time over its rounds (time.process_time, every thread of the process).
@@ -40,7 +41,9 @@ import time
 
 S = 8
 N = 2**20
-BATCH = 2**14  # the integrand's batches
+# The blocks quadmc.integrate calls a callable on for plain_mc at s = 8: one per Monte Carlo chunk
+# of 12288 points (lib/include/quadmc/core/batching.hpp; bench/python/integrate.cpp).
+BATCH = 12288
 # genz_gaussian's parameters, fixed so that the numpy twin and the catalogue compute the same f.
 A = [1.0, 2.0, 0.5, 1.5, 0.75, 1.25, 0.9, 1.1]
 U = [0.3, 0.6, 0.45, 0.2, 0.7, 0.5, 0.35, 0.8]

@@ -6,11 +6,14 @@
 // The integrand is a catalogue Integrand (integrand.cpp) or any Python callable f taking an
 // (m, s) float64 array of points in [0, 1]^s and returning m values. The callable is wrapped as
 // an integrand of the batch contract (docs/design.md#hot-path-contract) whose evaluate takes the
-// GIL and calls f once per batch the kernel offers: 256 points (core/batching.hpp, fixed because
-// it sets where every partial sum starts, so the bits of every result). Buffering points to call
-// f on larger blocks is not possible: a kernel needs the values of a batch before it asks for the
-// next. So the per-call cost of Python (the README's Python section measures it) is paid once per
-// 256 points.
+// GIL and calls f once per block it is given. It asks the fixed-N kernels for blocks of up to
+// 2^14 points (integrand_info::evaluation_block; at most 16 MiB of points, so 2^11 at s = 1024;
+// a Monte Carlo chunk holds 12288): each call of f costs a few microseconds of Python, which on
+// the kernel's own 256-point batches was a quarter of a numpy integrand's time (the README's
+// Python section measures it). The kernels still generate points and sum per 256-point batch
+// (core/batching.hpp), so the bits are those of any other block size. Methods that adapt
+// between batches (VEGAS, Genz–Malik, the adaptive sparse grid) need a batch's values before
+// they choose the next, and call f on their own batches.
 //
 // Threads: a callable runs on one thread (run_context::threads = 1): the GIL serialises every
 // call of f anyway, so more threads would only contend for it. Results do not depend on the
@@ -68,6 +71,9 @@ class python_integrand {
     info_.name = "f";
     info_.formula = "a Python callable";
     info_.domain = quadmc::box::unit(s);
+    constexpr std::size_t most_points = std::size_t{1} << 14;
+    constexpr std::size_t most_doubles = std::size_t{1} << 21;  // 16 MiB of points
+    info_.evaluation_block = std::min(most_points, most_doubles / s);
   }
 
   std::size_t dimension() const noexcept { return info_.dimension(); }

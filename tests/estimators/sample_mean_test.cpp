@@ -44,6 +44,36 @@ TEST(SampleMean, IsBitwiseIdenticalForAnyThreadCount) {
   for (unsigned t : {2u, 3u, 8u}) EXPECT_TRUE(bitwise_equal(jone, sample_mean(j, t, values)));
 }
 
+// A block of points per call of the values (integrand_info::evaluation_block, which a Python
+// callable asks for): the points are still generated and the statistics still taken per batch of
+// 256, so the bits are those of one batch per call, for every variance structure and for a
+// chunk that is not whole batches (5 points per stratum: chunks of 12285). And the calls are
+// blocks: at most the chunk, and larger than a batch.
+TEST(SampleMean, ValuesPerBlockGiveTheBitsOfValuesPerBatch) {
+  const independent_points independent(2, 100003, 1, 2);
+  const jittered_points three(stratum_grid(2, 100), 3, 1, 2);
+  const jittered_points five(stratum_grid(2, 100), 5, 1, 2);
+  const jittered_points one(2, 40000, 1, 1);  // one per stratum: stratum differences
+  const auto check = [](const auto& points, const std::string& label) {
+    std::size_t largest = 0;
+    const auto recorded = [&largest](std::uint64_t first, std::span<double> u,
+                                     std::span<double> y) {
+      largest = std::max(largest, y.size());
+      values(first, u, y);
+    };
+    const estimate per_batch = sample_mean(points, 1, values);
+    const estimate per_block = sample_mean(points, 1, recorded, std::size_t{1} << 14);
+    EXPECT_TRUE(bitwise_equal(per_batch, per_block))
+        << label << ": " << per_block.value << " vs " << per_batch.value;
+    EXPECT_GT(largest, batch_points) << label;
+    EXPECT_LE(largest, sample_chunk_points) << label;
+  };
+  check(independent, "independent");
+  check(three, "3 per stratum");
+  check(five, "5 per stratum");
+  check(one, "1 per stratum");
+}
+
 // The value is the plain mean, the independent error is √(s²/N).
 TEST(SampleMean, IndependentPointsReportTheSampleVariance) {
   const independent_points p(2, 1000, 3, 3);

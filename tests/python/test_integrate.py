@@ -50,6 +50,26 @@ def test_a_numpy_twin_gives_the_catalogue_estimate(catalogue, method, n):
     assert abs(expected.value - catalogue.exact) <= bound
 
 
+def test_a_callable_is_called_once_per_block_of_thousands_of_points():
+    # The fixed-N kernels call it once per block of up to 2^14 points and 16 MiB of them, within a
+    # chunk (12288 points for Monte Carlo, 16384 for a rule: lib/include/quadmc/core/batching.hpp),
+    # so that Python's cost per call is paid rarely (bench/python/integrate.cpp).
+    sizes = []
+
+    def recorded(x):
+        sizes.append(x.shape)
+        return np.ones(len(x))
+
+    quadmc.integrate(recorded, "plain_mc", 2**16, s=4)
+    assert sizes == [(12288, 4)] * 5 + [(4096, 4)]
+    sizes.clear()
+    quadmc.integrate(recorded, "simpson", 6561, s=4)
+    assert sizes == [(6561, 4)]
+    sizes.clear()
+    quadmc.integrate(recorded, "plain_mc", 10000, s=1024)  # 16 MiB: 2048 points of s = 1024
+    assert sizes == [(2048, 1024)] * 4 + [(1808, 1024)]
+
+
 def test_the_same_arguments_give_the_same_bits(catalogue):
     for f, s in [(catalogue, None), (twin, 4)]:
         first = quadmc.integrate(f, "plain_mc", 5000, s=s, seed=11, repetitions=3)
@@ -83,7 +103,7 @@ def test_an_exception_in_the_callable_propagates_with_its_traceback():
     def explodes(x):
         raise Boom(f"no value for {len(x)} points")
 
-    with pytest.raises(Boom, match="no value for 256 points") as raised:
+    with pytest.raises(Boom, match="no value for 1000 points") as raised:  # one block of all 1000
         quadmc.integrate(explodes, "plain_mc", 1000, s=2)
     assert raised.traceback[-1].name == "explodes"
     # The module is usable afterwards (the GIL and the kernel's state unwound cleanly).
@@ -99,8 +119,8 @@ def test_a_non_finite_value_names_the_point():
 
 
 def test_a_return_of_the_wrong_length_names_f():
-    with pytest.raises(ValueError, match=r"invalid f = an array of shape \(5,\) for 256 points: "
-                                         r"expected 256 values"):
+    with pytest.raises(ValueError, match=r"invalid f = an array of shape \(5,\) for 1000 points: "
+                                         r"expected 1000 values"):
         quadmc.integrate(lambda x: x[:5, 0], "plain_mc", 1000, s=2)
 
 

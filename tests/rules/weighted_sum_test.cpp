@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -137,6 +139,36 @@ TEST(WeightedSum, BitwiseTheReferenceOrderForAnyThreadCount) {
   const auto f2 = on(box{{-1.0, 0.0}, {1.0, 2.0}},
                      [](std::span<const double> x) { return std::exp(x[0] - 0.5 * x[1] * x[1]); });
   expect_reference_bits(f2, fibonacci_lattice(25), "Fibonacci lattice");
+}
+
+// f asking for blocks of 2^14 points per call (integrand_info::evaluation_block, as a Python
+// callable does): nodes and sums stay per batch, so every accumulator gives the reference order's
+// bits; the largest call is a whole chunk.
+template <class F>
+struct in_blocks {
+  F f;
+  std::atomic<std::size_t>* largest;  // called from several threads
+  std::size_t dimension() const { return f.dimension(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    std::size_t seen = largest->load();
+    while (seen < y.size() && !largest->compare_exchange_weak(seen, y.size())) {
+    }
+    f.evaluate(x, y);
+  }
+  integrand_info info() const {
+    integrand_info i = f.info();
+    i.evaluation_block = std::size_t{1} << 14;
+    return i;
+  }
+};
+
+TEST(WeightedSum, ValuesPerBlockGiveTheReferenceBits) {
+  std::atomic<std::size_t> largest = 0;
+  const auto f =
+      on(box{{-0.5}, {2.0}}, [](std::span<const double> x) { return 1.0 / (1.0 + x[0] * x[0]); });
+  expect_reference_bits(in_blocks<decltype(f)>{f, &largest}, extrapolated_midpoint(100000),
+                        "extrapolated midpoint in blocks");
+  EXPECT_EQ(largest.load(), rule_chunk_points);
 }
 
 // The fast path (a tensor grid's mapped()) and the kernel's own map give the same bits.

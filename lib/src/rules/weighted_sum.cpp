@@ -118,25 +118,33 @@ bool accumulator_shares_chunks(summation accumulate) noexcept {
 }
 
 rule_result weighted_sum_of_batches(const integrand_info& info, std::uint64_t total,
-                                    batch_source make_batch, bool share_chunks, unsigned threads,
-                                    summation accumulate) {
+                                    batch_source make_batch, value_source make_values,
+                                    bool share_chunks, unsigned threads, summation accumulate) {
   const std::size_t s = info.dimension();
   const chunking layout{total, rule_chunk_points};
+  const std::size_t block_points = std::min(evaluation_block_points(info.evaluation_block),
+                                            static_cast<std::size_t>(rule_chunk_points));
 
-  // Makes chunk c batch by batch — the set's nodes and weights, the integrand's values, checked
-  // finite — and hands each batch to use(first, w, y). Buffers once per chunk (2^14 points),
-  // never per point; small enough to stay in L1.
+  // Makes chunk c block by block — the set's nodes and weights batch by batch, the integrand's
+  // values once per block, checked finite — and hands each batch to use(first, w, y). Buffers
+  // once per chunk, never per point; one batch (the default block) stays in L1.
   auto evaluate_chunk = [&](std::size_t c, auto&& use) {
-    std::vector<double> x(batch_points * s);
-    std::vector<double> y(batch_points);
-    std::vector<double> w(batch_points);
-    for_each_batch(layout, c, [&](std::uint64_t first, std::size_t count) {
-      const std::span<double> xs(x.data(), count * s);
+    std::vector<double> x(block_points * s);
+    std::vector<double> y(block_points);
+    std::vector<double> w(block_points);
+    for_each_block(layout, c, block_points, [&](std::uint64_t first, std::size_t count) {
+      for_each_batch_of(count, [&](std::size_t offset, std::size_t k) {
+        make_batch(first + offset, std::span<double>(x.data() + offset * s, k * s),
+                   std::span<double>(w.data() + offset, k));
+      });
+      const std::span<const double> xs(x.data(), count * s);
       const std::span<double> ys(y.data(), count);
-      const std::span<double> ws(w.data(), count);
-      make_batch(first, xs, ws, ys);
+      make_values(xs, ys);
       check_finite_batch(info.name, xs, ys, s);
-      use(first, ws, std::span<const double>(ys));
+      for_each_batch_of(count, [&](std::size_t offset, std::size_t k) {
+        use(first + offset, std::span<double>(w.data() + offset, k),
+            std::span<const double>(y.data() + offset, k));
+      });
     });
   };
 

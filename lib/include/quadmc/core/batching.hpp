@@ -10,7 +10,9 @@
 //
 //  - batch_points = 256: points per call of the integrand (one virtual call through
 //    any_integrand per batch, never per point), and the unit of the per-batch statistics (a
-//    pairwise or four-lane sum of 256 terms whose rounding error does not grow with N).
+//    pairwise or four-lane sum of 256 terms whose rounding error does not grow with N). An
+//    integrand may ask for blocks of several batches per call (evaluation_block_points): the
+//    sums stay per batch, so the bits do not move.
 //  - rule_chunk_points = 2^14 = 64 batches: large enough that thread start-up (tens of µs) is
 //    paid back even for a cheap integrand, small enough that 2 cores stay busy on a 100×100×100
 //    grid.
@@ -58,6 +60,37 @@ void for_each_batch(const chunking& layout, std::size_t c, Batch&& batch) {
   const std::uint64_t end = layout.end(c);
   for (std::uint64_t first = layout.begin(c); first < end; first += batch_points) {
     batch(first, static_cast<std::size_t>(std::min<std::uint64_t>(batch_points, end - first)));
+  }
+}
+
+// Points per call of the integrand for an integrand that asks for `requested` (integrand_info::
+// evaluation_block; 0 for the default): a whole number of batches, at least one. An integrand
+// whose every call costs microseconds (a Python callable) asks for thousands of points per call;
+// the library's own integrands take one batch, whose points stay in L1.
+constexpr std::size_t evaluation_block_points(std::size_t requested) noexcept {
+  return requested <= batch_points ? batch_points : requested / batch_points * batch_points;
+}
+
+// Calls block(first, count) for the blocks of `block_points` points (a multiple of batch_points,
+// evaluation_block_points) of chunk c in index order, the chunk's last block possibly shorter.
+// A block is whole batches of for_each_batch followed by its batches' rest: walking a block with
+// for_each_batch_of gives exactly for_each_batch's batches, so a kernel that evaluates f per
+// block and sums per batch adds the same batches in the same order, whatever the block size.
+template <class Block>
+void for_each_block(const chunking& layout, std::size_t c, std::size_t block_points,
+                    Block&& block) {
+  const std::uint64_t end = layout.end(c);
+  for (std::uint64_t first = layout.begin(c); first < end; first += block_points) {
+    block(first, static_cast<std::size_t>(std::min<std::uint64_t>(block_points, end - first)));
+  }
+}
+
+// Calls batch(offset, count) for the batches of a block of `count` points: offset = k·batch_points
+// within the block, count = batch_points but for the last, which may be shorter.
+template <class Batch>
+void for_each_batch_of(std::size_t count, Batch&& batch) {
+  for (std::size_t offset = 0; offset < count; offset += batch_points) {
+    batch(offset, std::min(batch_points, count - offset));
   }
 }
 

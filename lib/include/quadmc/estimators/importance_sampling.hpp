@@ -47,7 +47,7 @@ estimate importance_sampling(const F& f, const W& w, const P& points, unsigned t
           "the warp's input dimension " + std::to_string(s_in));
   require(f.dimension() == s_out, "integrand dimension", f.dimension(),
           "the warp's output dimension " + std::to_string(s_out));
-  return sample_mean(points, threads, [&](std::uint64_t, std::span<double> u, std::span<double> y) {
+  const auto values = [&](std::uint64_t, std::span<double> u, std::span<double> y) {
     // x and p are per-batch scratch: thread_local so a chunk allocates once.
     thread_local std::vector<double> x;
     thread_local std::vector<double> p;
@@ -68,7 +68,8 @@ estimate importance_sampling(const F& f, const W& w, const P& points, unsigned t
       }
       y[i] /= p[i];
     }
-  });
+  };
+  return sample_mean(points, threads, values, info.evaluation_block);
 }
 
 }  // namespace quadmc

@@ -40,16 +40,16 @@ estimate monte_carlo(const F& f, const P& points, unsigned threads = 1) {
   // The unit cube needs no map (0 + 1·u = u exactly), so its points go straight to f.
   bool unit_box = true;
   for (std::size_t j = 0; j < s; ++j) unit_box &= lower[j] == 0.0 && width[j] == 1.0;
-  estimate e =
-      sample_mean(points, threads, [&](std::uint64_t, std::span<double> x, std::span<double> y) {
-        if (!unit_box) {
-          for (std::size_t i = 0; i < y.size(); ++i) {
-            for (std::size_t j = 0; j < s; ++j) x[i * s + j] = lower[j] + width[j] * x[i * s + j];
-          }
-        }
-        f.evaluate(std::span<const double>(x), y);
-        check_finite_batch(info.name, x, y, s);
-      });
+  const auto values = [&](std::uint64_t, std::span<double> x, std::span<double> y) {
+    if (!unit_box) {
+      for (std::size_t i = 0; i < y.size(); ++i) {
+        for (std::size_t j = 0; j < s; ++j) x[i * s + j] = lower[j] + width[j] * x[i * s + j];
+      }
+    }
+    f.evaluate(std::span<const double>(x), y);
+    check_finite_batch(info.name, x, y, s);
+  };
+  estimate e = sample_mean(points, threads, values, info.evaluation_block);
   // F = vol·mean(f): the volume scales the estimate once instead of every sample.
   e.value *= volume;
   e.std_error *= volume;

@@ -283,34 +283,43 @@ inline constexpr bool shareable_chunk_result<sample_statistics> = true;
 
 namespace detail {
 
-// Writes the values Y of one batch: points first … first + k − 1 of the set into u (row-major,
-// k·s), then Y at them into y (k values). Called once per batch of batch_points points, so that
-// the chunked, parallel kernel below is compiled once, in the library, while the set's generate()
-// and the estimator's batch function stay inlined into the caller's batch (as in
+// Writes points first … first + k − 1 of the set into u (row-major, k·s): called once per batch
+// of batch_points points, so that the chunked, parallel kernel below is compiled once, in the
+// library, while the set's generate() stays inlined into the caller (as in
 // rules/weighted_sum.hpp, batch_source; docs/design.md, "Build time").
-using sample_batch_source =
+using sample_point_source = function_ref<void(std::uint64_t first, std::span<double> u)>;
+
+// Writes the values Y at k generated points u into y: called once per block of
+// evaluation_block_points(block) points (core/batching.hpp), one batch unless the integrand asks
+// for more per call.
+using sample_value_source =
     function_ref<void(std::uint64_t first, std::span<double> u, std::span<double> y)>;
 
 // The kernel proper: the mean of Y over n points of dimension s, chunked for `structure`'s
-// groups, folded in chunk order (lib/src/estimators/sample_mean.cpp).
+// groups, folded in chunk order, the statistics per batch whatever the block
+// (lib/src/estimators/sample_mean.cpp).
 estimate sample_mean_of_batches(std::uint64_t n, std::size_t s, variance_structure structure,
-                                unsigned threads, sample_batch_source make_batch);
+                                unsigned threads, std::size_t block,
+                                sample_point_source make_points, sample_value_source make_values);
 
 }  // namespace detail
 
 // Mean of Y over `points`. batch_values(first, u, y) receives a batch of points u (row-major,
 // y.size() points starting at index `first`) and writes Y for each into y; it may overwrite u
 // (e.g. map it to a box in place). It must be safe to call concurrently (it is called from several
-// threads on distinct chunks).
+// threads on distinct chunks). `block` is the points per call of batch_values an integrand asks
+// for (integrand_info::evaluation_block; 0 = one batch): the points are still generated and the
+// statistics still taken per batch, so the result's bits do not depend on it as long as
+// batch_values computes each Y from its own point.
 template <point_set P, class BatchValues>
-estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_values) {
-  const auto make = [&points, &batch_values](std::uint64_t first, std::span<double> u,
-                                             std::span<double> y) {
+estimate sample_mean(const P& points, unsigned threads, BatchValues&& batch_values,
+                     std::size_t block = 0) {
+  const auto generate = [&points](std::uint64_t first, std::span<double> u) {
     points.generate(first, u);
-    batch_values(first, u, y);
   };
   return detail::sample_mean_of_batches(points.size(), points.dimension(), points.variance(),
-                                        threads, detail::sample_batch_source(make));
+                                        threads, block, detail::sample_point_source(generate),
+                                        detail::sample_value_source(batch_values));
 }
 
 }  // namespace quadmc

@@ -142,6 +142,13 @@ struct integrand_info {
   // The format f's values are computed in: float for the float twins of the stress scene (their
   // rounding floor is float's, not double's: analysis/rounding_floor.hpp).
   evaluation_precision precision = evaluation_precision::double_precision;
+  // Points per call of evaluate this integrand asks the fixed-N kernels for (the Monte Carlo
+  // kernel, estimators/sample_mean.hpp, and the rule kernel, rules/weighted_sum.hpp): 0 for one
+  // batch of 256 (core/batching.hpp), whose points stay in L1; a Python callable, whose every
+  // call costs microseconds, asks for thousands. The kernels still sum per batch, so a value
+  // does not depend on it. Methods that adapt between batches (VEGAS, Genz–Malik, the adaptive
+  // sparse grid) call evaluate on their own batches.
+  std::size_t evaluation_block = 0;
 
   std::size_t dimension() const noexcept { return domain.dimension(); }
 };

@@ -101,22 +101,27 @@ concept writes_on_the_side = requires {
 // order, by split_naive_sum, which keeps its bits.
 bool accumulator_shares_chunks(summation accumulate) noexcept;
 
-// Writes one batch of the set and its integrand: the nodes of points first … first + k − 1 in box
-// coordinates into x (row-major, k·s), their weights into w and f at them into y (k values).
-// Called once per batch of batch_points points, so that the kernel below is compiled once, in
-// the library, while the set's generate() and the integrand's evaluate() stay inlined into the
+// Writes the nodes of points first … first + k − 1 in box coordinates into x (row-major, k·s)
+// and their weights into w: called once per batch of batch_points points, so that the kernel
+// below is compiled once, in the library, while the set's generate() stays inlined into the
 // caller's batch, where the work per point is. (As one template per integrand and set, its four
 // accumulators, parallel_reduce and the naive split were instantiated again for each and were
 // most of the build time of a file that integrates: docs/design.md, "Build time".)
-using batch_source = function_ref<void(std::uint64_t first, std::span<double> x,
-                                       std::span<double> w, std::span<double> y)>;
+using batch_source =
+    function_ref<void(std::uint64_t first, std::span<double> x, std::span<double> w)>;
+
+// Writes f at k nodes x into y: called once per block of evaluation_block_points(
+// info.evaluation_block) points (core/batching.hpp), one batch unless the integrand asks for
+// more per call.
+using value_source = function_ref<void(std::span<const double> x, std::span<double> y)>;
 
 // The kernel proper, on a checked integrand's info and `total` points made batch by batch by
-// `make_batch`: vol(box)·Σ w_i f(x_i), each batch checked finite (the error names info.name and
-// the point). share_chunks: whether a chunk's sum is all it computes (see writes_on_the_side).
+// `make_batch` and evaluated block by block by `make_values`: vol(box)·Σ w_i f(x_i), each block
+// checked finite (the error names info.name and the point), the sums per batch whatever the
+// block. share_chunks: whether a chunk's sum is all it computes (see writes_on_the_side).
 rule_result weighted_sum_of_batches(const integrand_info& info, std::uint64_t total,
-                                    batch_source make_batch, bool share_chunks, unsigned threads,
-                                    summation accumulate);
+                                    batch_source make_batch, value_source make_values,
+                                    bool share_chunks, unsigned threads, summation accumulate);
 
 // The kernel on a checked integrand and a set of its dimension: generate(first, x, w) writes a
 // batch of box coordinates and weights. ShareChunks: whether a chunk's sum is all it computes.
@@ -124,12 +129,9 @@ template <bool ShareChunks, integrand F, class Generate>
 rule_result weighted_sum_of_batches(const F& f, const integrand_info& info, std::uint64_t total,
                                     const Generate& generate, unsigned threads,
                                     summation accumulate) {
-  const auto make = [&f, &generate](std::uint64_t first, std::span<double> x, std::span<double> w,
-                                    std::span<double> y) {
-    generate(first, x, w);
-    f.evaluate(std::span<const double>(x), y);
-  };
-  return weighted_sum_of_batches(info, total, batch_source(make), ShareChunks, threads, accumulate);
+  const auto values = [&f](std::span<const double> x, std::span<double> y) { f.evaluate(x, y); };
+  return weighted_sum_of_batches(info, total, batch_source(generate), value_source(values),
+                                 ShareChunks, threads, accumulate);
 }
 
 // weighted_sum after the integrand's checks: checks the set against it and picks the set's own
