@@ -309,7 +309,7 @@ TEST(GenzDecay, NamesAreParsedAndABadOneNamesTheChoices) {
   for (const genz_decay d : {genz_decay::none, genz_decay::quadratic, genz_decay::exponential}) {
     EXPECT_EQ(genz_decay_from(to_string(d)), d);
   }
-  const std::string m = message_of([] { genz_decay_from("cubic"); });
+  const std::string m = test_support::message_of([] { genz_decay_from("cubic"); });
   EXPECT_NE(m.find("invalid coefficient_decay = \"cubic\": expected one of \"none\", "
                    "\"quadratic\", \"exponential\""),
             std::string::npos)

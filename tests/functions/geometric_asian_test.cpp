@@ -361,7 +361,7 @@ TEST(GeometricAsian, PlainMonteCarloMeanAndVarianceWithinStatisticalBounds) {
   }
 }
 
-std::string message_of(const integrand_params& p) {
+std::string asian_error_of(const integrand_params& p) {
   try {
     make_integrand("geometric_asian", p);
   } catch (const invalid_argument& e) {
@@ -374,25 +374,25 @@ TEST(GeometricAsian, BadKeysAndValuesAreNamed) {
   integrand_params p;
   p.dimension = 4;
   p.strings["construction"] = "brownian";
-  EXPECT_EQ(message_of(p),
+  EXPECT_EQ(asian_error_of(p),
             "invalid construction: expected one of \"standard\", \"bridge\", \"pca\", got "
             "\"brownian\"");
   p = {};
   p.scalars["construction"] = 1.0;
-  EXPECT_EQ(message_of(p),
+  EXPECT_EQ(asian_error_of(p),
             "invalid construction: expected a string, one of \"standard\", \"bridge\", \"pca\", "
             "for geometric_asian, got 1");
   p = {};
   p.vectors["construction"] = {1.0};
-  EXPECT_EQ(message_of(p),
+  EXPECT_EQ(asian_error_of(p),
             "invalid construction: expected a string, one of \"standard\", \"bridge\", \"pca\", "
             "for geometric_asian, got an array");
   p = {};
   p.strings["spot"] = "high";
-  EXPECT_EQ(message_of(p), "invalid spot: expected a number for geometric_asian, got \"high\"");
+  EXPECT_EQ(asian_error_of(p), "invalid spot: expected a number for geometric_asian, got \"high\"");
   p = {};
   p.strings["kind"] = "call";
-  EXPECT_EQ(message_of(p),
+  EXPECT_EQ(asian_error_of(p),
             "invalid kind: unknown key: not a parameter of geometric_asian (its parameters: "
             "arrays: none; numbers: spot, strike, rate, volatility, maturity; strings: "
             "construction)");
@@ -400,21 +400,21 @@ TEST(GeometricAsian, BadKeysAndValuesAreNamed) {
     for (double bad : {0.0, -1.0, double(INFINITY), double(NAN)}) {
       p = {};
       p.scalars[key] = bad;
-      EXPECT_EQ(message_of(p).rfind(std::string("invalid ") + key + " = ", 0), 0u)
-          << key << " = " << bad << ": " << message_of(p);
+      EXPECT_EQ(asian_error_of(p).rfind(std::string("invalid ") + key + " = ", 0), 0u)
+          << key << " = " << bad << ": " << asian_error_of(p);
     }
   }
   p = {};
   p.scalars["rate"] = INFINITY;
-  EXPECT_EQ(message_of(p).rfind("invalid rate = inf", 0), 0u) << message_of(p);
+  EXPECT_EQ(asian_error_of(p).rfind("invalid rate = inf", 0), 0u) << asian_error_of(p);
   p = {};
   p.dimension = 1025;
-  EXPECT_EQ(message_of(p), "invalid dimension = 1025: expected 1 ≤ s ≤ 1024");
+  EXPECT_EQ(asian_error_of(p), "invalid dimension = 1025: expected 1 ≤ s ≤ 1024");
   // σ = 1 at s = 1024: a node next to a face could overflow G, so it is refused up front.
   p.dimension = 1024;
   p.scalars["volatility"] = 1.0;
-  EXPECT_EQ(message_of(p).rfind("invalid volatility = 1: expected |log S₀", 0), 0u)
-      << message_of(p);
+  EXPECT_EQ(asian_error_of(p).rfind("invalid volatility = 1: expected |log S₀", 0), 0u)
+      << asian_error_of(p);
   // Every key taken, and a string key given the way a scene gives it.
   p = {};
   p.dimension = 8;

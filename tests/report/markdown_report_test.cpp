@@ -441,6 +441,35 @@ TEST(MarkdownReport, ReferencesThatAreNotExactAreListedBeforeTheTables) {
   EXPECT_LT(at, page.find("## Findings"));
 }
 
+// Effective dimensions: a row per integrand in s ≥ 2, the numbers where they are exact, a dash
+// and the reason where they are not; no section when every integrand is one-dimensional.
+TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
+  run_info info;
+  info.scene = "dims";
+  const auto tables = markdown_sample_tables();
+  info.effective_dimensions = {{"line", 1, 1, std::nullopt}};
+  EXPECT_EQ(render_results_markdown(info, tables).find("## Effective dimensions"),
+            std::string::npos);
+  effective_dimensions exact;
+  exact.truncation = 3;
+  exact.superposition = 1;
+  exact.truncation_shares = {0.5, 0.9, 0.995, 1.0};
+  exact.superposition_shares = {0.992, 1.0, 1.0, 1.0};
+  info.effective_dimensions = {{"product", 4, 1, exact}, {"asian", 16, 3, std::nullopt}};
+  const std::string page = render_results_markdown(info, tables);
+  const auto section = page.find("## Effective dimensions");
+  ASSERT_NE(section, std::string::npos) << page;
+  EXPECT_LT(section, page.find("## Slopes"));
+  EXPECT_NE(page.find("| product | 4 | 3 | 1 | 0.500 | 0.992 | exact: a product of one-variable "
+                      "factors |"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("| asian | 16 | — | — | — | — | not computed: not a product of "
+                      "one-variable factors (instance 0 of the ensemble of 3) |"),
+            std::string::npos)
+      << page;
+}
+
 TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {
   run_info info;
   info.scene = "default";

@@ -162,6 +162,42 @@ void append_method_table(std::string& out, const convergence_table& t) {
 // Where a scene runs cells to a tolerance, one line says whether every one got there, and each
 // that did not (its own error estimate still above the target when its budget or level cap ran
 // out) is listed with what it spent: a row of the tolerance table alone would read as an answer.
+// "Effective dimensions": one row per integrand in s ≥ 2 (in 1D there is nothing to split), the
+// exact d_T and d_S where f is a product of one-variable factors
+// (functions/effective_dimension.hpp), else a row that says none is computed. Empty when every
+// integrand is one-dimensional.
+std::string effective_dimension_section(std::span<const effective_dimension_row> rows) {
+  std::string body;
+  for (const effective_dimension_row& row : rows) {
+    if (row.s < 2) continue;
+    const std::string instance =
+        row.instances > 1 ? fmt::format(" (instance 0 of the ensemble of {})", row.instances) : "";
+    if (row.exact) {
+      const effective_dimensions& e = *row.exact;
+      body += fmt::format(
+          "| {} | {} | {} | {} | {:.3f} | {:.3f} | exact: a product of one-variable factors{} |\n",
+          cell(row.integrand), row.s, e.truncation, e.superposition, e.truncation_shares[0],
+          e.superposition_shares[0], instance);
+    } else {
+      body += fmt::format(
+          "| {} | {} | — | — | — | — | not computed: not a product of one-variable factors{} |\n",
+          cell(row.integrand), row.s, instance);
+    }
+  }
+  if (body.empty()) return {};
+  return "## Effective dimensions\n\n"
+         "How much of each integrand's variance σ² its first coordinates and its low-order "
+         "interactions carry (ANOVA, docs/theory.md#effective-dimension): the truncation "
+         "dimension d_T is the fewest leading coordinates whose subsets carry 99 % of σ², the "
+         "superposition dimension d_S the lowest interaction order that does. Where both are "
+         "small beside s, quasi-Monte Carlo's points, whose low-dimensional projections are the "
+         "most even, beat Monte Carlo's; where d_T = s with d_S = 1, only their one-dimensional "
+         "projections matter.\n\n"
+         "| integrand | s | d_T | d_S | share of x₁ | share of order 1 | how |\n"
+         "|---|---|---|---|---|---|---|\n" +
+         body + "\n";
+}
+
 std::string targets_not_reached(std::span<const convergence_table> tables) {
   bool any_tolerance = false;
   std::string list;
@@ -371,6 +407,8 @@ std::string render_results_markdown(const run_info& info,
   out += finding ? "\n"
                  : "None: every verdict has a computed reason (the slope table's last column).\n\n";
   out += targets_not_reached(tables);
+
+  out += effective_dimension_section(info.effective_dimensions);
 
   out += "## Slopes\n\n";
   out += "| integrand | s | method | slope ± 95% CI | theory | verdict | points (floor) | why |\n";

@@ -49,6 +49,14 @@ run_info info_of(const scene_results& results, const results_options& options) {
                                           p.source.integrands[fi].name, ref.value, ref.uncertainty,
                                           ref.describe()));
   }
+  for (const plan_instance& inst : p.instances) {
+    if (inst.instance != 0) continue;
+    const integrand_spec& spec = p.source.integrands[inst.integrand];
+    const integrand_info& f = inst.function.info();
+    effective_dimension_row row{spec.name, f.dimension(), spec.ensemble, std::nullopt};
+    if (f.moments) row.exact = exact_effective_dimensions(*f.moments);
+    info.effective_dimensions.push_back(std::move(row));
+  }
   info.csv = p.source.output.csv;
   info.plots = draws_plots(p, options);
   return info;

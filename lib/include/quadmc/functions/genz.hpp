@@ -297,6 +297,13 @@ class genz_oscillatory {
           rate, 0.0, 1.0, std::exp(0.5 * rate) * boost::math::sinc_pi(0.5 * ai)));
     }
     info.endpoint_derivatives = endpoint::product_of(std::polar(1.0, phase_), std::move(factors));
+    // The moments of h = e^{iax}: E h = e^{ia/2}·sinc(a/2), E|h|² = 1, E h² = e^{ia}·sinc(a).
+    separable_moments moments{std::polar(1.0, phase_), {}};
+    for (double ai : a_) {
+      moments.factors.push_back({std::polar(boost::math::sinc_pi(0.5 * ai), 0.5 * ai), 1.0,
+                                 std::polar(boost::math::sinc_pi(ai), ai)});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -364,6 +371,17 @@ class genz_product_peak {
       factors.push_back(std::move(factor));
     }
     info.endpoint_derivatives = endpoint::product_of(peak_, std::move(factors));
+    // g = 1/(1 + a²t²), t = x − u: E g = [atan(a(1 − u)) + atan(au)]/a and, with v = at,
+    // E g² = (1/a)∫dv/(1 + v²)² = [F(a(1 − u)) − F(−au)]/(2a), F(v) = v/(1 + v²) + atan v.
+    separable_moments moments{peak_, {}};
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double a = a_[j], u = u_[j];
+      const auto F = [](double v) { return v / (1.0 + v * v) + std::atan(v); };
+      const double mean = (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a;
+      const double square = (F(a * (1.0 - u)) - F(-a * u)) / (2.0 * a);
+      moments.factors.push_back({mean, square, square});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -491,6 +509,16 @@ class genz_gaussian {
           std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u))));
     }
     info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
+    // E g = ∫₀¹ e^{−a²(x−u)²} dx = √π/(2a)[erf(a(1 − u)) + erf(au)]; E g² is the same with a√2.
+    const auto mean = [](double a, double u) {
+      return std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u));
+    };
+    separable_moments moments;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double square = mean(std::numbers::sqrt2 * a_[j], u_[j]);
+      moments.factors.push_back({mean(a_[j], u_[j]), square, square});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -558,6 +586,16 @@ class genz_continuous {
                                             std::move(kinks)));
     }
     info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
+    // E g = ∫₀¹ e^{−a|x−u|} dx = [2 − e^{−au} − e^{−a(1−u)}]/a; E g² is the same with 2a.
+    const auto mean = [](double a, double u) {
+      return (-std::expm1(-a * u) - std::expm1(-a * (1.0 - u))) / a;
+    };
+    separable_moments moments;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double square = mean(2.0 * a_[j], u_[j]);
+      moments.factors.push_back({mean(a_[j], u_[j]), square, square});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }
@@ -651,6 +689,15 @@ class genz_discontinuous {
       factor.integral = a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j];
       info.separable_factors.push_back(std::move(factor));
     }
+    // E g = ∫₀^upper e^{ax} dx = (e^{a·upper} − 1)/a; E g² is the same with 2a.
+    separable_moments moments;
+    for (std::size_t j = 0; j < a_.size(); ++j) {
+      const double upper = std::min(threshold_[j], 1.0);
+      const auto mean = [upper](double a) { return a == 0.0 ? upper : std::expm1(a * upper) / a; };
+      const double square = mean(2.0 * a_[j]);
+      moments.factors.push_back({mean(a_[j]), square, square});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }

@@ -114,6 +114,21 @@ struct separable_derivatives {
   std::vector<endpoint_factor> factors;
 };
 
+// The moments of one factor g_j(x_j) of f(x) = Re[scale·Π_j g_j(x_j)] over x_j uniform on its
+// interval, from which the ANOVA of f follows in closed form (functions/effective_dimension.hpp,
+// docs/theory.md#effective-dimension): E g, E|g|² and E g² (E g² = E|g|² for a real factor).
+struct factor_moments {
+  std::complex<double> mean;
+  double mean_abs_square = NAN;
+  std::complex<double> mean_square;
+};
+
+// f as Re[scale·Π_j g_j(x_j)] with each factor's moments (one per axis, in order).
+struct separable_moments {
+  std::complex<double> scale{1.0, 0.0};
+  std::vector<factor_moments> factors;
+};
+
 struct integrand_info {
   std::string name;       // catalogue name as used in scenes, e.g. "genz_gaussian"
   std::string formula;    // one line, for `quadmc list` and the README catalogue
@@ -139,6 +154,9 @@ struct integrand_info {
   // factor's end-point derivatives, in closed form. Empty where f is not of that form or has
   // jumps (separable_factors bound those), or where a derivative overflows.
   std::optional<separable_derivatives> endpoint_derivatives{};
+  // For f (the real part of) a product of one-variable factors: their moments, in closed form,
+  // from which its effective dimensions are exact. Empty where f is not of that form.
+  std::optional<separable_moments> moments{};
   // The format f's values are computed in: float for the float twins of the stress scene (their
   // rounding floor is float's, not double's: analysis/rounding_floor.hpp).
   evaluation_precision precision = evaluation_precision::double_precision;

@@ -87,6 +87,13 @@ class sobol_g {
       factors.push_back(endpoint::factor_of(end(-1.0), end(1.0), 0.0, 1.0, 1.0, {std::move(kink)}));
     }
     info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
+    // E g = 1 and E g² = 1 + 1/(3(1 + a)²) (E|4x − 2|² = 4/3, E|4x − 2| = 1).
+    separable_moments moments;
+    for (double ai : a_) {
+      const double square = 1.0 + 1.0 / (3.0 * (1.0 + ai) * (1.0 + ai));
+      moments.factors.push_back({1.0, square, square});
+    }
+    info.moments = std::move(moments);
     return info;
   }
   const std::vector<double>& a() const noexcept { return a_; }

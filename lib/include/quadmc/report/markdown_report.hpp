@@ -7,16 +7,26 @@
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/functions/effective_dimension.hpp"
 #include "quadmc/report/provenance.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace quadmc {
+
+// An integrand's effective dimensions as the page states them.
+struct effective_dimension_row {
+  std::string integrand;  // the scene's name for it
+  std::size_t s = 0;
+  std::size_t instances = 1;                          // an ensemble's K: the row is instance 0's
+  std::optional<quadmc::effective_dimensions> exact;  // nullopt: not a product of factors
+};
 
 // What the header of a results page says about the run. Empty strings / NaN are omitted.
 struct run_info {
@@ -33,6 +43,9 @@ struct run_info {
   // Integrands whose errors are measured from a given or computed reference instead of an exact
   // value, each "name: reference = v ± u (how)" (scene/plan.hpp, plan_reference); empty: none.
   std::vector<std::string> references;
+  // One row per integrand of the scene (its first instance): its effective dimensions where they
+  // are exact (functions/effective_dimension.hpp), else why the page gives none.
+  std::vector<effective_dimension_row> effective_dimensions;
   // What else the folder holds ([output] of the scene): the page links only files that exist.
   bool csv = true;    // convergence.csv and slopes.csv
   bool plots = true;  // the error and work-precision plots
