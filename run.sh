@@ -72,8 +72,9 @@ BENCH_PACKAGES=("${LIB_PACKAGES[@]}" "${PLOT_PACKAGES[@]}" "${PEER_PACKAGES[@]}"
 SANITIZE_PACKAGES=("${TEST_PACKAGES[@]}" clang libclang-rt-14-dev)
 # The scene-parser fuzzer: libFuzzer and the sanitizer runtimes come with Debian's clang. It is
 # built in the sanitize preset's tree and links its library (tests/fuzz/CMakeLists.txt), so it
-# configures that preset: the library's packages, GoogleTest and CLI11 included.
-FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" clang libclang-rt-14-dev)
+# configures that preset: the library's packages, GoogleTest and CLI11 included, and the Python
+# module's, which the preset builds (QUADMC_PYTHON=ON).
+FUZZ_PACKAGES=("${LIB_PACKAGES[@]}" "${PYTHON_MODULE_PACKAGES[@]}" clang libclang-rt-14-dev)
 FORMAT_PACKAGES=(clang-format)
 # The outside projects built against what the test preset installs: the library's packages, Open
 # MPI (the installed quadmc::command links it where the test build found it, and quadmcConfig.cmake
