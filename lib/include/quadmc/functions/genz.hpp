@@ -215,6 +215,26 @@ inline integrand_info genz_info(genz_family f, std::string formula, std::size_t 
                         .regularity = regularity};
 }
 
+// The one-variable integrals over [0, 1] the product families' closed forms, end-point data and
+// moments are built from (one expression each, so that all three agree bit for bit).
+// ∫₀¹ e^{−a²(x−u)²} dx = √π/(2a)[erf(a(1 − u)) + erf(au)].
+inline double gaussian_factor_integral(double a, double u) {
+  return std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u));
+}
+// ∫₀¹ e^{−a|x−u|} dx = [2 − e^{−au} − e^{−a(1−u)}]/a, as −expm1(−au) − expm1(−a(1−u)): no
+// cancellation for small a.
+inline double continuous_factor_integral(double a, double u) {
+  return (-std::expm1(-a * u) - std::expm1(-a * (1.0 - u))) / a;
+}
+// ∫₀¹ dx/(1 + a²(x−u)²) = [atan(a(1 − u)) + atan(au)]/a.
+inline double peak_factor_integral(double a, double u) {
+  return (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a;
+}
+// ∫₀^upper e^{ax} dx = expm1(a·upper)/a, = upper at a = 0.
+inline double exponential_integral(double a, double upper) {
+  return a == 0.0 ? upper : std::expm1(a * upper) / a;
+}
+
 }  // namespace detail
 
 class genz_oscillatory {
@@ -364,8 +384,8 @@ class genz_product_peak {
           return std::pow(a, static_cast<double>(k)) * endpoint::inverse_quadratic(k, a * (x - u));
         };
       };
-      auto factor = endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0,
-                                        (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a);
+      auto factor =
+          endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0, detail::peak_factor_integral(a, u));
       // Poles u ± i/a: the coarse-grid term of docs/theory.md#coarse-grid-term.
       if (factor) factor->poles = endpoint::inverse_quadratic_poles(a, u);
       factors.push_back(std::move(factor));
@@ -377,7 +397,7 @@ class genz_product_peak {
     for (std::size_t j = 0; j < a_.size(); ++j) {
       const double a = a_[j], u = u_[j];
       const auto F = [](double v) { return v / (1.0 + v * v) + std::atan(v); };
-      const double mean = (std::atan(a * (1.0 - u)) + std::atan(a * u)) / a;
+      const double mean = detail::peak_factor_integral(a, u);
       const double square = (F(a * (1.0 - u)) - F(-a * u)) / (2.0 * a);
       moments.factors.push_back({mean, square, square});
     }
@@ -465,8 +485,7 @@ class genz_gaussian {
     // Every factor √π/(2aᵢ)·[erf(aᵢ(1 − uᵢ)) + erf(aᵢuᵢ)] is in (0, 1].
     std::vector<double> factors;
     for (std::size_t j = 0; j < a_.size(); ++j) {
-      factors.push_back(std::sqrt(std::numbers::pi) / (2.0 * a_[j]) *
-                        (std::erf(a_[j] * (1.0 - u_[j])) + std::erf(a_[j] * u_[j])));
+      factors.push_back(detail::gaussian_factor_integral(a_[j], u_[j]));
     }
     exact_ = detail::scaled_product(factors);
     detail::require_representable(exact_, true, a_, "genz_gaussian", factors);
@@ -504,19 +523,15 @@ class genz_gaussian {
           return std::pow(a, static_cast<double>(k)) * endpoint::gaussian(k, a * (x - u));
         };
       };
-      factors.push_back(endpoint::factor_of(
-          at(0.0), at(1.0), 0.0, 1.0,
-          std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u))));
+      factors.push_back(
+          endpoint::factor_of(at(0.0), at(1.0), 0.0, 1.0, detail::gaussian_factor_integral(a, u)));
     }
     info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
-    // E g = ∫₀¹ e^{−a²(x−u)²} dx = √π/(2a)[erf(a(1 − u)) + erf(au)]; E g² is the same with a√2.
-    const auto mean = [](double a, double u) {
-      return std::sqrt(std::numbers::pi) / (2.0 * a) * (std::erf(a * (1.0 - u)) + std::erf(a * u));
-    };
+    // E g is the factor's integral; E g² = E e^{−2a²(x−u)²}, the same with a√2.
     separable_moments moments;
     for (std::size_t j = 0; j < a_.size(); ++j) {
-      const double square = mean(std::numbers::sqrt2 * a_[j], u_[j]);
-      moments.factors.push_back({mean(a_[j], u_[j]), square, square});
+      const double square = detail::gaussian_factor_integral(std::numbers::sqrt2 * a_[j], u_[j]);
+      moments.factors.push_back({detail::gaussian_factor_integral(a_[j], u_[j]), square, square});
     }
     info.moments = std::move(moments);
     return info;
@@ -538,8 +553,7 @@ class genz_continuous {
     // keeps 2/aᵢ finite.
     std::vector<double> factors;
     for (std::size_t j = 0; j < a_.size(); ++j) {
-      // 2 − e^{−au} − e^{−a(1−u)} = −expm1(−au) − expm1(−a(1−u)): no cancellation for small a.
-      factors.push_back((-std::expm1(-a_[j] * u_[j]) - std::expm1(-a_[j] * (1.0 - u_[j]))) / a_[j]);
+      factors.push_back(detail::continuous_factor_integral(a_[j], u_[j]));
     }
     exact_ = detail::scaled_product(factors);
     detail::require_representable(exact_, true, a_, "genz_continuous", factors);
@@ -582,18 +596,15 @@ class genz_continuous {
         kinks.push_back(std::move(kink));
       }
       factors.push_back(endpoint::factor_of(at(0.0, u == 0.0), at(1.0, u < 1.0), 0.0, 1.0,
-                                            (-std::expm1(-a * u) - std::expm1(-a * (1.0 - u))) / a,
+                                            detail::continuous_factor_integral(a, u),
                                             std::move(kinks)));
     }
     info.endpoint_derivatives = endpoint::product_of(1.0, std::move(factors));
-    // E g = ∫₀¹ e^{−a|x−u|} dx = [2 − e^{−au} − e^{−a(1−u)}]/a; E g² is the same with 2a.
-    const auto mean = [](double a, double u) {
-      return (-std::expm1(-a * u) - std::expm1(-a * (1.0 - u))) / a;
-    };
+    // E g is the factor's integral; E g² = E e^{−2a|x−u|}, the same with 2a.
     separable_moments moments;
     for (std::size_t j = 0; j < a_.size(); ++j) {
-      const double square = mean(2.0 * a_[j], u_[j]);
-      moments.factors.push_back({mean(a_[j], u_[j]), square, square});
+      const double square = detail::continuous_factor_integral(2.0 * a_[j], u_[j]);
+      moments.factors.push_back({detail::continuous_factor_integral(a_[j], u_[j]), square, square});
     }
     info.moments = std::move(moments);
     return info;
@@ -635,8 +646,7 @@ class genz_discontinuous {
     std::vector<double> factors;
     for (std::size_t j = 0; j < s; ++j) {
       const double upper = std::min(threshold_[j], 1.0);
-      // ∫₀^upper e^{a x} dx = expm1(a·upper)/a, = upper at a = 0.
-      factors.push_back(a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j]);
+      factors.push_back(detail::exponential_integral(a_[j], upper));
       peak_ += std::max(0.0, a_[j] * upper);
     }
     require(std::exp(peak_) <= std::numeric_limits<double>::max(), "a",
@@ -686,16 +696,15 @@ class genz_discontinuous {
         factor.derivative_bound[k] = power * top;
         power *= std::abs(a_[j]);
       }
-      factor.integral = a_[j] == 0.0 ? upper : std::expm1(a_[j] * upper) / a_[j];
+      factor.integral = detail::exponential_integral(a_[j], upper);
       info.separable_factors.push_back(std::move(factor));
     }
-    // E g = ∫₀^upper e^{ax} dx = (e^{a·upper} − 1)/a; E g² is the same with 2a.
+    // E g = ∫₀^upper e^{ax} dx; E g² is the same with 2a.
     separable_moments moments;
     for (std::size_t j = 0; j < a_.size(); ++j) {
       const double upper = std::min(threshold_[j], 1.0);
-      const auto mean = [upper](double a) { return a == 0.0 ? upper : std::expm1(a * upper) / a; };
-      const double square = mean(2.0 * a_[j]);
-      moments.factors.push_back({mean(a_[j]), square, square});
+      const double square = detail::exponential_integral(2.0 * a_[j], upper);
+      moments.factors.push_back({detail::exponential_integral(a_[j], upper), square, square});
     }
     info.moments = std::move(moments);
     return info;
