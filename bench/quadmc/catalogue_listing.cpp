@@ -46,6 +46,10 @@ std::string catalogue_listing() {
   fmt::format_to(line, "\npoint sets ([[method]] point_set = …, for importance/irradiance):\n");
   for (const auto& p : quadmc::point_set_catalogue()) {
     fmt::format_to(line, "  {:<30} {}\n", p.name, p.description);
+    // The largest s its tables hold (Boost's Sobol' directions, the lattice's generating vector,
+    // the Halton primes); the plan skips a larger integrand with this reason, `quadmc points`
+    // refuses it (point_set_catalogue.hpp, dimension_problem).
+    if (p.max_dimension != 0) fmt::format_to(line, "      s ≤ {}\n", p.max_dimension);
   }
   fmt::format_to(line, "  {:<30} {}\n", quadmc::external_point_set,
                  quadmc::external_point_set_description);

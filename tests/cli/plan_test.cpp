@@ -74,6 +74,17 @@ TEST(ListTest, PrintsEveryMethodIntegrandPointSetAndOption) {
   for (const auto& name : names) {
     EXPECT_NE(r.out.find(name), std::string::npos) << "`quadmc list` misses " << name;
   }
+  // Each set's largest s, on the line after its own.
+  for (const auto& p : quadmc::point_set_catalogue()) {
+    if (p.max_dimension == 0) continue;
+    const std::size_t at =
+        r.out.find("  " + std::string(p.name) + " ", r.out.find("\npoint sets ("));
+    ASSERT_NE(at, std::string::npos) << p.name;
+    const std::size_t next = r.out.find('\n', at) + 1;
+    EXPECT_EQ(r.out.substr(next, r.out.find('\n', next) - next),
+              "      s ≤ " + std::to_string(p.max_dimension))
+        << p.name;
+  }
 }
 
 }  // namespace

@@ -200,6 +200,20 @@ TEST(Readme, NamesWhatQuadmcListPrintsAndNothingElse) {
   rows_by_name(readme_table("family"), listed(r.out, "integrands"), "family");
 }
 
+// | point set | N it holds in s dimensions | …: a set with a largest s states it as `quadmc list`
+// does.
+TEST(Readme, PointSetTableStatesEachSetsLargestDimension) {
+  const std::vector<row> table = readme_table("point set");
+  const auto where = rows_by_name(table, point_set_names(), "point set");
+  for (const quadmc::point_set_entry& p : quadmc::point_set_catalogue()) {
+    const auto it = where.find(std::string(p.name));
+    if (p.max_dimension == 0 || it == where.end()) continue;
+    ASSERT_GE(it->second->size(), 2u) << p.name;
+    EXPECT_NE((*it->second)[1].find("s ≤ " + std::to_string(p.max_dimension)), std::string::npos)
+        << p.name << ": " << (*it->second)[1];
+  }
+}
+
 // | method | kind | control | own keys | what it does |: each method's own keys (its descriptor's
 // options) and controls are exactly those of its row.
 TEST(Readme, MethodTableHasEachMethodsKindControlsAndKeys) {

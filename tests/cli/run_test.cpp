@@ -270,6 +270,48 @@ plots = false
   }
 }
 
+// The same at s = 1024 (the high_dimension scene's largest s): N = 16384 spans two chunks of
+// 12288 points, each of 1024 coordinates, under scrambled Sobol' and plain Monte Carlo, on the
+// geometric Asian option (its path in stack buffers of s doubles) and a Genz product.
+TEST(RunTest, ThreadCountDoesNotChangeResultsAtS1024) {
+  const std::string scene = R"(name = "wide"
+seed = 5
+[[integrand]]
+family = "geometric_asian"
+construction = "bridge"
+dimension = 1024
+[[integrand]]
+family = "genz_gaussian"
+coefficient_decay = "quadratic"
+dimension = 1024
+[[method]]
+name = "sobol"
+randomization = "lms_shift"
+repetitions = 2
+[[method]]
+name = "plain_mc"
+repetitions = 2
+[budget]
+N = [16384]
+[output]
+plots = false
+markdown = false
+)";
+  scratch_folder dir;
+  write_text(dir / "wide.toml", scene);
+  const std::string file = (dir / "wide.toml").string();
+  const command_result one = run_quadmc(dir, {"run", file, "--out", "t1", "--threads", "1"});
+  ASSERT_EQ(one.exit_status, 0) << describe(one);
+  const command_result two = run_quadmc(dir, {"run", file, "--out", "t2", "--threads", "2"});
+  ASSERT_EQ(two.exit_status, 0) << describe(two);
+  for (const std::string column : {"method", "N", "estimate_mean", "rmse", "mean_abs_error"}) {
+    const auto a = csv_column_text(dir / "t1" / "convergence.csv", column);
+    const auto b = csv_column_text(dir / "t2" / "convergence.csv", column);
+    EXPECT_EQ(a.size(), 4u) << column;  // 2 integrands × 2 methods × 1 N
+    EXPECT_EQ(a, b) << "column " << column << ", 1 vs 2 threads";
+  }
+}
+
 TEST(RunTest, PlotsAreWrittenAndLinkedFromReadme) {
   // The one test that runs bench/plot.py (matplotlib, 1–2 s).
   const std::string scene = R"(name = "plots"

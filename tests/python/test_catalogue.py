@@ -48,7 +48,10 @@ def test_methods_are_the_listings(listing):
 
 
 def test_point_sets_are_the_listings(listing):
-    lines = [(f"{p['name']:<30} {p['description']}", []) for p in quadmc.point_sets()]
+    # A set with a largest s states it on a line of its own.
+    lines = [(f"{p['name']:<30} {p['description']}",
+              [f"s ≤ {p['max_dimension']}"] if p["max_dimension"] is not None else [])
+             for p in quadmc.point_sets()]
     # The listing ends with external_points, a point_set of importance and the irradiance methods
     # read from the user's files (methods/registry.hpp), which quadmc.points cannot generate.
     assert lines == listing["point sets"][:-1]

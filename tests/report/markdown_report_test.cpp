@@ -441,13 +441,14 @@ TEST(MarkdownReport, ReferencesThatAreNotExactAreListedBeforeTheTables) {
   EXPECT_LT(at, page.find("## Findings"));
 }
 
-// Effective dimensions: a row per integrand in s ≥ 2, the numbers where they are exact, a dash
-// and the reason where they are not; no section when every integrand is one-dimensional.
+// Effective dimensions: a row per integrand in s ≥ 2, the numbers where they are exact, the
+// estimates with their intervals and how they were made where they are not, a dash and the
+// reason where neither exists; no section when every integrand is one-dimensional.
 TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
   run_info info;
   info.scene = "dims";
   const auto tables = markdown_sample_tables();
-  info.effective_dimensions = {{"line", 1, 1, std::nullopt}};
+  info.effective_dimensions = {{"line", 1, 1, std::nullopt, std::nullopt}};
   EXPECT_EQ(render_results_markdown(info, tables).find("## Effective dimensions"),
             std::string::npos);
   effective_dimensions exact;
@@ -455,19 +456,44 @@ TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
   exact.superposition = 1;
   exact.truncation_shares = {0.5, 0.9, 0.995, 1.0};
   exact.superposition_shares = {0.992, 1.0, 1.0, 1.0};
-  info.effective_dimensions = {{"product", 4, 1, exact}, {"asian", 16, 3, std::nullopt}};
+  effective_dimension_estimate additive;
+  additive.samples = 4096;
+  additive.evaluations = 50000;
+  additive.truncation = 2;
+  additive.truncation_low = 2;
+  additive.truncation_high = 3;
+  additive.first_coordinate = {0.9, 0.88, 0.92};
+  additive.first_order = estimated_share{0.995, 0.991, 0.998};
+  additive.mean_dimension = estimated_share{1.01, 1.005, 1.015};
+  additive.first_order_samples = 1024;
+  effective_dimension_estimate undecided = additive;
+  undecided.first_order = estimated_share{0.99, 0.985, 0.995};
+  effective_dimension_estimate wide = additive;
+  wide.truncation_high = 2;
+  wide.first_order.reset();
+  wide.mean_dimension.reset();
+  info.effective_dimensions = {{"product", 4, 1, exact, std::nullopt},
+                               {"asian", 16, 3, std::nullopt, additive},
+                               {"undecided", 8, 1, std::nullopt, undecided},
+                               {"wide", 1024, 1, std::nullopt, wide},
+                               {"flat", 2, 1, std::nullopt, std::nullopt}};
   const std::string page = render_results_markdown(info, tables);
   const auto section = page.find("## Effective dimensions");
   ASSERT_NE(section, std::string::npos) << page;
   EXPECT_LT(section, page.find("## Slopes"));
-  EXPECT_NE(page.find("| product | 4 | 3 | 1 | 0.500 | 0.992 | exact: a product of one-variable "
-                      "factors |"),
-            std::string::npos)
-      << page;
-  EXPECT_NE(page.find("| asian | 16 | — | — | — | — | not computed: not a product of "
-                      "one-variable factors (instance 0 of the ensemble of 3) |"),
-            std::string::npos)
-      << page;
+  for (const std::string row :
+       {"| product | 4 | 3 | 1 | 0.500 | 0.992 | exact: a product of one-variable factors |",
+        "| asian | 16 | 2 [2, 3] | 1 | 0.900 [0.880, 0.920] | 0.995 [0.991, 0.998] | estimated: "
+        "pick-freeze, 4096 rows, 50000 evaluations, 95 % intervals; mean dimension 1.010 "
+        "[1.005, 1.015], order 1 from the first 1024 rows (instance 0 of the ensemble of 3) |",
+        "| undecided | 8 | 2 [2, 3] | 1 or ≥ 2 | 0.900 [0.880, 0.920] | 0.990 [0.985, 0.995] |",
+        "| wide | 1024 | 2 | — | 0.900 [0.880, 0.920] | — | estimated: pick-freeze, 4096 rows, "
+        "50000 evaluations, 95 % intervals; order 1 not estimated (64 rows of s² coordinates "
+        "above its budget) |",
+        "| flat | 2 | — | — | — | — | not computed: not a product of one-variable factors, and "
+        "its sampled variance is 0 or a sampled value not finite |"}) {
+    EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
+  }
 }
 
 TEST(MarkdownReport, PageHasHeaderSummaryTablesAndLinks) {

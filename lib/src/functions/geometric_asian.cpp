@@ -155,7 +155,11 @@ void geometric_asian::path(std::span<const double> z, std::span<double> w) const
 void geometric_asian::evaluate(std::span<const double> x, std::span<double> y) const noexcept {
   using namespace boost::math::policies;
   // erfc_inv(0) and erfc_inv(2) return ±∞ instead of throwing; outside [0, 2] it returns NaN.
-  using quiet = policy<overflow_error<ignore_error>, domain_error<ignore_error>>;
+  // promote_double<false>: Boost's double rational approximations (a few ulp) instead of its
+  // default long double evaluation, which cost about 0.4 µs per coordinate here, 90 % of a run
+  // at s = 1024 (measured with perf on the high_dimension scene).
+  using quiet =
+      policy<overflow_error<ignore_error>, domain_error<ignore_error>, promote_double<false>>;
   std::array<double, max_dimension> z, w;
   const double sigma_over_s = p_.volatility / static_cast<double>(s_);
   for (std::size_t i = 0; i < y.size(); ++i) {

@@ -35,8 +35,11 @@ namespace quadmc::methods {
 namespace {
 
 // Cells up to this N carry discrepancy columns: O(N²·s) per repetition (about 5 ms at s = 8 for
-// N = 1024, 16 times that at 4096, which would cost more than the integration itself).
+// N = 1024, 16 times that at 4096, which would cost more than the integration itself), and only
+// while N²·s ≤ 2^24 (N = 1024 at s = 16; N = 64 at s = 1024, where N = 1024 would take about a
+// second per repetition on one thread, for a column nobody can read at that s).
 constexpr std::uint64_t discrepancy_max_points = 1024;
+constexpr std::uint64_t discrepancy_max_pair_coordinates = std::uint64_t{1} << 24;
 
 struct qmc_options {
   point_set_options set;
@@ -127,8 +130,8 @@ class qmc_method final : public method {
   void measure_points(const method_cell& cell, const run_context& context,
                       repetition_result& result) const override {
     const std::uint64_t n = cell.size.evaluations;
-    if (n > discrepancy_max_points) return;
     const std::size_t s = cell.function.dimension();
+    if (n > discrepancy_max_points || n * n * s > discrepancy_max_pair_coordinates) return;
     std::vector<double> x;
     x.reserve(n * s);
     set_->points(

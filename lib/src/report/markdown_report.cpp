@@ -164,9 +164,13 @@ void append_method_table(std::string& out, const convergence_table& t) {
 // out) is listed with what it spent: a row of the tolerance table alone would read as an answer.
 // "Effective dimensions": one row per integrand in s ≥ 2 (in 1D there is nothing to split), the
 // exact d_T and d_S where f is a product of one-variable factors
-// (functions/effective_dimension.hpp), else a row that says none is computed. Empty when every
-// integrand is one-dimensional.
+// (functions/effective_dimension.hpp), else their pick-freeze estimates with intervals
+// (functions/effective_dimension_estimate.hpp), labelled as such. Empty when every integrand is
+// one-dimensional.
 std::string effective_dimension_section(std::span<const effective_dimension_row> rows) {
+  const auto interval = [](const estimated_share& e) {
+    return fmt::format("{:.3f} [{:.3f}, {:.3f}]", e.value, e.low, e.high);
+  };
   std::string body;
   for (const effective_dimension_row& row : rows) {
     if (row.s < 2) continue;
@@ -178,9 +182,33 @@ std::string effective_dimension_section(std::span<const effective_dimension_row>
           "| {} | {} | {} | {} | {:.3f} | {:.3f} | exact: a product of one-variable factors{} |\n",
           cell(row.integrand), row.s, e.truncation, e.superposition, e.truncation_shares[0],
           e.superposition_shares[0], instance);
+    } else if (row.estimated) {
+      const effective_dimension_estimate& e = *row.estimated;
+      const std::string truncation =
+          e.truncation_low == e.truncation_high
+              ? fmt::format("{}", e.truncation)
+              : fmt::format("{} [{}, {}]", e.truncation, e.truncation_low, e.truncation_high);
+      std::string superposition = "—", order_one = "—", how;
+      if (e.first_order) {
+        const double q = e.share - 1e-12;
+        superposition = e.first_order->low >= q   ? "1"
+                        : e.first_order->high < q ? "≥ 2"
+                                                  : "1 or ≥ 2";
+        order_one = interval(*e.first_order);
+        how = fmt::format("; mean dimension {}, order 1 from the first {} rows",
+                          interval(*e.mean_dimension), e.first_order_samples);
+      } else {
+        how = "; order 1 not estimated (64 rows of s² coordinates above its budget)";
+      }
+      body += fmt::format(
+          "| {} | {} | {} | {} | {} | {} | estimated: pick-freeze, {} rows, {} evaluations, {:g} % "
+          "intervals{}{} |\n",
+          cell(row.integrand), row.s, truncation, superposition, interval(e.first_coordinate),
+          order_one, e.samples, e.evaluations, 100.0 * e.confidence, how, instance);
     } else {
       body += fmt::format(
-          "| {} | {} | — | — | — | — | not computed: not a product of one-variable factors{} |\n",
+          "| {} | {} | — | — | — | — | not computed: not a product of one-variable factors, and "
+          "its sampled variance is 0 or a sampled value not finite{} |\n",
           cell(row.integrand), row.s, instance);
     }
   }
@@ -192,7 +220,10 @@ std::string effective_dimension_section(std::span<const effective_dimension_row>
          "superposition dimension d_S the lowest interaction order that does. Where both are "
          "small beside s, quasi-Monte Carlo's points, whose low-dimensional projections are the "
          "most even, beat Monte Carlo's; where d_T = s with d_S = 1, only their one-dimensional "
-         "projections matter.\n\n"
+         "projections matter. Exact where f is a product of one-variable factors; otherwise "
+         "estimated by pick-freeze (docs/theory.md#estimated-effective-dimension), with d_T's "
+         "interval from those of the shares and d_S = 1 only where the share of order 1 is above "
+         "99 % with its whole interval (the mean dimension Σ|u|σ²_u/σ² beside it).\n\n"
          "| integrand | s | d_T | d_S | share of x₁ | share of order 1 | how |\n"
          "|---|---|---|---|---|---|---|\n" +
          body + "\n";

@@ -8,6 +8,7 @@
 
 #include "quadmc/analysis/convergence_table.hpp"
 #include "quadmc/functions/effective_dimension.hpp"
+#include "quadmc/functions/effective_dimension_estimate.hpp"
 #include "quadmc/report/provenance.hpp"
 
 #include <cstddef>
@@ -26,6 +27,9 @@ struct effective_dimension_row {
   std::size_t s = 0;
   std::size_t instances = 1;                          // an ensemble's K: the row is instance 0's
   std::optional<quadmc::effective_dimensions> exact;  // nullopt: not a product of factors
+  // Where there is no exact form: the pick-freeze estimate (effective_dimension_estimate.hpp);
+  // nullopt when f's sampled variance is 0 or a value is not finite.
+  std::optional<quadmc::effective_dimension_estimate> estimated;
 };
 
 // What the header of a results page says about the run. Empty strings / NaN are omitted.
@@ -43,8 +47,8 @@ struct run_info {
   // Integrands whose errors are measured from a given or computed reference instead of an exact
   // value, each "name: reference = v ± u (how)" (scene/plan.hpp, plan_reference); empty: none.
   std::vector<std::string> references;
-  // One row per integrand of the scene (its first instance): its effective dimensions where they
-  // are exact (functions/effective_dimension.hpp), else why the page gives none.
+  // One row per integrand of the scene (its first instance): its effective dimensions, exact
+  // where f is a product of factors (functions/effective_dimension.hpp), else estimated.
   std::vector<effective_dimension_row> effective_dimensions;
   // What else the folder holds ([output] of the scene): the page links only files that exist.
   bool csv = true;    // convergence.csv and slopes.csv

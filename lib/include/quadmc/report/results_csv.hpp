@@ -32,29 +32,27 @@
 // estimate_mean from the spread of the repetitions (empty for one repetition); the three
 // `*_discrepancy` columns the root mean square over the repetitions of the L2-star, centered and
 // wrap-around discrepancies of the points (sampling/discrepancy.hpp), computed by the
-// quasi-Monte Carlo methods at N ≤ 1024 and empty elsewhere. `predicted_error` is the |error| a
-// rule's Euler–Maclaurin expansion predicts for the cell (analysis/convergence_table.hpp), empty
-// where there is no prediction or the next term moves it by more than 1%; `prediction_ratio` the
-// measured/predicted error (signed for a deterministic rule: (estimate − I)/(predicted estimate −
-// I)); `local_slope` d log(error)/d log N from the previous distinct N; `rounding_level` ℓ(N) of
-// the series' rounding model (analysis/rounding_floor.hpp: the evaluation precision and the
-// accumulator).
-// `verdict` is one of slope_verdict.hpp's strings: agrees, steeper, shallower, no_theory, no_fit,
-// superconvergent, pre_asymptotic, at_floor (slope verdicts) or within_envelope, above_envelope
-// (envelope verdicts); `verdict_reason` says why in one line. `theory` is the rate judged against
-// (for a superconvergent series the order of the first non-vanishing Euler–Maclaurin term),
-// `class_theory` the method's rate for the smoothness class; `asymptotic_from_n` the N from which
-// the predicted local slope stays within 10% of `theory` (it may exceed the ladder's last N),
-// `asymptotic_slope` the slope fitted over the points from there (empty with fewer than three);
-// `predicted_points` how many cells were judged against the prediction and
-// `worst_prediction_ratio` the judged ratio farthest from 1 (empty when none); `rounding_model`
-// e.g. "float evaluation, pairwise sum".
-// `seconds_per_estimate` is the stable time of one estimate (analysis/cell_timing.hpp: the median
-// over batches of repeated calls of repetition 1's work), `seconds_spread` the batches'
-// (max − min)/median (empty when timed once), `timed_estimates` the calls timed (1 = timed once:
-// the first call already took at least the minimum); `seconds` keeps its meaning, the wall time
-// of the repetitions the statistics come from. Work-precision figures use seconds_per_estimate
-// (seconds/repetitions for a file from before it).
+// quasi-Monte Carlo methods at N ≤ 1024 with N²·s ≤ 2^24 and empty elsewhere. `predicted_error` is
+// the |error| a rule's Euler–Maclaurin expansion predicts for the cell
+// (analysis/convergence_table.hpp), empty where there is no prediction or the next term moves it by
+// more than 1%; `prediction_ratio` the measured/predicted error (signed for a deterministic rule:
+// (estimate − I)/(predicted estimate − I)); `local_slope` d log(error)/d log N from the previous
+// distinct N; `rounding_level` ℓ(N) of the series' rounding model (analysis/rounding_floor.hpp: the
+// evaluation precision and the accumulator). `verdict` is one of slope_verdict.hpp's strings:
+// agrees, steeper, shallower, no_theory, no_fit, superconvergent, pre_asymptotic, at_floor (slope
+// verdicts) or within_envelope, above_envelope (envelope verdicts); `verdict_reason` says why in
+// one line. `theory` is the rate judged against (for a superconvergent series the order of the
+// first non-vanishing Euler–Maclaurin term), `class_theory` the method's rate for the smoothness
+// class; `asymptotic_from_n` the N from which the predicted local slope stays within 10% of
+// `theory` (it may exceed the ladder's last N), `asymptotic_slope` the slope fitted over the points
+// from there (empty with fewer than three); `predicted_points` how many cells were judged against
+// the prediction and `worst_prediction_ratio` the judged ratio farthest from 1 (empty when none);
+// `rounding_model` e.g. "float evaluation, pairwise sum". `seconds_per_estimate` is the stable time
+// of one estimate (analysis/cell_timing.hpp: the median over batches of repeated calls of
+// repetition 1's work), `seconds_spread` the batches' (max − min)/median (empty when timed once),
+// `timed_estimates` the calls timed (1 = timed once: the first call already took at least the
+// minimum); `seconds` keeps its meaning, the wall time of the repetitions the statistics come from.
+// Work-precision figures use seconds_per_estimate (seconds/repetitions for a file from before it).
 //
 // Use the readers for compare and tests; they accept added columns and throw naming the file and
 // the column when one of the contract's columns is missing.
