@@ -60,10 +60,9 @@ estimated_share within(estimated_share e, double low, double high) {
 }
 class pick_freeze {
  public:
-  pick_freeze(const any_integrand& f, std::uint64_t seed, std::size_t n)
+  pick_freeze(const any_integrand& f, std::uint64_t seed)
       : f_(f),
         s_(f.dimension()),
-        n_(n),
         a_(seed, stream_id({name_id("effective dimension"), 0})),
         b_(seed, stream_id({name_id("effective dimension"), 1})),
         a_rows_(rows_per_batch * s_),
@@ -117,7 +116,7 @@ class pick_freeze {
   }
 
   const any_integrand& f_;
-  std::size_t s_, n_;
+  std::size_t s_;
   philox_stream a_, b_;
   std::vector<double> a_rows_, b_rows_, x_, y_;
   std::uint64_t evaluations_ = 0;
@@ -140,7 +139,7 @@ std::optional<effective_dimension_estimate> estimate_effective_dimensions(
   const std::size_t n = o.samples;
   if (s < 2) return std::nullopt;
   const double z = normal_quantile(0.5 + 0.5 * o.confidence);
-  pick_freeze sample(f, seed, n);
+  pick_freeze sample(f, seed);
 
   const std::vector<double> fa = sample.values_at(s, n);
   const std::vector<double> fb = sample.values_at(0, n);
