@@ -230,12 +230,32 @@ TEST(RunTest, ConvergenceSlopesMatchTheory) {
   }
 }
 
+// Runs `scene` on 1 and 2 threads and expects the same text in the convergence columns of its
+// `rows` rows. The CSV writes the shortest text that reads back to the same double, so equal
+// text ⇔ equal bits.
+void expect_same_bits_on_one_and_two_threads(const std::string& scene, std::size_t rows) {
+  scratch_folder dir;
+  write_text(dir / "threads.toml", scene);
+  const std::string file = (dir / "threads.toml").string();
+  const command_result one = run_quadmc(dir, {"run", file, "--out", "t1", "--threads", "1"});
+  ASSERT_EQ(one.exit_status, 0) << describe(one);
+  const command_result two = run_quadmc(dir, {"run", file, "--out", "t2", "--threads", "2"});
+  ASSERT_EQ(two.exit_status, 0) << describe(two);
+  EXPECT_NE(one.out.find("on 1 threads"), std::string::npos) << describe(one);
+  EXPECT_NE(two.out.find("on 2 threads"), std::string::npos) << describe(two);
+  for (const std::string column : {"method", "N", "estimate_mean", "rmse", "mean_abs_error"}) {
+    const auto a = csv_column_text(dir / "t1" / "convergence.csv", column);
+    const auto b = csv_column_text(dir / "t2" / "convergence.csv", column);
+    EXPECT_EQ(a.size(), rows) << column;
+    EXPECT_EQ(a, b) << "column " << column << ", 1 vs 2 threads";
+  }
+}
+
 TEST(RunTest, ThreadCountDoesNotChangeResults) {
   // Chunk boundaries depend on the problem only and chunk results are folded in chunk order
-  // (core/parallel_reduce.hpp), so 1 and 2 threads must give bitwise-equal estimates. The CSV
-  // writes the shortest text that reads back to the same double, so equal text ⇔ equal bits.
-  // N up to 65536 so that a cell spans several chunks.
-  const std::string scene = R"(name = "threads"
+  // (core/parallel_reduce.hpp), so 1 and 2 threads must give bitwise-equal estimates. N up to
+  // 65536 so that a cell spans several chunks.
+  expect_same_bits_on_one_and_two_threads(R"(name = "threads"
 seed = 11
 [[integrand]]
 family = "genz_oscillatory"
@@ -252,29 +272,15 @@ name = "trapezoid"
 N = [1000, 65536]
 [output]
 plots = false
-)";
-  scratch_folder dir;
-  write_text(dir / "threads.toml", scene);
-  const std::string file = (dir / "threads.toml").string();
-  const command_result one = run_quadmc(dir, {"run", file, "--out", "t1", "--threads", "1"});
-  ASSERT_EQ(one.exit_status, 0) << describe(one);
-  const command_result two = run_quadmc(dir, {"run", file, "--out", "t2", "--threads", "2"});
-  ASSERT_EQ(two.exit_status, 0) << describe(two);
-  EXPECT_NE(one.out.find("on 1 threads"), std::string::npos) << describe(one);
-  EXPECT_NE(two.out.find("on 2 threads"), std::string::npos) << describe(two);
-  for (const std::string column : {"method", "N", "estimate_mean", "rmse", "mean_abs_error"}) {
-    const auto a = csv_column_text(dir / "t1" / "convergence.csv", column);
-    const auto b = csv_column_text(dir / "t2" / "convergence.csv", column);
-    EXPECT_EQ(a.size(), 6u) << column;  // 3 methods × 2 N
-    EXPECT_EQ(a, b) << "column " << column << ", 1 vs 2 threads";
-  }
+)",
+                                          6);  // 3 methods × 2 N
 }
 
 // The same at s = 1024 (the high_dimension scene's largest s): N = 16384 spans two chunks of
 // 12288 points, each of 1024 coordinates, under scrambled Sobol' and plain Monte Carlo, on the
 // geometric Asian option (its path in stack buffers of s doubles) and a Genz product.
 TEST(RunTest, ThreadCountDoesNotChangeResultsAtS1024) {
-  const std::string scene = R"(name = "wide"
+  expect_same_bits_on_one_and_two_threads(R"(name = "wide"
 seed = 5
 [[integrand]]
 family = "geometric_asian"
@@ -296,20 +302,8 @@ N = [16384]
 [output]
 plots = false
 markdown = false
-)";
-  scratch_folder dir;
-  write_text(dir / "wide.toml", scene);
-  const std::string file = (dir / "wide.toml").string();
-  const command_result one = run_quadmc(dir, {"run", file, "--out", "t1", "--threads", "1"});
-  ASSERT_EQ(one.exit_status, 0) << describe(one);
-  const command_result two = run_quadmc(dir, {"run", file, "--out", "t2", "--threads", "2"});
-  ASSERT_EQ(two.exit_status, 0) << describe(two);
-  for (const std::string column : {"method", "N", "estimate_mean", "rmse", "mean_abs_error"}) {
-    const auto a = csv_column_text(dir / "t1" / "convergence.csv", column);
-    const auto b = csv_column_text(dir / "t2" / "convergence.csv", column);
-    EXPECT_EQ(a.size(), 4u) << column;  // 2 integrands × 2 methods × 1 N
-    EXPECT_EQ(a, b) << "column " << column << ", 1 vs 2 threads";
-  }
+)",
+                                          4);  // 2 integrands × 2 methods × 1 N
 }
 
 TEST(RunTest, PlotsAreWrittenAndLinkedFromReadme) {
