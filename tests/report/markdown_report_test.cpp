@@ -443,12 +443,13 @@ TEST(MarkdownReport, ReferencesThatAreNotExactAreListedBeforeTheTables) {
 
 // Effective dimensions: a row per integrand in s ≥ 2, the numbers where they are exact, the
 // estimates with their intervals and how they were made where they are not, a dash and the
-// reason where neither exists; no section when every integrand is one-dimensional.
+// reason where neither exists (what the integrand threw, its pipe escaped); no section when every
+// integrand is one-dimensional.
 TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
   run_info info;
   info.scene = "dims";
   const auto tables = markdown_sample_tables();
-  info.effective_dimensions = {{"line", 1, 1, std::nullopt, std::nullopt}};
+  info.effective_dimensions = {{"line", 1, 1, std::nullopt, std::nullopt, {}}};
   EXPECT_EQ(render_results_markdown(info, tables).find("## Effective dimensions"),
             std::string::npos);
   effective_dimensions exact;
@@ -472,11 +473,12 @@ TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
   wide.truncation_high = 2;
   wide.first_order.reset();
   wide.mean_dimension.reset();
-  info.effective_dimensions = {{"product", 4, 1, exact, std::nullopt},
-                               {"asian", 16, 3, std::nullopt, additive},
-                               {"undecided", 8, 1, std::nullopt, undecided},
-                               {"wide", 1024, 1, std::nullopt, wide},
-                               {"flat", 2, 1, std::nullopt, std::nullopt}};
+  info.effective_dimensions = {{"product", 4, 1, exact, std::nullopt, {}},
+                               {"asian", 16, 3, std::nullopt, additive, {}},
+                               {"undecided", 8, 1, std::nullopt, undecided, {}},
+                               {"wide", 1024, 1, std::nullopt, wide, {}},
+                               {"flat", 2, 1, std::nullopt, std::nullopt, {}},
+                               {"thrower", 3, 1, std::nullopt, std::nullopt, "f: a | b failed"}};
   const std::string page = render_results_markdown(info, tables);
   const auto section = page.find("## Effective dimensions");
   ASSERT_NE(section, std::string::npos) << page;
@@ -491,7 +493,9 @@ TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
         "50000 evaluations, 95 % intervals; order 1 not estimated (64 rows of s² coordinates "
         "above its budget) |",
         "| flat | 2 | — | — | — | — | not computed: not a product of one-variable factors, and "
-        "its sampled variance is 0 or a sampled value not finite |"}) {
+        "its sampled variance is 0 or a sampled value not finite |",
+        "| thrower | 3 | — | — | — | — | not computed: not a product of one-variable factors, and "
+        "the integrand failed while it was sampled for an estimate: f: a \\| b failed |"}) {
     EXPECT_NE(page.find(row), std::string::npos) << row << "\n" << page;
   }
 }

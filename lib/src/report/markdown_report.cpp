@@ -205,6 +205,11 @@ std::string effective_dimension_section(std::span<const effective_dimension_row>
           "intervals{}{} |\n",
           cell(row.integrand), row.s, truncation, superposition, interval(e.first_coordinate),
           order_one, e.samples, e.evaluations, 100.0 * e.confidence, how, instance);
+    } else if (!row.not_estimated.empty()) {
+      body += fmt::format(
+          "| {} | {} | — | — | — | — | not computed: not a product of one-variable factors, and "
+          "the integrand failed while it was sampled for an estimate: {}{} |\n",
+          cell(row.integrand), row.s, cell(row.not_estimated), instance);
     } else {
       body += fmt::format(
           "| {} | {} | — | — | — | — | not computed: not a product of one-variable factors, and "

@@ -54,16 +54,21 @@ run_info info_of(const scene_results& results, const results_options& options) {
     if (inst.instance != 0) continue;
     const integrand_spec& spec = p.source.integrands[inst.integrand];
     const integrand_info& f = inst.function.info();
-    effective_dimension_row row{spec.name, f.dimension(), spec.ensemble, std::nullopt,
-                                std::nullopt};
+    effective_dimension_row row{spec.name,    f.dimension(), spec.ensemble,
+                                std::nullopt, std::nullopt,  {}};
     if (f.moments) {
       row.exact = exact_effective_dimensions(*f.moments);
     } else if (f.dimension() >= 2 && p.source.output.markdown) {
       // Only the page shows it. Its own stream, named by the scene's seed and the integrand's
       // name: the same numbers whatever else the scene holds, on any thread and rank count (one
-      // thread computes it).
-      row.estimated = estimate_effective_dimensions(inst.function,
-                                                    stream_id({p.source.seed, name_id(spec.name)}));
+      // thread computes it). The run's results are already in memory: an integrand that throws
+      // here (an outside or a Python one) costs the page this row's estimate, not the folder.
+      try {
+        row.estimated = estimate_effective_dimensions(
+            inst.function, stream_id({p.source.seed, name_id(spec.name)}));
+      } catch (const std::exception& e) {
+        row.not_estimated = e.what();
+      }
     }
     info.effective_dimensions.push_back(std::move(row));
   }

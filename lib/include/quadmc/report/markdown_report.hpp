@@ -30,6 +30,7 @@ struct effective_dimension_row {
   // Where there is no exact form: the pick-freeze estimate (effective_dimension_estimate.hpp);
   // nullopt when f's sampled variance is 0 or a value is not finite.
   std::optional<quadmc::effective_dimension_estimate> estimated;
+  std::string not_estimated;  // what f threw while it was estimated; empty otherwise
 };
 
 // What the header of a results page says about the run. Empty strings / NaN are omitted.
