@@ -36,8 +36,8 @@ namespace {
 
 // Cells up to this N carry discrepancy columns: O(N²·s) per repetition (about 5 ms at s = 8 for
 // N = 1024, 16 times that at 4096, which would cost more than the integration itself), and only
-// while N²·s ≤ 2^24 (N = 1024 at s = 16; N = 64 at s = 1024, where N = 1024 would take about a
-// second per repetition on one thread, for a column nobody can read at that s).
+// while N²·s ≤ 2^24 (N = 1024 at s = 16; N ≤ 128 at s = 1024, where N = 1024 would take seconds
+// per repetition on one thread, for a column nobody can read at that s).
 constexpr std::uint64_t discrepancy_max_points = 1024;
 constexpr std::uint64_t discrepancy_max_pair_coordinates = std::uint64_t{1} << 24;
 
