@@ -5,6 +5,7 @@
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/core/welford.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/functions/geometric_asian.hpp"
 #include "test_integrands.hpp"
@@ -286,20 +287,17 @@ TEST(PointSetCatalogue, ScrambledSobolAgreesWithTheGeometricAsianClosedForm) {
   const point_set_entry* sobol = find_point_set("sobol");
   ASSERT_NE(sobol, nullptr);
   constexpr std::size_t replicates = 16;
-  std::vector<double> values;
+  welford estimates;
   for (std::size_t r = 0; r < replicates; ++r) {
-    values.push_back(sobol->monte_carlo(f, {20261205, r}, std::uint64_t{1} << 18, 2).value);
+    estimates.add(sobol->monte_carlo(f, {20261205, r}, std::uint64_t{1} << 18, 2).value);
   }
-  double mean = 0.0, squares = 0.0;
-  for (const double v : values) mean += v / replicates;
-  for (const double v : values) squares += (v - mean) * (v - mean);
-  const double sd = std::sqrt(squares / (replicates - 1));
   const double t = boost::math::quantile(
       boost::math::complement(boost::math::students_t_distribution<double>(replicates - 1), 5e-5));
-  const double bound = t * sd / std::sqrt(static_cast<double>(replicates));
+  const double bound = t * estimates.std_error();  // t·sd/√16
   const double exact = geometric_asian::exact_value(4, p);
-  EXPECT_LE(std::abs(mean - exact), bound) << "mean " << mean << ", closed form " << exact;
-  EXPECT_LT(bound, 1e-4 * exact) << "sd " << sd;
+  EXPECT_LE(std::abs(estimates.mean() - exact), bound)
+      << "mean " << estimates.mean() << ", closed form " << exact;
+  EXPECT_LT(bound, 1e-4 * exact) << "sd " << std::sqrt(estimates.variance());
 }
 
 }  // namespace

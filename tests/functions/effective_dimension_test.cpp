@@ -296,6 +296,9 @@ TEST(EffectiveDimensionEstimate, CoversTheExactSharesOfAProductFamily) {
   covers(*e->mean_dimension, mean_dimension, "mean dimension");
   EXPECT_LE(e->truncation_low, exact->truncation);
   EXPECT_GE(e->truncation_high, exact->truncation);
+  // d_S's range, from the order-1 interval, holds the exact d_S.
+  EXPECT_LE(e->superposition_low, exact->superposition);
+  EXPECT_TRUE(e->superposition_high == 0 || e->superposition_high >= exact->superposition);
   // A case where neither answer is trivial: d_T inside (1, s), order 1 below 99 %.
   EXPECT_GT(exact->truncation, 1U);
   EXPECT_LT(exact->truncation, 6U);

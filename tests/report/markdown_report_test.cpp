@@ -467,12 +467,16 @@ TEST(MarkdownReport, EffectiveDimensionsStandBeforeTheSlopes) {
   additive.first_order = estimated_share{0.995, 0.991, 0.998};
   additive.mean_dimension = estimated_share{1.01, 1.005, 1.015};
   additive.first_order_samples = 1024;
+  additive.superposition_low = 1;
+  additive.superposition_high = 1;
   effective_dimension_estimate undecided = additive;
   undecided.first_order = estimated_share{0.99, 0.985, 0.995};
+  undecided.superposition_high = 0;
   effective_dimension_estimate wide = additive;
   wide.truncation_high = 2;
   wide.first_order.reset();
   wide.mean_dimension.reset();
+  wide.superposition_low = wide.superposition_high = 0;
   info.effective_dimensions = {{"product", 4, 1, exact, std::nullopt, {}},
                                {"asian", 16, 3, std::nullopt, additive, {}},
                                {"undecided", 8, 1, std::nullopt, undecided, {}},

@@ -209,6 +209,8 @@ std::optional<effective_dimension_estimate> estimate_effective_dimensions(
     out.first_order = within(ratio(first, w_rows, z), 0.0, 1.0);
     out.mean_dimension = within(ratio(total, w_rows, z), 1.0, static_cast<double>(s));
     out.first_order_samples = rows;
+    out.superposition_low = out.first_order->high < q ? 2 : 1;
+    out.superposition_high = out.first_order->low >= q ? 1 : 0;
   }
   if (!finite) return std::nullopt;
   out.evaluations = sample.evaluations();

@@ -190,10 +190,9 @@ std::string effective_dimension_section(std::span<const effective_dimension_row>
               : fmt::format("{} [{}, {}]", e.truncation, e.truncation_low, e.truncation_high);
       std::string superposition = "—", order_one = "—", how;
       if (e.first_order) {
-        const double q = e.share - 1e-12;
-        superposition = e.first_order->low >= q   ? "1"
-                        : e.first_order->high < q ? "≥ 2"
-                                                  : "1 or ≥ 2";
+        superposition = e.superposition_high == 1  ? "1"
+                        : e.superposition_low == 2 ? "≥ 2"
+                                                   : "1 or ≥ 2";
         order_one = interval(*e.first_order);
         how = fmt::format("; mean dimension {}, order 1 from the first {} rows",
                           interval(*e.mean_dimension), e.first_order_samples);

@@ -61,6 +61,11 @@ struct effective_dimension_estimate {
   std::optional<estimated_share> first_order;     // Σⱼ Sⱼ
   std::optional<estimated_share> mean_dimension;  // Σⱼ Tⱼ
   std::size_t first_order_samples = 0;            // n'
+  // d_S ∈ [superposition_low, superposition_high] as the share of order 1 decides it: [1, 1]
+  // where its interval lies above q, [2, 0] where below, [1, 0] where it holds q (0: no upper
+  // bound known); [0, 0] where it was not estimated.
+  std::size_t superposition_low = 0;
+  std::size_t superposition_high = 0;
 };
 
 // nullopt for s < 2, or when f's estimated variance is 0 or not finite; throws invalid_argument
