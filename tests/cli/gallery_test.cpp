@@ -145,8 +145,8 @@ TEST_F(GalleryCommand, SameSeedGivesTheSameNumbersOnAnyThreadCountAndReplacesIts
   EXPECT_NE(read_text(*dir_ / "g2" / "scatter.csv"), read_text(*dir_ / "g" / "scatter.csv"));
 }
 
-void expect_one_line_error(const std::vector<std::string>& args, int status,
-                           const std::string& names) {
+void expect_gallery_error(const std::vector<std::string>& args, int status,
+                          const std::string& names) {
   scratch_folder dir;
   write_text(dir / "mine.txt", "keep me");
   fs::create_directory(dir / "notes");
@@ -161,21 +161,21 @@ void expect_one_line_error(const std::vector<std::string>& args, int status,
 }
 
 TEST(GalleryErrors, BadArgumentsGetOneLine) {
-  expect_one_line_error({"gallery", "--realizations", "1"}, 2, "--realizations");
-  expect_one_line_error({"gallery", "--realizations", "many"}, 2, "--realizations");
-  expect_one_line_error({"gallery", "--realizations", "100001"}, 2, "--realizations");
-  expect_one_line_error(
+  expect_gallery_error({"gallery", "--realizations", "1"}, 2, "--realizations");
+  expect_gallery_error({"gallery", "--realizations", "many"}, 2, "--realizations");
+  expect_gallery_error({"gallery", "--realizations", "100001"}, 2, "--realizations");
+  expect_gallery_error(
       {"gallery", "--seed", "-3"}, 2,
       "--seed: expected an integer K with 0 ≤ K ≤ 2^64 − 1 = 18446744073709551615, got -3");
-  expect_one_line_error({"gallery", "--threads", "5000"}, 2, "--threads");
-  expect_one_line_error({"gallery", "extra"}, 2, "extra");
-  expect_one_line_error({"gallery", "--out"}, 2, "--out");
+  expect_gallery_error({"gallery", "--threads", "5000"}, 2, "--threads");
+  expect_gallery_error({"gallery", "extra"}, 2, "extra");
+  expect_gallery_error({"gallery", "--out"}, 2, "--out");
 }
 
 TEST(GalleryErrors, RefusesAFolderThatIsNotItsOwn) {
   // A folder with somebody's file in it is not replaced, before anything is computed.
-  expect_one_line_error({"gallery", "--out", "notes", "--realizations", "2"}, 1,
-                        "--out 'notes': not a results folder: it holds 'todo.txt'");
+  expect_gallery_error({"gallery", "--out", "notes", "--realizations", "2"}, 1,
+                       "--out 'notes': not a results folder: it holds 'todo.txt'");
   // A `run` results folder is not the gallery's either (convergence.csv is not a gallery file).
   scratch_folder dir;
   fs::create_directory(dir / "r");

@@ -44,8 +44,8 @@ TEST(PointsCommand, SameSeedSameBytesOtherSeedOtherPointsAndOutFile) {
   EXPECT_EQ(read_text(dir / "points.csv"), a.out);
 }
 
-void expect_one_line_error(const std::vector<std::string>& args, const std::string& names,
-                           const std::string& also) {
+void expect_points_error(const std::vector<std::string>& args, const std::string& names,
+                         const std::string& also) {
   scratch_folder dir;
   const command_result r = run_quadmc(dir, args);
   EXPECT_EQ(r.exit_status, 1) << describe(r);
@@ -123,30 +123,29 @@ TEST(PointsCommand, BlamesTheOptionThatIsWrong) {
 }
 
 TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
-  expect_one_line_error({"points", "sobol", "--n", "1000", "--s", "2", "--seed", "1"}, "--n",
-                        "nearest valid sizes 512 and 1024");
-  expect_one_line_error({"points", "lattice", "--n", "3000", "--s", "2", "--seed", "1"}, "--n",
-                        "2048 and 4096");
-  expect_one_line_error(
+  expect_points_error({"points", "sobol", "--n", "1000", "--s", "2", "--seed", "1"}, "--n",
+                      "nearest valid sizes 512 and 1024");
+  expect_points_error({"points", "lattice", "--n", "3000", "--s", "2", "--seed", "1"}, "--n",
+                      "2048 and 4096");
+  expect_points_error(
       {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--randomization", "lms_shift"},
       "--randomization", "owen, permutation, none");
-  expect_one_line_error({"points", "niederreiter", "--n", "8", "--s", "2", "--seed", "1"},
-                        "point set", "sobol");
+  expect_points_error({"points", "niederreiter", "--n", "8", "--s", "2", "--seed", "1"},
+                      "point set", "sobol");
   // The dimension is what is wrong here, so --s is named (it was --n).
-  expect_one_line_error({"points", "sobol", "--n", "8", "--s", "3668", "--seed", "1"}, "--s",
-                        "s ≤ 3667");
-  expect_one_line_error(
+  expect_points_error({"points", "sobol", "--n", "8", "--s", "3668", "--seed", "1"}, "--s",
+                      "s ≤ 3667");
+  expect_points_error(
       {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "baker"},
       "--periodization", "no periodization for halton (lattice only)");
   // A key the set lacks names the sets that have it, for values and flags alike.
-  expect_one_line_error(
+  expect_points_error(
       {"points", "jittered", "--n", "8", "--s", "3", "--seed", "1", "--randomization", "owen"},
       "invalid --randomization = owen",
       "no randomization for jittered (sobol, halton, lattice only)");
-  expect_one_line_error(
-      {"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--allow-any-n"},
-      "invalid --allow-any-n = true", "no allow_any_n for halton (sobol only)");
-  expect_one_line_error(
+  expect_points_error({"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--allow-any-n"},
+                      "invalid --allow-any-n = true", "no allow_any_n for halton (sobol only)");
+  expect_points_error(
       {"points", "lattice", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "tent"},
       "--periodization", "one of none, baker for lattice");
 }

@@ -155,8 +155,8 @@ TEST(RenderCommandWithoutImages, WritesTheTablesOnly) {
                                           "slopes.csv"}));
 }
 
-void expect_one_line_error(const std::vector<std::string>& args, int status,
-                           const std::string& names, const std::string& scene = scene_text(false)) {
+void expect_render_error(const std::vector<std::string>& args, int status, const std::string& names,
+                         const std::string& scene = scene_text(false)) {
   scratch_folder dir;
   write_text(dir / "s.toml", scene);
   fs::create_directory(dir / "notes");
@@ -171,14 +171,14 @@ void expect_one_line_error(const std::vector<std::string>& args, int status,
 }
 
 TEST(RenderErrors, BadArgumentsGetOneLine) {
-  expect_one_line_error({"render"}, 2, "scene");
-  expect_one_line_error(
+  expect_render_error({"render"}, 2, "scene");
+  expect_render_error(
       {"render", "s.toml", "--seed", "-3"}, 2,
       "--seed: expected an integer K with 0 ≤ K ≤ 2^64 − 1 = 18446744073709551615, got -3");
-  expect_one_line_error({"render", "s.toml", "--threads", "5000"}, 2, "--threads");
-  expect_one_line_error({"render", "s.toml", "extra"}, 2, "extra");
-  expect_one_line_error({"render", "s.toml", "--out"}, 2, "--out");
-  expect_one_line_error({"render", "missing.toml"}, 1, "missing.toml:0:0: cannot open");
+  expect_render_error({"render", "s.toml", "--threads", "5000"}, 2, "--threads");
+  expect_render_error({"render", "s.toml", "extra"}, 2, "extra");
+  expect_render_error({"render", "s.toml", "--out"}, 2, "--out");
+  expect_render_error({"render", "missing.toml"}, 1, "missing.toml:0:0: cannot open");
 }
 
 TEST(RenderErrors, BadScenesGetOneLineNamingTheKey) {
@@ -188,36 +188,36 @@ TEST(RenderErrors, BadScenesGetOneLineNamingTheKey) {
     return s;
   };
   const std::vector<std::string> args{"render", "s.toml"};
-  expect_one_line_error(args, 1, "s.toml:2:1: key 'seeds': unknown key in a render scene",
-                        with("seed = 5", "seeds = 5"));
-  expect_one_line_error(args, 1, "key 'spp[2]': spp must increase, got 1 after 4",
-                        with("spp = [1, 4, 16]", "spp = [4, 1]"));
-  expect_one_line_error(args, 1,
-                        "key 'spp': the jittered points cannot hold 2 samples per pixel in 2D",
-                        with("spp = [1, 4, 16]", "spp = [1, 2]"));
-  expect_one_line_error(args, 1, "key 'point_sets[1]': expected a point set",
-                        with("\"independent\", ", "\"random\", "));
-  expect_one_line_error(args, 1, "key 'width': expected a width between 1 and 4096 pixels, got 0",
-                        with("width = 16", "width = 0"));
-  expect_one_line_error(args, 1, "key 'region': expected [x_min, y_min, x_max, y_max]",
-                        with("[-0.55, -0.6, 0.15, 0.1]", "[1, 0, 0, 1]"));
+  expect_render_error(args, 1, "s.toml:2:1: key 'seeds': unknown key in a render scene",
+                      with("seed = 5", "seeds = 5"));
+  expect_render_error(args, 1, "key 'spp[2]': spp must increase, got 1 after 4",
+                      with("spp = [1, 4, 16]", "spp = [4, 1]"));
+  expect_render_error(args, 1,
+                      "key 'spp': the jittered points cannot hold 2 samples per pixel in 2D",
+                      with("spp = [1, 4, 16]", "spp = [1, 2]"));
+  expect_render_error(args, 1, "key 'point_sets[1]': expected a point set",
+                      with("\"independent\", ", "\"random\", "));
+  expect_render_error(args, 1, "key 'width': expected a width between 1 and 4096 pixels, got 0",
+                      with("width = 16", "width = 0"));
+  expect_render_error(args, 1, "key 'region': expected [x_min, y_min, x_max, y_max]",
+                      with("[-0.55, -0.6, 0.15, 0.1]", "[1, 0, 0, 1]"));
   // Regression: a region this far out squared distances past DBL_MAX, and the render exited 0
   // with rmse = nan for every estimator.
-  expect_one_line_error(args, 1,
-                        "key 'region': ", with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
-  expect_one_line_error(args, 1, "|x| ≤ 1e100",
-                        with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
-  expect_one_line_error(
+  expect_render_error(args, 1,
+                      "key 'region': ", with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
+  expect_render_error(args, 1, "|x| ≤ 1e100",
+                      with("[-0.55, -0.6, 0.15, 0.1]", "[0, 0, 1e155, 1e155]"));
+  expect_render_error(
       args, 1, "key 'occluder_height': ", with("occluder_height = 0.15", "occluder_height = 1.5"));
-  expect_one_line_error(args, 1, "key 'images': expected true or false, got \"yes\"",
-                        with("images = false", "images = \"yes\""));
-  expect_one_line_error(args, 1,
-                        "key 'light_sampling.samples': ", with("samples = 4", "samples = 5"));
+  expect_render_error(args, 1, "key 'images': expected true or false, got \"yes\"",
+                      with("images = false", "images = \"yes\""));
+  expect_render_error(args, 1,
+                      "key 'light_sampling.samples': ", with("samples = 4", "samples = 5"));
 }
 
 TEST(RenderErrors, RefusesAFolderThatIsNotItsOwn) {
-  expect_one_line_error({"render", "s.toml", "--out", "notes"}, 1,
-                        "--out 'notes': not a results folder: it holds 'todo.txt'");
+  expect_render_error({"render", "s.toml", "--out", "notes"}, 1,
+                      "--out 'notes': not a results folder: it holds 'todo.txt'");
   // A `run` results folder is not the render's either (convergence.csv is not a render file).
   scratch_folder dir;
   write_text(dir / "s.toml", scene_text(false));

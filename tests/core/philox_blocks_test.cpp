@@ -3,6 +3,7 @@
 // instruction-set level this CPU has (core/simd_level.hpp), for any start and length.
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
+#include "support/simd_level_guard.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,16 +34,7 @@ double reference_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t
 }
 
 // Restores the process-wide level when a test ends.
-class simd_level_guard {
- public:
-  simd_level_guard() : saved_(quadmc::active_simd_level()) {}
-  ~simd_level_guard() { quadmc::set_simd_level(saved_); }
-  simd_level_guard(const simd_level_guard&) = delete;
-  simd_level_guard& operator=(const simd_level_guard&) = delete;
-
- private:
-  quadmc::simd_level saved_;
-};
+using quadmc::test_support::simd_level_guard;
 
 TEST(PhiloxBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
   const simd_level_guard guard;

@@ -14,7 +14,7 @@ namespace {
 
 using namespace quadmc;
 
-const auto square = test_support::make_integrand(
+const auto square_on_unit_interval = test_support::make_integrand(
     "x^2", box::unit(1), 1.0 / 3.0, [](std::span<const double> x) { return x[0] * x[0]; });
 
 // μᵢ and σᵢ² of f(x) = x² on the stratum [a, a + h), in closed form:
@@ -66,10 +66,10 @@ TEST(StratifiedSampling, MeasuredVariancesMatchTheBlogsFormulas) {
 
     welford strat, random, reported;
     for (int r = 0; r < runs; ++r) {
-      const estimate e = stratified_sampling(square, k, m, 7, r);
+      const estimate e = stratified_sampling(square_on_unit_interval, k, m, 7, r);
       strat.add(e.value);
       reported.add(e.std_error * e.std_error);
-      random.add(monte_carlo(square, independent_points(1, k * m, 8, r)).value);
+      random.add(monte_carlo(square_on_unit_interval, independent_points(1, k * m, 8, r)).value);
     }
     std::cout << "[ measured ] k = " << k << ", m = " << m
               << ": Var strat / Var random = " << strat.variance() / random.variance()
@@ -90,9 +90,9 @@ TEST(StratifiedSampling, MeasuredVariancesMatchTheBlogsFormulas) {
 }
 
 TEST(StratifiedSampling, RejectsZeroPointsPerStratumAndOverflow) {
-  EXPECT_THROW(stratified_sampling(square, 4, 0, 1, 1), invalid_argument);
-  EXPECT_THROW(stratified_sampling(square, 0, 4, 1, 1), invalid_argument);
-  EXPECT_THROW(stratified_sampling(square, 1ULL << 54, 1, 1, 1), invalid_argument);
+  EXPECT_THROW(stratified_sampling(square_on_unit_interval, 4, 0, 1, 1), invalid_argument);
+  EXPECT_THROW(stratified_sampling(square_on_unit_interval, 0, 4, 1, 1), invalid_argument);
+  EXPECT_THROW(stratified_sampling(square_on_unit_interval, 1ULL << 54, 1, 1, 1), invalid_argument);
 }
 
 }  // namespace

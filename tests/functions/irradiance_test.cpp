@@ -4,6 +4,7 @@
 
 #include "quadmc/core/rng.hpp"
 #include "reference_quadrature.hpp"
+#include "support/invalid_argument_message.hpp"
 
 #include <gtest/gtest.h>
 
@@ -98,7 +99,7 @@ irradiance_setup side_setup(bool with_occluder) {
 
 // 1e-10 is the bar of docs/design.md#accuracy-targets: with every jump on a breakpoint, nested
 // Gauss–Kronrod reaches ~1e-15 (measured errors are printed).
-constexpr double tolerance = 1e-10;
+constexpr double irradiance_tolerance = 1e-10;
 
 TEST(Irradiance, LambertAgreesWithBothFormsIntegratedNumerically) {
   for (int scene = 0; scene < 2; ++scene) {
@@ -114,9 +115,9 @@ TEST(Irradiance, LambertAgreesWithBothFormsIntegratedNumerically) {
           "irradiance scene %d occluder %d: exact %.15g, hemisphere relative error vs "
           "independent integration %.2e, area %.2e\n",
           scene, occluded ? 1 : 0, exact, e_h, e_a);
-      EXPECT_LT(e_h, tolerance) << "scene " << scene << " occluder " << occluded;
-      EXPECT_LT(e_a, tolerance) << "scene " << scene << " occluder " << occluded;
-      EXPECT_LT(relative_error(hemisphere, area), 2 * tolerance);
+      EXPECT_LT(e_h, irradiance_tolerance) << "scene " << scene << " occluder " << occluded;
+      EXPECT_LT(e_a, irradiance_tolerance) << "scene " << scene << " occluder " << occluded;
+      EXPECT_LT(relative_error(hemisphere, area), 2 * irradiance_tolerance);
       EXPECT_EQ(irradiance_hemisphere(setup).info().exact, exact);
       EXPECT_EQ(irradiance_area(setup).info().exact, exact);
     }
@@ -146,7 +147,7 @@ TEST(Irradiance, ShadowInsideMissingOrCoveringTheLight) {
   ASSERT_EQ(occluder_shadow(s).size(), 4u);
   const double inside = irradiance_exact(s);
   EXPECT_LT(inside, bare);
-  EXPECT_LT(relative_error(inside, area_reference(s)), tolerance);
+  EXPECT_LT(relative_error(inside, area_reference(s)), irradiance_tolerance);
   // Shadow missing the light: the occluder changes nothing.
   s.occluder = rectangle{{2.0, 2.0, 0.5}, {0.0, 0.1, 0.0}, {0.1, 0.0, 0.0}};
   EXPECT_TRUE(occluder_shadow(s).empty());
@@ -191,54 +192,49 @@ TEST(Irradiance, SmoothnessAndNames) {
   EXPECT_EQ(irradiance_area(default_irradiance_setup(false)).info().name, "irradiance_area");
 }
 
-std::string message_of(const irradiance_setup& s) {
-  try {
-    validate(s);
-  } catch (const invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
+std::string validation_message(const irradiance_setup& s) {
+  return test_support::message_of([&] { validate(s); });
 }
 
 TEST(Irradiance, BadSetupsAreRejectedWithTheFieldNamed) {
   irradiance_setup s = default_irradiance_setup(true);
-  EXPECT_EQ(message_of(s), "no exception");
+  EXPECT_EQ(validation_message(s), "no exception");
 
   irradiance_setup away = s;
   std::swap(away.light.edge_u, away.light.edge_v);  // normal now points up, away from x
-  EXPECT_NE(message_of(away).find("invalid light"), std::string::npos);
-  EXPECT_NE(message_of(away).find("facing x"), std::string::npos);
+  EXPECT_NE(validation_message(away).find("invalid light"), std::string::npos);
+  EXPECT_NE(validation_message(away).find("facing x"), std::string::npos);
 
   irradiance_setup degenerate = s;
   degenerate.light.edge_v = {0.0, 0.0, 0.0};
-  EXPECT_NE(message_of(degenerate).find("non-degenerate"), std::string::npos);
+  EXPECT_NE(validation_message(degenerate).find("non-degenerate"), std::string::npos);
 
   irradiance_setup skew = s;
   skew.light.edge_v = {1.0, 0.5, 0.0};
-  EXPECT_NE(message_of(skew).find("perpendicular"), std::string::npos);
+  EXPECT_NE(validation_message(skew).find("perpendicular"), std::string::npos);
 
   irradiance_setup dark = s;
   dark.radiance = 0.0;
-  EXPECT_NE(message_of(dark).find("invalid radiance = 0"), std::string::npos);
+  EXPECT_NE(validation_message(dark).find("invalid radiance = 0"), std::string::npos);
   dark.radiance = -1.0;
-  EXPECT_NE(message_of(dark).find("invalid radiance = -1"), std::string::npos);
+  EXPECT_NE(validation_message(dark).find("invalid radiance = -1"), std::string::npos);
 
   irradiance_setup bad_n = s;
   bad_n.n = {0.0, 0.0, 2.0};
-  EXPECT_NE(message_of(bad_n).find("invalid n"), std::string::npos);
+  EXPECT_NE(validation_message(bad_n).find("invalid n"), std::string::npos);
 
   irradiance_setup horizon = s;
   horizon.n = {1.0, 0.0, 0.0};  // half the light is behind the tangent plane
-  EXPECT_NE(message_of(horizon).find("tangent plane"), std::string::npos);
+  EXPECT_NE(validation_message(horizon).find("tangent plane"), std::string::npos);
 
   irradiance_setup above = s;
   above.occluder->corner.z = 1.5;  // beyond the light
-  EXPECT_NE(message_of(above).find("invalid occluder"), std::string::npos);
-  EXPECT_NE(message_of(above).find("strictly between"), std::string::npos);
+  EXPECT_NE(validation_message(above).find("invalid occluder"), std::string::npos);
+  EXPECT_NE(validation_message(above).find("strictly between"), std::string::npos);
 
   irradiance_setup below = s;
   below.occluder->corner.z = -0.5;  // behind x
-  EXPECT_NE(message_of(below).find("invalid occluder"), std::string::npos);
+  EXPECT_NE(validation_message(below).find("invalid occluder"), std::string::npos);
 
   EXPECT_THROW(irradiance_hemisphere{away}, invalid_argument);
   EXPECT_THROW(irradiance_area{dark}, invalid_argument);

@@ -2,6 +2,7 @@
 // spends it, exactness, its estimate and Σ|w|, and its bad-input errors.
 #include "quadmc/rules/dimension_adaptive_sparse_grid.hpp"
 
+#include "clenshaw_curtis_table.hpp"
 #include "quadmc/rules/smolyak_grid.hpp"
 #include "support/floating_point.hpp"
 #include "throws_with.hpp"
@@ -19,9 +20,7 @@ using namespace quadmc;
 
 using quadmc::test_support::eps;
 
-const nested_rule& cc() {
-  return nested_rule_table(nested_rule_kind::clenshaw_curtis);
-}
+using quadmc::testing::cc;
 
 // exp(Σ c_j x_j) on [0, 1]^s: ∫ = Π (e^(c_j) − 1)/c_j (c_j = 0: 1), and counts its points.
 struct exponential {

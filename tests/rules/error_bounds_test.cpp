@@ -197,7 +197,7 @@ TEST(ErrorBounds, GaussConstantReducesToMidpoint) {
 }
 
 // exp(x₁ + … + x_s) on [0, 1]^s: ∂ᵏ/∂x_jᵏ f = f ≤ e^s on the box, so M_k = e^s on every axis.
-struct exp_of_sum {
+struct exp_of_sum_on_unit_cube {
   std::size_t s;
   std::size_t dimension() const { return s; }
   void evaluate(std::span<const double> x, std::span<double> y) const {
@@ -318,7 +318,7 @@ TEST(ErrorBounds, TensorBoundOverErrorForExpOfSumLiesInTheDerivedInterval) {
   const double e = std::numbers::e;
   const double e1 = std::expm1(1.0);
   for (std::size_t s : {2U, 3U}) {
-    const exp_of_sum f{s};
+    const exp_of_sum_on_unit_cube f{s};
     const auto info = f.info();
     const auto check = [&](const auto& rule, double panel_width_in_nodes, std::uint64_t n) {
       const double q =
@@ -404,7 +404,7 @@ TEST(ErrorBounds, RejectBadInput) {
       },
       "invalid b = inf: expected a finite number"));
   // M_k not recorded in the metadata.
-  quadmc::integrand_info info = exp_of_sum{2}.info();
+  quadmc::integrand_info info = exp_of_sum_on_unit_cube{2}.info();
   info.derivative_bound[4].reset();
   EXPECT_TRUE(throws_with<invalid_argument>(
       [&] { (void)quadmc::tensor_product_error_bound(quadmc::simpson_rule{}, info, 4); },

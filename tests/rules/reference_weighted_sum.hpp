@@ -27,6 +27,10 @@
 
 namespace quadmc::testing {
 
+// The four accumulators the kernel offers, for the tests that compare each with the reference.
+inline constexpr summation all_accumulators[] = {summation::pairwise, summation::neumaier,
+                                                 summation::naive, summation::long_double};
+
 // point_at(p, t, w) writes the unit-cube node of point p into t (s values) and its weight into w.
 template <class F, class PointAt>
 double reference_weighted_sum(const F& f, std::uint64_t total, const PointAt& point_at,

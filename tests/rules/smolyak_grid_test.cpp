@@ -6,6 +6,7 @@
 // rounding floor it implies.
 #include "quadmc/rules/smolyak_grid.hpp"
 
+#include "clenshaw_curtis_table.hpp"
 #include "quadmc/rules/weighted_sum.hpp"
 #include "support/floating_point.hpp"
 #include "throws_with.hpp"
@@ -31,9 +32,7 @@ using namespace quadmc;
 
 using quadmc::test_support::eps;
 
-const nested_rule& cc() {
-  return nested_rule_table(nested_rule_kind::clenshaw_curtis);
-}
+using quadmc::testing::cc;
 
 struct grid_points {
   std::vector<double> x;

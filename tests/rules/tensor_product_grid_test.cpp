@@ -74,8 +74,7 @@ box shifted_box(std::size_t s) {
   return b;
 }
 
-constexpr summation all_accumulators[] = {summation::pairwise, summation::neumaier,
-                                          summation::naive, summation::long_double};
+using quadmc::testing::all_accumulators;
 
 // integrate(f, rule, n, threads, accumulate) against reference_weighted_sum over the grid's
 // points from tensor_point, for every accumulator and 1, 2, 3, 8 threads. Cases with more than

@@ -11,6 +11,7 @@
 #include "quadmc/rules/tensor_product_grid.hpp"
 #include "quadmc/rules/trapezoid_rule.hpp"
 #include "support/floating_point.hpp"
+#include "support/simd_level_guard.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,16 +23,7 @@ namespace {
 
 using namespace quadmc;
 
-class simd_level_guard {
- public:
-  simd_level_guard() : saved_(active_simd_level()) {}
-  ~simd_level_guard() { set_simd_level(saved_); }
-  simd_level_guard(const simd_level_guard&) = delete;
-  simd_level_guard& operator=(const simd_level_guard&) = delete;
-
- private:
-  simd_level saved_;
-};
+using quadmc::test_support::simd_level_guard;
 
 using quadmc::test_support::bits;
 

@@ -4,6 +4,7 @@
 #include "quadmc/core/simd_level.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/rules/weighted_sum.hpp"
+#include "support/simd_level_guard.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,16 +18,7 @@ namespace {
 
 using namespace quadmc;
 
-class simd_level_guard {
- public:
-  simd_level_guard() : saved_(active_simd_level()) {}
-  ~simd_level_guard() { set_simd_level(saved_); }
-  simd_level_guard(const simd_level_guard&) = delete;
-  simd_level_guard& operator=(const simd_level_guard&) = delete;
-
- private:
-  simd_level saved_;
-};
+using quadmc::test_support::simd_level_guard;
 
 // Values of both signs over ten binades with full 53-bit mantissas, from a fixed 64-bit LCG
 // (Knuth's MMIX constants): their products are inexact, so a fused multiply-add or a changed

@@ -35,8 +35,7 @@ using quadmc::testing::fibonacci_lattice;
 
 using quadmc::test_support::eps;
 constexpr double pi = std::numbers::pi;
-constexpr summation all_accumulators[] = {summation::pairwise, summation::neumaier,
-                                          summation::naive, summation::long_double};
+using quadmc::testing::all_accumulators;
 
 using quadmc::test_support::bits;
 

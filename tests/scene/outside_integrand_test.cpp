@@ -80,7 +80,7 @@ constexpr std::string_view scene_head = R"(name = "outside"
 family = "outside_gaussian"
 )";
 
-plan plan_of(const std::string& text) {
+plan outside_plan_of(const std::string& text) {
   add_outside_once();
   return make_plan(parse_scene(text, "outside.toml"));
 }
@@ -114,7 +114,7 @@ TEST(OutsideIntegrand, WithoutAnExactValueTheSceneMustGiveAReference) {
   const std::string text =
       std::string(scene_head) + "[[method]]\nname = \"simpson\"\n[budget]\nN = [64]\n";
   try {
-    (void)plan_of(text);
+    (void)outside_plan_of(text);
     FAIL() << "a family without an exact value was planned without a reference";
   } catch (const scene_error& e) {
     const std::string m = e.what();
@@ -125,9 +125,9 @@ TEST(OutsideIntegrand, WithoutAnExactValueTheSceneMustGiveAReference) {
 }
 
 TEST(OutsideIntegrand, AComputedReferenceAgreesWithTheClosedFormAndMeasuresTheErrors) {
-  const plan p = plan_of(std::string(scene_head) +
-                         "reference = \"computed\"\n[[method]]\nname = \"simpson\"\n"
-                         "[budget]\nN = [64, 1024]\ntiming_min_seconds = 0\n");
+  const plan p = outside_plan_of(std::string(scene_head) +
+                                 "reference = \"computed\"\n[[method]]\nname = \"simpson\"\n"
+                                 "[budget]\nN = [64, 1024]\ntiming_min_seconds = 0\n");
   ASSERT_EQ(p.references.size(), 1u);
   const plan_reference& ref = p.references[0];
   EXPECT_EQ(ref.source, reference_source::computed);
@@ -148,11 +148,11 @@ TEST(OutsideIntegrand, AComputedReferenceAgreesWithTheClosedFormAndMeasuresTheEr
 
 // tolerance_kind = "relative" asks for tolerance·|I|: with no exact value, I is the reference.
 TEST(OutsideIntegrand, ARelativeToleranceIsAFractionOfTheGivenReference) {
-  const plan p = plan_of(std::string(scene_head) +
-                         "reference = 0.6036012066722646\nreference_uncertainty = 1e-15\n"
-                         "[[method]]\nname = \"genz_malik\"\ncontrol = \"tolerance\"\n"
-                         "tolerance_kind = \"relative\"\ntolerances = [1e-3, 1e-6]\n"
-                         "[budget]\nN = [100000]\ntiming_min_seconds = 0\n");
+  const plan p = outside_plan_of(std::string(scene_head) +
+                                 "reference = 0.6036012066722646\nreference_uncertainty = 1e-15\n"
+                                 "[[method]]\nname = \"genz_malik\"\ncontrol = \"tolerance\"\n"
+                                 "tolerance_kind = \"relative\"\ntolerances = [1e-3, 1e-6]\n"
+                                 "[budget]\nN = [100000]\ntiming_min_seconds = 0\n");
   const run_output out = run_plan(p);
   ASSERT_EQ(out.series.size(), 1u);
   ASSERT_EQ(out.series[0].cells.size(), 2u);
