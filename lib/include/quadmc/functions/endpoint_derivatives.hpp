@@ -84,6 +84,9 @@ std::optional<endpoint_factor> factor_of(AtLower&& at_lower, AtUpper&& at_upper,
   endpoint_factor f;
   f.integral = integral;
   const double w = upper - lower;
+  // Sized once: an ensemble's plan builds these for every axis of every instance (2^20 at most).
+  f.at_lower.reserve(endpoint_derivative_count);
+  f.at_upper.reserve(endpoint_derivative_count);
   double power = 1.0;
   for (std::size_t k = 0; k < endpoint_derivative_count; ++k, power *= w) {
     const std::complex<double> a = power * std::complex<double>(at_lower(k));
@@ -124,6 +127,7 @@ inline std::optional<separable_derivatives> product_of(
     std::complex<double> scale, std::vector<std::optional<endpoint_factor>> factors) {
   separable_derivatives out;
   out.scale = scale;
+  out.factors.reserve(factors.size());
   for (auto& f : factors) {
     if (!f) return std::nullopt;
     out.factors.push_back(std::move(*f));
