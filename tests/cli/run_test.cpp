@@ -293,10 +293,10 @@ dimension = 1024
 [[method]]
 name = "sobol"
 randomization = "lms_shift"
-repetitions = 2
+repetitions = 1
 [[method]]
 name = "plain_mc"
-repetitions = 2
+repetitions = 1
 [budget]
 N = [16384]
 [output]
