@@ -129,6 +129,9 @@ class report {
          "s, 1), and a local sum of coordinates f = Σxⱼ) with the same references "
          "(f.info().exact), measured in one process. Written by `bench/peers/quadmc_peers`; "
          "every number below is in `peers.csv`.\n\n";
+    // The answer first, from the tables further down; a quotation, as on the run pages.
+    for (const std::string& line : answer_lines()) o << "> - " << line << "\n";
+    o << "\n";
     o << "Regenerate (from the repository root; needs libgsl-dev, libcubature-dev, "
          "python3-matplotlib, python3-scipy):\n\n```sh\n"
       << regenerate_command << "\n```\n\n";
@@ -216,6 +219,103 @@ class report {
   }
 
  private:
+  // The lines at the top of the page, read from its own tables: the targets' tally with the
+  // missed ones named, who is fastest to 10⁻³ and to 10⁻⁵ on each integrand and s (quadmc's
+  // fastest beside a faster peer), and the most evaluations per second at the largest s.
+  std::vector<std::string> answer_lines() const {
+    std::vector<std::string> lines;
+    const std::vector<target_line> targets =
+        evaluate_targets(performance_targets(c_.throughput_n), st_.rows, c_.dimensions);
+    const target_tally tally_of = tally(targets);
+    std::vector<std::string> missed;
+    for (const target_line& l : targets) {
+      for (const target_cell& c : l.cells) {
+        if (c.m != mark::missed || !c.ratio) continue;
+        missed.push_back(fmt::format("{} on {} at s = {} ({:.2f}×, goal {}×)", l.spec.label,
+                                     l.integrand, c.s, *c.ratio, l.spec.goal));
+      }
+    }
+    constexpr std::size_t named = 3;  // the Targets section lists every one
+    std::string line = fmt::format("**Targets:** {} of {} measured ratios met", tally_of.met,
+                                   tally_of.met + tally_of.missed);
+    if (!missed.empty()) {
+      const std::size_t shown = std::min(named, missed.size());
+      line += fmt::format(
+          "; {} missed, among them {}{}", missed.size(),
+          fmt::join(missed.begin(), missed.begin() + static_cast<long>(shown), "; "),
+          missed.size() > shown ? fmt::format(" and {} more", missed.size() - shown) : "");
+    }
+    if (tally_of.not_measurable > 0) {
+      line += fmt::format("; {} not measurable (⚠)", tally_of.not_measurable);
+    }
+    lines.push_back(line + " ([Targets](#targets-measured-never-asserted)).");
+    for (const double eps : {1e-3, 1e-5}) {
+      std::vector<std::string> per_integrand;
+      for (const auto& integrand : integrands_) {
+        std::vector<std::string> cells;
+        for (const std::size_t s : c_.dimensions) {
+          struct fastest {
+            std::string method;
+            time_to_accuracy t;
+          };
+          std::optional<fastest> all, ours;
+          for (const auto& [method, threads] : methods_) {
+            const auto it = ladder_.find({method, threads, integrand, s});
+            if (it == ladder_.end()) continue;
+            const time_to_accuracy t = time_to_reach(it->second, eps);
+            if (t.outcome == time_to_accuracy::status::not_reached) continue;
+            if (!all || t.seconds < all->t.seconds) all = fastest{method, t};
+            if (method.starts_with("quadmc ") && (!ours || t.seconds < ours->t.seconds)) {
+              ours = fastest{method, t};
+            }
+          }
+          if (!all) continue;
+          const auto timed = [](const fastest& f) {
+            return fmt::format("`{}` {}{}", f.method,
+                               f.t.outcome == time_to_accuracy::status::at_most ? "≤ " : "",
+                               format_seconds(f.t.seconds));
+          };
+          std::string cell = fmt::format("s = {} {}", s, timed(*all));
+          if (ours && ours->method != all->method)
+            cell += fmt::format(" (quadmc: {})", timed(*ours));
+          if (!ours) cell += " (quadmc: not reached)";
+          cells.push_back(cell);
+        }
+        if (!cells.empty()) {
+          per_integrand.push_back(fmt::format("{}: {}", integrand, fmt::join(cells, ", ")));
+        }
+      }
+      lines.push_back(fmt::format(
+          "**Fastest to an absolute error of {}** (one thread; \"≤\": below it at the ladder's "
+          "first point): {}.",
+          eps == 1e-3 ? "10⁻³" : "10⁻⁵",
+          per_integrand.empty() ? std::string("none reached it")
+                                : fmt::format("{}", fmt::join(per_integrand, "; "))));
+    }
+    if (!c_.dimensions.empty()) {
+      const std::size_t s = c_.dimensions.back();
+      std::vector<std::string> per_integrand;
+      for (const auto& integrand : integrands_) {
+        const std::optional<double> limit = rate(integrand_only_method, 1, integrand, s);
+        std::optional<std::pair<double, std::string>> best;
+        for (const auto& [method, threads] : methods_) {
+          if (threads != 1 || method == integrand_only_method) continue;
+          const std::optional<double> r = rate(method, 1, integrand, s);
+          if (r && (!best || *r > best->first)) best = std::pair{*r, method};
+        }
+        if (!best) continue;
+        per_integrand.push_back(fmt::format(
+            "{} `{}` {} M/s{}", integrand, best->second, format_rate(best->first),
+            limit ? fmt::format(" ({:.2f} of the integrand alone)", best->first / *limit) : ""));
+      }
+      if (!per_integrand.empty()) {
+        lines.push_back(fmt::format("**Most evaluations per second at s = {}** (one thread): {}.",
+                                    s, fmt::join(per_integrand, "; ")));
+      }
+    }
+    return lines;
+  }
+
   std::optional<double> rate(const std::string& method, unsigned threads,
                              const std::string& integrand, std::size_t s) const {
     const auto it = rate_.find({method, threads, integrand, s});

@@ -9,6 +9,7 @@
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
 #include "quadmc/report/staged_output.hpp"
+#include "quadmc/report/table_leaders.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
 #include "quadmc/sampling/periodogram.hpp"
 #include "quadmc/sampling/point_file.hpp"
@@ -19,6 +20,7 @@
 #include "progress_bar.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -33,7 +35,9 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace quadmc_cli {
@@ -268,6 +272,88 @@ double band_power(const std::vector<quadmc::radial_power_bin>& bins, std::size_t
   return sum / count;
 }
 
+// The standard error of band_power, from the bins' (their realizations' spread), taking the
+// bins as independent: √(Σ (frequencies·se)²) / Σ frequencies.
+double band_standard_error(const std::vector<quadmc::radial_power_bin>& bins, std::size_t lo,
+                           std::size_t hi) {
+  double sum = 0.0;
+  double count = 0.0;
+  for (const auto& b : bins) {
+    if (b.radius < lo || b.radius > hi) continue;
+    const double f = static_cast<double>(b.frequencies);
+    sum += f * f * b.standard_error * b.standard_error;
+    count += f;
+  }
+  return std::sqrt(sum) / count;
+}
+
+// The bands of the page's spectrum table, in |f|.
+constexpr std::array<std::array<std::size_t, 2>, 4> spectrum_bands{
+    {{1, 8}, {9, 24}, {25, 40}, {41, 64}}};
+
+// The answer at the top of the page, read from its two tables (report/table_leaders.hpp): who has
+// the smallest discrepancies as N grows, which sets have the least low-frequency power, and which
+// have power above white noise, where structure (a lattice, a grid) shows as spikes.
+std::vector<std::string> answer_lines(const std::vector<set_result>& results) {
+  std::vector<std::string> lines;
+  const auto discrepancy_table = [&](double quadmc::l2_discrepancies::*which) {
+    quadmc::scored_table t{"N", {gallery_sizes.begin(), gallery_sizes.end()}, {}, {}};
+    for (const set_result& s : results) {
+      t.rows.push_back(s.set->name);
+      std::vector<std::optional<double>> values(t.columns.size());
+      for (const discrepancy_row& d : s.discrepancy) {
+        const auto k = std::find(t.columns.begin(), t.columns.end(), d.n) - t.columns.begin();
+        if (k < static_cast<long>(values.size()))
+          values[static_cast<std::size_t>(k)] = d.rms.*which;
+      }
+      t.values.push_back(std::move(values));
+    }
+    return t;
+  };
+  lines.push_back(
+      "**Smallest L2-star discrepancy** (root mean square over the realizations): " +
+      quadmc::leaders_phrase(discrepancy_table(&quadmc::l2_discrepancies::l2_star), "independent") +
+      ".");
+  lines.push_back(
+      "**Smallest wrap-around discrepancy** (the one that sees a lattice's periodicity): " +
+      quadmc::leaders_phrase(discrepancy_table(&quadmc::l2_discrepancies::wraparound),
+                             "independent") +
+      ".");
+  // Low frequencies: every set, least power first (what blue noise means here).
+  std::vector<std::pair<double, std::string>> low;
+  for (const set_result& s : results) {
+    low.emplace_back(band_power(s.spectrum, spectrum_bands[0][0], spectrum_bands[0][1]),
+                     s.set->name);
+  }
+  std::stable_sort(low.begin(), low.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> ranked;
+  for (const auto& [power, set] : low) ranked.push_back(fmt::format("`{}` {:.3f}", set, power));
+  lines.push_back(fmt::format(
+      "**Least power at low frequencies** ({} ≤ |f| ≤ {}, N = {}; white noise is 1): {}.",
+      spectrum_bands[0][0], spectrum_bands[0][1], spectrum_size, fmt::join(ranked, ", ")));
+  // Power above white noise beyond its statistics: more than 4 standard errors and 5 % above 1.
+  std::vector<std::string> spikes;
+  for (const set_result& s : results) {
+    std::vector<std::string> bands;
+    for (const auto& [lo, hi] : spectrum_bands) {
+      const double p = band_power(s.spectrum, lo, hi);
+      if (p > 1.05 && p - 1.0 > 4.0 * band_standard_error(s.spectrum, lo, hi)) {
+        bands.push_back(fmt::format("{:.3f} at {}–{}", p, lo, hi));
+      }
+    }
+    if (!bands.empty())
+      spikes.push_back(fmt::format("`{}` {}", s.set->name, fmt::join(bands, ", ")));
+  }
+  lines.push_back(spikes.empty() ? std::string("**Power above white noise:** no band of any set is "
+                                               "more than 5 % and 4 standard errors above 1.")
+                                 : fmt::format("**Power above white noise** (a band more than 5 % "
+                                               "and 4 standard errors above 1: structure, not "
+                                               "noise): {}.",
+                                               fmt::join(spikes, "; ")));
+  return lines;
+}
+
 // A set's name in the page's tables: a user's set says so (its realizations are in the section
 // on the user's sets).
 std::string table_name(const gallery_set& set) {
@@ -311,6 +397,9 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
       "(seed {}, {} realizations for the spectra) in {:.1f} s on {} threads; quadmc {} "
       "(commit {}, {}).\n\n",
       r.seed, r.realizations, seconds, threads, build.version, build.commit, build.compiler);
+  // The answer first, from the tables further down; a quotation, as on the run pages.
+  for (const std::string& line : answer_lines(results)) t += fmt::format("> - {}\n", line);
+  t += "\n";
   t += "![Scatter plots at N = 16, 64, 256 with strata, projections and spectra](gallery.png)\n\n";
   t += "## How to read it\n\n";
   t += fmt::format(
@@ -339,14 +428,16 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
   t += "![Radially averaged power spectra of all point sets](spectra.png)\n\n";
   t += fmt::format("## Power spectrum at N = {}, {} realizations\n\n", spectrum_size,
                    r.realizations);
-  t += "Mean power (frequency-weighted) in three bands of |f|; 1 is white noise.\n\n";
-  t += "| point set | 1 ≤ \\|f\\| ≤ 8 | 9 ≤ \\|f\\| ≤ 24 | 25 ≤ \\|f\\| ≤ 40 | 41 ≤ \\|f\\| ≤ 64 "
-       "|\n";
-  t += "|---|---|---|---|---|\n";
+  t += "Mean power (frequency-weighted) in four bands of |f|; 1 is white noise.\n\n";
+  t += "| point set |";
+  for (const auto& [lo, hi] : spectrum_bands) t += fmt::format(" {} ≤ \\|f\\| ≤ {} |", lo, hi);
+  t += "\n|---|---|---|---|---|\n";
   for (const set_result& s : results) {
-    t += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", table_name(*s.set),
-                     band_power(s.spectrum, 1, 8), band_power(s.spectrum, 9, 24),
-                     band_power(s.spectrum, 25, 40), band_power(s.spectrum, 41, 64));
+    t += fmt::format("| {} |", table_name(*s.set));
+    for (const auto& [lo, hi] : spectrum_bands) {
+      t += fmt::format(" {:.3f} |", band_power(s.spectrum, lo, hi));
+    }
+    t += "\n";
   }
   t += "\n## L2 discrepancies\n\n";
   t += "Pictured realization (root mean square over the realizations in brackets).\n\n";

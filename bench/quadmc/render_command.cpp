@@ -14,6 +14,7 @@
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_folder.hpp"
 #include "quadmc/report/staged_output.hpp"
+#include "quadmc/report/table_leaders.hpp"
 #include "quadmc/scene/render_scene.hpp"
 
 #include "build_provenance.hpp"
@@ -22,6 +23,7 @@
 #include "progress_bar.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <atomic>
@@ -34,8 +36,11 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace quadmc_cli {
@@ -514,12 +519,132 @@ std::string light_sampling_csv(const render_result& r) {
 }
 
 // The README's title, what was rendered and how, and the exact image.
+// The RMSE of the image of (technique, set, spp) over all pixels (visibility nullopt) or over one
+// visibility class; nullopt where that class has no pixel (its RMSE is NaN).
+std::optional<double> rmse_of(const render_result& r, quadmc::irradiance_sampling technique,
+                              const quadmc::point_set_entry* set, std::uint64_t spp,
+                              std::optional<std::size_t> visibility) {
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind != image_kind::estimate || im.technique != technique || im.set != set ||
+        im.spp != spp) {
+      continue;
+    }
+    const double e = visibility ? r.stats[k].rmse_by_visibility[*visibility] : r.stats[k].rmse;
+    return std::isnan(e) ? std::nullopt : std::optional<double>(e);
+  }
+  return std::nullopt;
+}
+
+// Per estimator, its point sets' RMSE at each spp: the table the page shows, as one
+// report/table_leaders.hpp table per estimator.
+std::string best_set_per_estimator(const render_scene& sc, const render_result& r,
+                                   std::optional<std::size_t> visibility) {
+  std::vector<std::string> parts;
+  for (const auto tech : sc.estimators) {
+    quadmc::scored_table t{"spp", sc.spp, {}, {}};
+    for (const auto* set : sc.point_sets) {
+      t.rows.emplace_back(set->name);
+      std::vector<std::optional<double>> values;
+      for (const std::uint64_t spp : sc.spp)
+        values.push_back(rmse_of(r, tech, set, spp, visibility));
+      t.values.push_back(std::move(values));
+    }
+    parts.push_back(
+        fmt::format("`{}`: {}", to_string(tech), quadmc::leaders_phrase(t, "independent")));
+  }
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// The answer at the top of the page, read from its tables: the lowest RMSE at the largest spp,
+// the best point set of each estimator over all pixels and in the penumbra, the range of the fitted
+// slopes, and the light-sampling layouts from lowest RMSE to highest.
+std::vector<std::string> answer_lines(const render_scene& sc, const render_result& r) {
+  std::vector<std::string> lines;
+  const std::uint64_t top = sc.spp.back();
+  struct entry {
+    double rmse;
+    std::string what;
+    std::optional<double> independent;  // the same estimator with independent points
+  };
+  std::vector<entry> at_top;
+  for (const auto tech : sc.estimators) {
+    const quadmc::point_set_entry* independent = nullptr;
+    for (const auto* set : sc.point_sets) {
+      if (set->name == "independent") independent = set;
+    }
+    for (const auto* set : sc.point_sets) {
+      if (const auto e = rmse_of(r, tech, set, top, std::nullopt)) {
+        at_top.push_back({*e, fmt::format("`{}` with `{}`", to_string(tech), set->name),
+                          independent != nullptr && independent != set
+                              ? rmse_of(r, tech, independent, top, std::nullopt)
+                              : std::nullopt});
+      }
+    }
+  }
+  if (!at_top.empty()) {
+    const auto [low, high] =
+        std::minmax_element(at_top.begin(), at_top.end(),
+                            [](const entry& a, const entry& b) { return a.rmse < b.rmse; });
+    std::string line =
+        fmt::format("**Lowest image RMSE at spp = {}:** {} ({:.4g}", top, low->what, low->rmse);
+    if (low->independent && *low->independent > low->rmse) {
+      line += fmt::format(", {:.3g}× below the same estimator with `independent` points",
+                          *low->independent / low->rmse);
+    }
+    lines.push_back(line + fmt::format("); highest {} ({:.4g}).", high->what, high->rmse));
+  }
+  lines.push_back("**Best point set per estimator, all pixels:** " +
+                  best_set_per_estimator(sc, r, std::nullopt) + ".");
+  lines.push_back("**In the penumbra** (where the occluder hides part of the light): " +
+                  best_set_per_estimator(sc, r, 1) + ".");
+  const fit_row* steep = nullptr;
+  const fit_row* shallow = nullptr;
+  for (const fit_row& f : r.fits) {
+    if (!f.fit.ok()) continue;
+    if (steep == nullptr || f.fit.slope < steep->fit.slope) steep = &f;
+    if (shallow == nullptr || f.fit.slope > shallow->fit.slope) shallow = &f;
+  }
+  if (steep != nullptr) {
+    const auto described = [](const fit_row& f) {
+      return fmt::format("`{}` with `{}` {:.3f} [{:.3f}, {:.3f}]", to_string(f.technique),
+                         f.set->name, f.fit.slope, f.fit.ci_low, f.fit.ci_high);
+    };
+    lines.push_back(fmt::format(
+        "**Slopes of log RMSE on log spp** (independent samples: −1/2): steepest {}, shallowest "
+        "{}.",
+        described(*steep), described(*shallow)));
+  }
+  if (sc.light_sampling) {
+    std::vector<std::pair<double, std::string>> layouts;
+    for (std::size_t k = 0; k < r.images.size(); ++k) {
+      const image& im = r.images[k];
+      if (im.kind != image_kind::light_sampling) continue;
+      layouts.emplace_back(
+          r.stats[k].rmse,
+          fmt::format("{} × {} {} {:.4g} (neighbour correlation {:.2f})", im.pixel_samples,
+                      im.light_samples, quadmc::to_string(im.correlation), r.stats[k].rmse,
+                      r.stats[k].neighbour_correlation));
+    }
+    std::stable_sort(layouts.begin(), layouts.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::string> listed;
+    for (const auto& l : layouts) listed.push_back(l.second);
+    lines.push_back(fmt::format("**{} light samples per pixel**, lowest RMSE first: {}.",
+                                sc.light_samples, fmt::join(listed, ", ")));
+  }
+  return lines;
+}
+
 std::string readme_intro(const render_scene& sc, const quadmc::irradiance_plane& plane,
                          const quadmc::provenance& build, const render_result& r) {
   const double pixels = static_cast<double>(plane.pixels());
   std::string t;
   t += fmt::format("# {}\n\n", sc.name);
   if (!sc.description.empty()) t += sc.description + "\n\n";
+  // The answer first, from the tables further down; a quotation, as on the run pages.
+  for (const std::string& line : answer_lines(sc, r)) t += fmt::format("> - {}\n", line);
+  t += "\n";
   t += fmt::format(
       "The plane z = 0 under the area light of the irradiance catalogue, seen from above: {} × {} "
       "pixels over [{}, {}] × [{}, {}], one irradiance integral E(x) = ∫ L·V·cosθ dω per pixel "
