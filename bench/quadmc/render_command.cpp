@@ -622,7 +622,7 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
       if (im.kind != image_kind::light_sampling) continue;
       layouts.emplace_back(
           r.stats[k].rmse,
-          fmt::format("{} × {} {} {:.4g} (neighbour correlation {:.2f})", im.pixel_samples,
+          fmt::format("{} × {} {} {:.4g} (neighbour correlation {:.3f})", im.pixel_samples,
                       im.light_samples, quadmc::to_string(im.correlation), r.stats[k].rmse,
                       r.stats[k].neighbour_correlation));
     }
