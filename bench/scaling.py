@@ -171,6 +171,31 @@ def timed(command, cwd):
     return seconds
 
 
+def answer_lines(rows):
+    """The page's answer, from its table: the measured 2-rank speedups, and per scene the rank count
+    from which the modelled efficiency falls below 50 % with what bounds it (or its efficiency at
+    the table's largest rank count)."""
+    lines = []
+    measured = [r for r in rows if not math.isnan(r["one_rank_s"])]
+    if measured:
+        lines.append("**Measured on 2 ranks:** " + ", ".join(
+            f'{r["scene"]} {r["measured_speedup_2"]:.2f}× '
+            f'({100 * r["measured_speedup_2"] / 2:.0f} % efficiency)' for r in measured) +
+            "; every column but timing equals the 1-rank run.")
+    parts = []
+    for r in rows:
+        below = [k for k in (8, 64, 1024) if r[f"model_efficiency_{k}"] < 0.5]
+        if below:
+            k = below[0]
+            parts.append(f'{r["scene"]} falls below 50 % efficiency at {k} ranks '
+                         f'({r[f"model_speedup_{k}"]:.1f}×; what bounds it: {r[f"bound_{k}"]})')
+        else:
+            parts.append(f'{r["scene"]} keeps {100 * r["model_efficiency_1024"]:.0f} % efficiency '
+                         f'at 1024 ranks ({r["model_speedup_1024"]:.1f}×)')
+    lines.append("**Modelled from the 1-rank cells' costs (ideal model):** " + "; ".join(parts) + ".")
+    return lines
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quadmc")
@@ -241,7 +266,7 @@ def main():
              "every column but timing of the 2-rank run equals the 1-rank run "
              "(`bench/same_results.py`). Only cells whose method shares chunks are split "
              "(`method::shares_chunks`, from the run's `--cells-csv`), in the run and in the "
-             "model.", "",
+             "model.", ""] + [f"> - {line}" for line in answer_lines(rows)] + ["",
              "| scene | cells | 1 rank (s) | 2 ranks (s) | measured speedup | split cells' "
              "efficiency η at 2 | modelled speedup (efficiency) at 8 / 64 / 1024 ranks, ideal | "
              "the same with η | cells split at 2 (run) / 8 / 64 / 1024 |",
