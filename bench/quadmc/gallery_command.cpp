@@ -259,32 +259,26 @@ std::string spectrum_csv(const std::vector<set_result>& results) {
   return text;
 }
 
-// Mean power over the bins lo … hi (inclusive), weighted by their frequency counts.
-double band_power(const std::vector<quadmc::radial_power_bin>& bins, std::size_t lo,
-                  std::size_t hi) {
-  double sum = 0.0;
-  double count = 0.0;
-  for (const auto& b : bins) {
-    if (b.radius < lo || b.radius > hi) continue;
-    sum += b.mean_power * static_cast<double>(b.frequencies);
-    count += static_cast<double>(b.frequencies);
-  }
-  return sum / count;
-}
+// One band of the spectrum: the mean power over the bins lo … hi (inclusive), weighted by their
+// frequency counts, and its standard error from the bins' (their realizations' spread), taking
+// the bins as independent: √(Σ (frequencies·se)²) / Σ frequencies.
+struct band {
+  double power = 0.0;
+  double standard_error = 0.0;
+};
 
-// The standard error of band_power, from the bins' (their realizations' spread), taking the
-// bins as independent: √(Σ (frequencies·se)²) / Σ frequencies.
-double band_standard_error(const std::vector<quadmc::radial_power_bin>& bins, std::size_t lo,
-                           std::size_t hi) {
-  double sum = 0.0;
+band band_of(const std::vector<quadmc::radial_power_bin>& bins, std::size_t lo, std::size_t hi) {
+  double power = 0.0;
+  double variance = 0.0;
   double count = 0.0;
   for (const auto& b : bins) {
     if (b.radius < lo || b.radius > hi) continue;
     const double f = static_cast<double>(b.frequencies);
-    sum += f * f * b.standard_error * b.standard_error;
+    power += b.mean_power * f;
+    variance += f * f * b.standard_error * b.standard_error;
     count += f;
   }
-  return std::sqrt(sum) / count;
+  return {power / count, std::sqrt(variance) / count};
 }
 
 // The bands of the page's spectrum table, in |f|.
@@ -322,7 +316,7 @@ std::vector<std::string> answer_lines(const std::vector<set_result>& results) {
   // Low frequencies: every set, least power first (what blue noise means here).
   std::vector<std::pair<double, std::string>> low;
   for (const set_result& s : results) {
-    low.emplace_back(band_power(s.spectrum, spectrum_bands[0][0], spectrum_bands[0][1]),
+    low.emplace_back(band_of(s.spectrum, spectrum_bands[0][0], spectrum_bands[0][1]).power,
                      s.set->name);
   }
   std::stable_sort(low.begin(), low.end(),
@@ -337,9 +331,9 @@ std::vector<std::string> answer_lines(const std::vector<set_result>& results) {
   for (const set_result& s : results) {
     std::vector<std::string> bands;
     for (const auto& [lo, hi] : spectrum_bands) {
-      const double p = band_power(s.spectrum, lo, hi);
-      if (p > 1.05 && p - 1.0 > 4.0 * band_standard_error(s.spectrum, lo, hi)) {
-        bands.push_back(fmt::format("{:.3f} at {}–{}", p, lo, hi));
+      const band b = band_of(s.spectrum, lo, hi);
+      if (b.power > 1.05 && b.power - 1.0 > 4.0 * b.standard_error) {
+        bands.push_back(fmt::format("{:.3f} at {}–{}", b.power, lo, hi));
       }
     }
     if (!bands.empty())
@@ -431,11 +425,13 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
   t += "Mean power (frequency-weighted) in four bands of |f|; 1 is white noise.\n\n";
   t += "| point set |";
   for (const auto& [lo, hi] : spectrum_bands) t += fmt::format(" {} ≤ \\|f\\| ≤ {} |", lo, hi);
-  t += "\n|---|---|---|---|---|\n";
+  t += "\n|---|";
+  for (std::size_t k = 0; k < spectrum_bands.size(); ++k) t += "---|";
+  t += "\n";
   for (const set_result& s : results) {
     t += fmt::format("| {} |", table_name(*s.set));
     for (const auto& [lo, hi] : spectrum_bands) {
-      t += fmt::format(" {:.3f} |", band_power(s.spectrum, lo, hi));
+      t += fmt::format(" {:.3f} |", band_of(s.spectrum, lo, hi).power);
     }
     t += "\n";
   }

@@ -568,11 +568,10 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
     std::optional<double> independent;  // the same estimator with independent points
   };
   std::vector<entry> at_top;
+  const auto found = std::find_if(sc.point_sets.begin(), sc.point_sets.end(),
+                                  [](const auto* set) { return set->name == "independent"; });
+  const quadmc::point_set_entry* independent = found == sc.point_sets.end() ? nullptr : *found;
   for (const auto tech : sc.estimators) {
-    const quadmc::point_set_entry* independent = nullptr;
-    for (const auto* set : sc.point_sets) {
-      if (set->name == "independent") independent = set;
-    }
     for (const auto* set : sc.point_sets) {
       if (const auto e = rmse_of(r, tech, set, top, std::nullopt)) {
         at_top.push_back({*e, fmt::format("`{}` with `{}`", to_string(tech), set->name),
