@@ -51,12 +51,12 @@ std::unique_ptr<command_result> GalleryCommand::result_;
 
 TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
   ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
-  EXPECT_EQ(result_->out.rfind("gallery: 8 point sets in s = 2 (seed 5), 3 threads", 0), 0u)
+  EXPECT_EQ(result_->out.rfind("gallery: 11 point sets in s = 2 (seed 5), 3 threads", 0), 0u)
       << describe(*result_);
   EXPECT_NE(result_->out.find("over 3 realizations per set"), std::string::npos);
   EXPECT_NE(result_->out.find("jittered         strata: N = 16: 4 × 4 cells"), std::string::npos)
       << result_->out;
-  EXPECT_NE(result_->out.find("\ngallery: 8 point sets in "), std::string::npos);
+  EXPECT_NE(result_->out.find("\ngallery: 11 point sets in "), std::string::npos);
   EXPECT_NE(result_->out.find("wrote "), std::string::npos);
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(*dir_ / "g")) {
@@ -74,8 +74,8 @@ TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
     EXPECT_EQ(row[spectrum.column("realizations")], "3");
     EXPECT_EQ(row[spectrum.column("n")], "1024");
   }
-  EXPECT_EQ(sets.size(), 8u);
-  EXPECT_EQ(spectrum.rows.size(), 8u * 64u);
+  EXPECT_EQ(sets.size(), 11u);
+  EXPECT_EQ(spectrum.rows.size(), 11u * 64u);
 }
 
 // Every grid strata.csv lists is checked against the points of scatter.csv: `cells` means each
@@ -228,7 +228,7 @@ TEST_F(GalleryPoints, SobolFilesGiveTheSobolRowBitwiseOnAnyThreadCount) {
   three.insert(three.end(), {"--out", "g", "--threads", "3"});
   const command_result r = run_quadmc(*dir_, three);
   ASSERT_EQ(r.exit_status, 0) << describe(r);
-  EXPECT_EQ(r.out.rfind("gallery: 8 point sets and 1 from files (--points) in s = 2", 0), 0u)
+  EXPECT_EQ(r.out.rfind("gallery: 11 point sets and 1 from files (--points) in s = 2", 0), 0u)
       << r.out;
   EXPECT_NE(r.out.find("mine             strata: none (files pts/{N}_{r}.csv; realizations at "
                        "N = 16, 64, 256, 1024: 4, 4, 4, 4)"),

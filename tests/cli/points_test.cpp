@@ -142,7 +142,7 @@ TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
   expect_points_error(
       {"points", "jittered", "--n", "8", "--s", "3", "--seed", "1", "--randomization", "owen"},
       "invalid --randomization = owen",
-      "no randomization for jittered (sobol, halton, lattice only)");
+      "no randomization for jittered (sobol, padded_sobol, halton, lattice only)");
   expect_points_error({"points", "halton", "--n", "8", "--s", "2", "--seed", "1", "--allow-any-n"},
                       "invalid --allow-any-n = true", "no allow_any_n for halton (sobol only)");
   expect_points_error(

@@ -121,6 +121,35 @@ TEST(PointSetCatalogue, PaddedJitteredHoldsSquaresInTwoOrMoreDimensions) {
       << size_problem(padded, 2, 96);
 }
 
+// cmj holds the near squares k² and k(k + 1) in s ≥ 2 (largest_point_count maps N to the larger
+// below it) and names the nearest otherwise; padded_sobol has no unrandomized form.
+TEST(PointSetCatalogue, CmjHoldsNearSquaresAndPaddedSobolIsAlwaysRandomized) {
+  const point_set_entry& cmj = *find_point_set("cmj");
+  EXPECT_TRUE(accepts_size(cmj, 2, 100));
+  EXPECT_TRUE(accepts_size(cmj, 4, 110));
+  EXPECT_TRUE(accepts_size(cmj, 1, 101));
+  EXPECT_FALSE(accepts_size(cmj, 3, 105));
+  EXPECT_NE(size_problem(cmj, 2, 105).find("nearest valid sizes 100 and 110"), std::string::npos)
+      << size_problem(cmj, 2, 105);
+  EXPECT_EQ(largest_point_count(point_count::near_square, 119, 2).points, 110u);
+  EXPECT_EQ(largest_point_count(point_count::near_square, 109, 2).points, 100u);
+  EXPECT_EQ(largest_point_count(point_count::near_square, 109, 1).points, 109u);
+  const point_set_entry& padded = *find_point_set("padded_sobol");
+  EXPECT_FALSE(padded.has(randomization::none));
+  point_set_options none;
+  none.random = randomization::none;
+  try {
+    (void)padded.monte_carlo(gaussian, {1, 1}, 64, 1, none);
+    ADD_FAILURE() << "padded_sobol ran unrandomized";
+  } catch (const invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("one of owen, fast_owen, lms_shift, shift for the "
+                                         "padded_sobol points"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(accepts_size(padded, 2, 96)) << "a net needs N = 2^m";
+}
+
 // The dimension check alone (quadmc points blames --s with it), and size_problem begins with it.
 TEST(PointSetCatalogue, DimensionProblemNamesTheSetsLastDimension) {
   const point_set_entry& sobol = *find_point_set("sobol");

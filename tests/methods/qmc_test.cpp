@@ -142,6 +142,18 @@ TEST(QmcRates, OwenScrambledSobolFallsAtMinusThreeHalves) {
   EXPECT_NEAR(fit.slope, -1.5, 0.15) << "[" << fit.ci_low << ", " << fit.ci_high << "]";
 }
 
+// The padded sets are the same nets in s = 2: pmj02 (a nested uniform scramble of a
+// (0,2)-sequence in distribution, [Helmer et al. 2021]) and padded_sobol fit −3/2 on the same
+// integrand, ladder and allowance as Owen-scrambled Sobol' above.
+TEST(QmcRates, PaddedNetsFallAtMinusThreeHalvesInTwoDimensions) {
+  const integrand_params p = gaussian_params(2);
+  const any_integrand f = make_integrand("genz_gaussian", p);
+  for (const char* name : {"pmj02", "padded_sobol"}) {
+    const power_law_fit fit = fitted_rate(*make_method(name), f, p, 6, 16, 64);
+    EXPECT_NEAR(fit.slope, -1.5, 0.15) << name << " [" << fit.ci_low << ", " << fit.ci_high << "]";
+  }
+}
+
 // A randomly shifted lattice with the baker's transform on the same smooth integrand: −2 up to
 // N^ε and log factors ([Hickernell 2002]; [Dick, Nuyens & Pillichshammer 2014]). The vector is
 // built for N ≥ 2^10, so the ladder is 2^10 … 2^18. The same sampling error as above (≈ 0.02 on
@@ -210,6 +222,17 @@ TEST(QmcTheory, RatesOfTheTable) {
   EXPECT_DOUBLE_EQ(*slope("lattice", {{"periodization", "baker"}}, smoothness::smooth, 2), -2.0);
   EXPECT_DOUBLE_EQ(*slope("lattice", {{"periodization", "baker"}}, smoothness::c0, 2), -1.0);
   EXPECT_FALSE(slope("lattice", {}, smoothness::discontinuous, 2).has_value());
+  // Padded sets: the pairs' net rate in s ≤ 2, plain Monte Carlo's beyond.
+  EXPECT_DOUBLE_EQ(*slope("pmj02", {}, smoothness::smooth, 2), -1.5);
+  EXPECT_DOUBLE_EQ(*slope("pmj02", {}, smoothness::smooth, 4), -0.5);
+  EXPECT_DOUBLE_EQ(*slope("padded_sobol", {}, smoothness::analytic, 2), -1.5);
+  EXPECT_DOUBLE_EQ(*slope("padded_sobol", {{"randomization", "shift"}}, smoothness::smooth, 2),
+                   -1.0);
+  EXPECT_DOUBLE_EQ(*slope("padded_sobol", {}, smoothness::smooth, 3), -0.5);
+  EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::smooth, 2), -0.75);
+  EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::discontinuous, 2), -0.75);
+  EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::smooth, 1), -1.5);
+  EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::smooth, 6), -0.5);
 }
 
 }  // namespace

@@ -2,10 +2,13 @@
 // whatever the batch order, and validation of sizes and batches.
 #include "quadmc/sampling/point_set.hpp"
 
+#include "quadmc/sampling/cmj_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
+#include "quadmc/sampling/padded_sobol_points.hpp"
+#include "quadmc/sampling/pmj02_points.hpp"
 #include "quadmc/sampling/unjittered_points.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +29,7 @@ static_assert(point_set<latin_hypercube_points>);
 
 // Every point set takes (s, N, seed, stream); the unjittered one is then the shifted grid. The
 // counts below are valid for every set: 1024 = 32² in 2D, 729 = 27² = 9³ in 3D (jittered needs
-// k^s, padded jittered k²).
+// k^s, padded jittered and cmj k²; the padded Sobol' class takes any N, its nets need 2^m).
 template <class P>
 P make(std::size_t s, std::uint64_t n, std::uint64_t seed) {
   return P(s, n, seed, 3);
@@ -35,7 +38,8 @@ P make(std::size_t s, std::uint64_t n, std::uint64_t seed) {
 template <class P>
 class PointSetProperties : public ::testing::Test {};
 using all_point_sets = ::testing::Types<independent_points, jittered_points, unjittered_points,
-                                        padded_jittered_points, latin_hypercube_points>;
+                                        padded_jittered_points, latin_hypercube_points, cmj_points,
+                                        pmj02_points, padded_sobol_points<owen_scramble>>;
 TYPED_TEST_SUITE(PointSetProperties, all_point_sets);
 
 TYPED_TEST(PointSetProperties, CoordinatesLieInTheHalfOpenUnitCube) {

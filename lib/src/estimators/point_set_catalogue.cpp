@@ -8,12 +8,15 @@
 #include "quadmc/estimators/importance_sampling.hpp"
 #include "quadmc/estimators/irradiance_estimators.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/sampling/cmj_points.hpp"
 #include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
 #include "quadmc/sampling/inversion_warps.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
+#include "quadmc/sampling/padded_sobol_points.hpp"
+#include "quadmc/sampling/pmj02_points.hpp"
 #include "quadmc/sampling/point_file.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
 #include "quadmc/sampling/sobol_points.hpp"
@@ -69,6 +72,9 @@ struct plain_set {
 constexpr std::array<randomization, 5> sobol_randomizations{
     randomization::owen, randomization::fast_owen, randomization::lms_shift, randomization::shift,
     randomization::none};
+// Sobol's, less "none": unrandomized, every pair would be the same two coordinates.
+constexpr std::array<randomization, 4> padded_sobol_randomizations{
+    randomization::owen, randomization::fast_owen, randomization::lms_shift, randomization::shift};
 constexpr std::array<randomization, 3> halton_randomizations{
     randomization::owen, randomization::permutation, randomization::none};
 constexpr std::array<randomization, 2> lattice_randomizations{randomization::shift,
@@ -100,6 +106,7 @@ constexpr std::array<std::string_view, N> names_of(const std::array<randomizatio
   return out;
 }
 constexpr auto sobol_randomization_names = names_of(sobol_randomizations);
+constexpr auto padded_sobol_randomization_names = names_of(padded_sobol_randomizations);
 constexpr auto halton_randomization_names = names_of(halton_randomizations);
 constexpr auto lattice_randomization_names = names_of(lattice_randomizations);
 constexpr std::array<std::string_view, 2> periodization_names{"none", "baker"};
@@ -121,6 +128,13 @@ constexpr std::array<point_set_option, 3> sobol_options{{
      "true: start at point 1, not the origin (the anti-pattern); the label gets \"_drop_first\"",
      {},
      "_drop_first"},
+}};
+constexpr std::array<point_set_option, 1> padded_sobol_options{{
+    {"randomization",
+     "\"owen\" (default), \"fast_owen\", \"lms_shift\" or \"shift\", as sobol's, drawn "
+     "independently per coordinate; the label gets the suffix",
+     padded_sobol_randomization_names,
+     {}},
 }};
 constexpr std::array<point_set_option, 1> halton_options{{
     {"randomization",
@@ -156,7 +170,8 @@ point_set_options sobol_options_from(point_set_values v) {
   o.drop_first_point = v[2] == "true";
   return o;
 }
-point_set_options halton_options_from(point_set_values v) {
+// The sets whose one key is `randomization` (padded_sobol, halton).
+point_set_options randomization_from(point_set_values v) {
   point_set_options o;
   o.random = randomization_given(v[0]);
   return o;
@@ -187,6 +202,21 @@ point_set_theory sobol_theory(const point_set_options& o) {
       return {rate_basis::low_discrepancy, "unrandomized Sobol' points",
               "docs/theory.md#digital-shift; [Niederreiter 1992, Thm 4.10]"};
   }
+}
+// Each pair a scrambled (0, m, 2)-net: Owen's rates in s ≤ 2, the padded rate beyond
+// (docs/theory.md#padded-sobol); the randomizations that are not nested uniform as sobol's.
+point_set_theory padded_sobol_theory(const point_set_options& o) {
+  point_set_theory t = sobol_theory(o);
+  t.padded = true;
+  if (t.basis == rate_basis::scrambled_net) t.note = "(0, m, 2)-net per pair of dimensions";
+  return t;
+}
+// Distributed as a nested uniform scramble of a (0,2)-sequence [Helmer et al. 2021]: Owen's rates
+// at N = 2^m in s ≤ 2, the padded rate beyond (docs/theory.md#progressive-multi-jittered).
+point_set_theory pmj02_theory(const point_set_options&) {
+  point_set_theory t{rate_basis::scrambled_net, "random (0,2)-sequence per pair, N = 2^m", {}};
+  t.padded = true;
+  return t;
 }
 point_set_theory halton_theory(const point_set_options& o) {
   const randomization r = o.random.value_or(halton_randomizations.front());
@@ -222,6 +252,14 @@ std::optional<point_strata> padded_strata(std::size_t s, std::uint64_t n) {
   const std::uint64_t k = integer_root(n, 2);
   if (k * k != n) return std::nullopt;
   return point_strata{strata_kind::cells, k};
+}
+// A correlated multi-jittered pair: the k × k cells when N = k² in s = 2, else (N = k(k + 1)) its
+// N fine rows and columns ([Kensler 2013]).
+std::optional<point_strata> cmj_strata(std::size_t s, std::uint64_t n) {
+  if (s != 2 || !cmj_points::is_valid_size(s, n)) return std::nullopt;
+  const std::uint64_t k = integer_root(n, 2);
+  if (k * k == n) return point_strata{strata_kind::cells, k};
+  return point_strata{strata_kind::rows_and_columns, n};
 }
 // N rows and columns, one point in each, along every axis ([McKay et al. 1979]).
 std::optional<point_strata> latin_strata(std::size_t, std::uint64_t n) {
@@ -279,6 +317,25 @@ struct sobol_set {
         return fn(sobol_points<digital_shift>(s, n, st.seed, st.stream, drop));
       default:
         return fn(sobol_points<unrandomized_digits>(s, n, st.seed, st.stream, drop));
+    }
+  }
+};
+
+struct padded_sobol_set {
+  template <class Fn>
+  static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
+                              const sample_stream& st, Fn&& fn) {
+    const point_set_entry& set = entry_named("padded_sobol");
+    require_qmc_request(set, s, n, o);
+    switch (*set.randomization_of(o)) {
+      case randomization::owen:
+        return fn(padded_sobol_points<owen_scramble>(s, n, st.seed, st.stream));
+      case randomization::fast_owen:
+        return fn(padded_sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream));
+      case randomization::lms_shift:
+        return fn(padded_sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream));
+      default:
+        return fn(padded_sobol_points<digital_shift>(s, n, st.seed, st.stream));
     }
   }
 };
@@ -434,7 +491,7 @@ constexpr point_set_entry point_set_entry_for(const set_facts& f) {
           points_over<Set>};
 }
 
-constexpr std::array<point_set_entry, 8> entries{{
+constexpr std::array<point_set_entry, 11> entries{{
     point_set_entry_for<plain_set<independent_points>>(
         {.name = "independent", .description = "independent uniform points"}),
     point_set_entry_for<plain_set<jittered_points>>(
@@ -454,6 +511,11 @@ constexpr std::array<point_set_entry, 8> entries{{
          .strata = padded_strata}),
     point_set_entry_for<plain_set<latin_hypercube_points>>(
         {.name = "latin_hypercube", .description = "Latin hypercube", .strata = latin_strata}),
+    point_set_entry_for<plain_set<cmj_points>>(
+        {.name = "cmj",
+         .description = "correlated multi-jittered m x n cells (Kensler), padded across pairs",
+         .counts = point_count::near_square,
+         .strata = cmj_strata}),
     point_set_entry_for<sobol_set>(
         {.name = "sobol",
          .description =
@@ -468,13 +530,31 @@ constexpr std::array<point_set_entry, 8> entries{{
          .options = sobol_options,
          .options_from = sobol_options_from,
          .theory = sobol_theory}),
+    point_set_entry_for<padded_sobol_set>(
+        {.name = "padded_sobol",
+         .description = "scrambled 2D Sobol' nets per pair of dimensions, shuffled across pairs",
+         .counts = point_count::power_of_two,
+         .strata = net_strata,
+         .randomizations = padded_sobol_randomizations,
+         .errors = error_source::replicates,
+         .max_points = std::uint64_t{1} << 32,
+         .options = padded_sobol_options,
+         .options_from = randomization_from,
+         .theory = padded_sobol_theory}),
+    point_set_entry_for<plain_set<pmj02_points>>(
+        {.name = "pmj02",
+         .description = "progressive multi-jittered (0,2) sequence per pair, any N, padded",
+         .strata = net_strata,
+         .errors = error_source::replicates,
+         .max_points = pmj02_points::max_points,
+         .theory = pmj02_theory}),
     point_set_entry_for<halton_set>({.name = "halton",
                                      .description = "Halton points in the first s prime bases",
                                      .randomizations = halton_randomizations,
                                      .max_dimension = max_halton_dimension,
                                      .errors = error_source::replicates,
                                      .options = halton_options,
-                                     .options_from = halton_options_from,
+                                     .options_from = randomization_from,
                                      .theory = halton_theory}),
     point_set_entry_for<lattice_set>(
         {.name = "lattice",
@@ -506,6 +586,11 @@ point_count_choice largest_point_count(point_count counts, std::uint64_t N, std:
       if (s == 1) return {N, N};
       const std::uint64_t k = integer_root(N, 2);
       return {k, k * k};
+    }
+    case point_count::near_square: {
+      if (s == 1) return {N, N};
+      const std::uint64_t k = integer_root(N, 2);
+      return {k, k * (k + 1) <= N ? k * (k + 1) : k * k};
     }
     case point_count::power_of_two:
       return {0, N == 0 ? 0 : std::bit_floor(N)};
@@ -676,6 +761,16 @@ std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_
             "N = k² in s ≥ 2 (k × k strata per pair of dimensions), nearest valid "
             "sizes {} and {}",
             k * k, (k + 1) * (k + 1));
+      }
+      break;
+    case point_count::near_square:
+      if (!cmj_points::is_valid_size(s, n)) {
+        const std::uint64_t k = integer_root(n, 2);
+        return fmt::format(
+            "N = k² or k(k + 1) in s ≥ 2 (an m × n grid per pair of dimensions, n = m or m + 1), "
+            "nearest valid sizes {} and {}",
+            k * (k + 1) <= n ? k * (k + 1) : k * k,
+            k * (k + 1) > n ? k * (k + 1) : (k + 1) * (k + 1));
       }
       break;
     case point_count::any:

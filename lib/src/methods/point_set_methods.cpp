@@ -1,8 +1,8 @@
 // Plain Monte Carlo and the stratified patterns as methods: each is the sample mean of f over a
 // point set of estimators/point_set_catalogue.hpp, named after it (plain_mc: independent points).
-// N maps to the largest count the set holds (jittered and unjittered k^s, padded k²). Also the
-// `point_set` key of the methods that take one (families.hpp's read_point_set), a catalogue set
-// or the user's files.
+// N maps to the largest count the set holds (jittered and unjittered k^s, padded k², cmj k² or
+// k(k + 1)). Also the `point_set` key of the methods that take one (families.hpp's
+// read_point_set), a catalogue set or the user's files.
 #include "families.hpp"
 
 #include <fmt/format.h>
@@ -136,12 +136,31 @@ theoretical_rate unjittered_theory(const integrand_class& f) {
   return rate;
 }
 
-// In s ≤ 2 padding is one point per 2D stratum, jittered sampling itself.
+// In s ≤ 2 padding is one point per 2D stratum, jittered sampling itself (cmj: one per m × n cell,
+// n = m or m + 1, so the cells' widths are O(N^−1/2) along both axes as the rate needs).
 theoretical_rate padded_theory(const integrand_class& f) {
   if (f.s <= 2) return one_point_per_stratum_rate(f);
   return root_n_rate(
       f, "padding stratifies only 2D projections: plain MC rate unless f is a sum of 2D parts",
       "docs/theory.md#padded-jittered; [Pharr et al. 2023, §8.5]; [Veach 1997, eq. 2.26]");
+}
+
+// cmj in s = 2: every cell of row b shares the sub-cell offset σ(b) along x (and every cell of
+// column a τ(a) along y), so the linear term of a smooth f does not cancel within a row: its
+// error is (1/n)·Σ_b F(b)·δ_b with F(b) = ∫∂f/∂x dx along row b and δ_b a permutation of offsets
+// of size 1/m, variance ≈ Var(F)/(12·n·m²) = O(N^(−3/2)): RMSE N^(−3/4), shallower than
+// jittered's N^(−1), unless F is constant in y (docs/theory.md#correlated-multi-jittered). A jump
+// keeps jittered's −3/4. In 1D cmj is jittered; beyond s = 2 it is padded.
+theoretical_rate cmj_theory(const integrand_class& f) {
+  if (f.s != 2) return padded_theory(f);
+  if (auto none = infinite_variance_rate(f)) return *none;
+  if (f.regularity == smoothness::discontinuous || f.regularity == smoothness::singular) {
+    return one_point_per_stratum_rate(f);
+  }
+  return {-0.75,
+          "offsets shared along each row and column: N^-3/4 unless the integral of df/dx along "
+          "a row is the same for every row",
+          "docs/theory.md#correlated-multi-jittered; [Kensler 2013]"};
 }
 
 // In one dimension a Latin hypercube is one point per stratum: jittered sampling exactly (its
@@ -161,7 +180,7 @@ std::unique_ptr<const method> create_over(const method_descriptor& d, option_rea
 
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 
-const std::array<method_descriptor, 5> descriptors{{
+const std::array<method_descriptor, 6> descriptors{{
     {"plain_mc",
      "plain Monte Carlo with independent uniform points",
      method_kind::randomized,
@@ -193,6 +212,15 @@ const std::array<method_descriptor, 5> descriptors{{
      fixed_only,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<padded_theory>(d, r, "padded_jittered");
+     }},
+    {"cmj",
+     "correlated multi-jittered sampling (Kensler 2013), m x n cells padded across pairs, "
+     "N = k^2 or k(k+1)",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     [](const method_descriptor& d, option_reader& r) {
+       return create_over<cmj_theory>(d, r, "cmj");
      }},
     {"latin_hypercube",
      "Latin hypercube sampling (McKay et al. 1979)",

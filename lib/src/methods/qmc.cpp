@@ -1,8 +1,9 @@
-// Randomized quasi-Monte Carlo as methods: `sobol`, `halton` and `lattice`, each the sample mean
-// of f over the quasi-Monte Carlo set of estimators/point_set_catalogue.hpp it is named after
-// (docs/theory.md#quasi-monte-carlo). Its keys are the set's own (its point_set_option table:
-// `randomization`, the lattice's `periodization`, Sobol's `allow_any_n` and `drop_first_point`;
-// `quadmc list` prints each with its values) and the label gets the values given, plus
+// Randomized quasi-Monte Carlo as methods: `sobol`, `halton`, `lattice`, `padded_sobol` and
+// `pmj02`, each the sample mean of f over the quasi-Monte Carlo set of
+// estimators/point_set_catalogue.hpp it is named after (docs/theory.md#quasi-monte-carlo). Its keys
+// are the set's own (its point_set_option table: `randomization`, the lattice's `periodization`,
+// Sobol's `allow_any_n` and `drop_first_point`; `quadmc list` prints each with its values) and the
+// label gets the values given, plus
 //   points            explicit N per cell (an increasing list), replacing budget.N; each must be
 //                     2^m where the set needs it, else the key fails naming the nearest valid
 //                     sizes.
@@ -70,13 +71,13 @@ class qmc_method final : public method {
   std::string label_suffix() const override { return options_.label_suffix; }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {
-    if (f.s <= set_->max_dimension) return std::nullopt;
+    if (set_->max_dimension == 0 || f.s <= set_->max_dimension) return std::nullopt;
     return fmt::format("the {} points have at most {} dimensions; the integrand has s = {}",
                        set_->name, set_->max_dimension, f.s);
   }
 
   sizing size_for(std::uint64_t N, std::size_t s) const override {
-    if (s > set_->max_dimension) {
+    if (set_->max_dimension != 0 && s > set_->max_dimension) {
       return {std::nullopt, fmt::format("s = {} is above the {} points' {} dimensions", s,
                                         set_->name, set_->max_dimension)};
     }
@@ -99,6 +100,12 @@ class qmc_method final : public method {
 
   theoretical_rate theory(const integrand_class& f) const override {
     const point_set_theory said = *set_->theory_of(options_.set);
+    if (said.padded && f.s > 2) {
+      return root_n_rate(f,
+                         "padding: only the pairs of dimensions are nets, associated at random; "
+                         "plain MC rate unless f is a sum of 2D parts",
+                         "docs/theory.md#padded-jittered; [Pharr et al. 2023, §8.5]; [Owen 1998]");
+    }
     switch (said.basis) {
       case rate_basis::scrambled_net:
         return with_prefix(said.note, scrambled_net_rate(f));
@@ -211,13 +218,21 @@ struct qmc_method_spec {
   std::string_view description;
   std::string_view points;
 };
-constexpr std::array<qmc_method_spec, 3> specs{{
+constexpr std::array<qmc_method_spec, 5> specs{{
     {"sobol",
      "randomized Sobol' points (Joe-Kuo directions, Gray-code order), N = 2^m; error bars from "
      "replicates",
      "explicit N per cell (an integer or an increasing list), replacing budget.N; 2^m "
      "unless allow_any_n"},
     {"halton", "randomized Halton points in the first s prime bases; error bars from replicates",
+     "explicit N per cell (an integer or an increasing list), replacing budget.N"},
+    {"padded_sobol",
+     "scrambled 2D Sobol' nets per pair of dimensions, shuffled across pairs (pbrt-v4's "
+     "PaddedSobolSampler), N = 2^m; error bars from replicates",
+     "explicit N per cell (2^m, an integer or an increasing list), replacing budget.N"},
+    {"pmj02",
+     "progressive multi-jittered (0,2) sequence per pair of dimensions, padded, any N; error "
+     "bars from replicates",
      "explicit N per cell (an integer or an increasing list), replacing budget.N"},
     {"lattice",
      "randomly shifted rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20; error bars "

@@ -38,7 +38,8 @@ enum class point_count {
   any,             // every N ≥ 1 (independent points, Latin hypercube, Halton)
   perfect_power,   // one point per cell of a k^s grid: N = k^s (jittered, unjittered)
   perfect_square,  // k × k 2D strata padded across dimension pairs: N = k² (any N in 1D)
-  power_of_two,    // a (t, m, s)-net or an embedded lattice: N = 2^m (Sobol', lattice)
+  near_square,  // k × k or k × (k + 1) 2D cells padded across pairs: N = k², k(k + 1) (any in 1D)
+  power_of_two,  // a (t, m, s)-net or an embedded lattice: N = 2^m (Sobol', lattice)
 };
 
 // How a quasi-Monte Carlo set is randomized (the `randomization` of the sobol, halton and lattice
@@ -98,6 +99,9 @@ struct point_set_theory {
   std::string note;  // scrambled_net, shifted_lattice: a prefix to the block's own note, if any
   std::string_view source;
   bool baker = false;
+  // The basis holds for s ≤ 2 only: a set padded across pairs of dimensions, whose pairs are
+  // associated at random, has plain Monte Carlo's rate beyond (docs/theory.md#padded-jittered).
+  bool padded = false;
 };
 
 // The strata a set fills with exactly one point each, by construction: the k^s cells of a grid
