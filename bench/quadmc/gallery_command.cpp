@@ -11,6 +11,7 @@
 #include "quadmc/report/staged_output.hpp"
 #include "quadmc/report/table_leaders.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
+#include "quadmc/sampling/net_quality.hpp"
 #include "quadmc/sampling/periodogram.hpp"
 #include "quadmc/sampling/point_file.hpp"
 
@@ -89,6 +90,10 @@ struct discrepancy_row {
   quadmc::l2_discrepancies shown;  // of stream 0, the pictured points
   quadmc::l2_discrepancies rms;    // root mean square over the realizations
   std::uint64_t realizations = 0;
+  // sampling/net_quality.hpp over the same realizations (every gallery size is 2^m): the largest
+  // t-value, and the mean minimum distance over the densest packing's.
+  unsigned t_value_max = 0;
+  double min_distance_mean = 0.0;
 };
 
 struct set_result {
@@ -173,8 +178,11 @@ set_result compute_set(const gallery_set& set, const gallery_request& r,
       squares[0] += d.l2_star * d.l2_star;
       squares[1] += d.centered * d.centered;
       squares[2] += d.wraparound * d.wraparound;
+      row.t_value_max = std::max(row.t_value_max, *quadmc::net_t_value(x, dimension));
+      row.min_distance_mean += quadmc::normalized_min_distance(x, dimension);
     }
     const double R = static_cast<double>(d_realizations);
+    row.min_distance_mean /= R;
     row.rms = {std::sqrt(squares[0] / R), std::sqrt(squares[1] / R), std::sqrt(squares[2] / R)};
     out.discrepancy.push_back(row);
   }
@@ -234,13 +242,15 @@ std::string strata_csv(const std::vector<set_result>& results) {
 }
 
 std::string discrepancy_csv(const std::vector<set_result>& results) {
-  std::string text = line({"set", "n", "realizations", "l2_star", "centered", "wraparound",
-                           "l2_star_rms", "centered_rms", "wraparound_rms"});
+  std::string text =
+      line({"set", "n", "realizations", "l2_star", "centered", "wraparound", "l2_star_rms",
+            "centered_rms", "wraparound_rms", "t_value_max", "min_distance_ratio_mean"});
   for (const set_result& r : results) {
     for (const discrepancy_row& d : r.discrepancy) {
       text += line({std::string(r.set->name), std::to_string(d.n), std::to_string(d.realizations),
                     number(d.shown.l2_star), number(d.shown.centered), number(d.shown.wraparound),
-                    number(d.rms.l2_star), number(d.rms.centered), number(d.rms.wraparound)});
+                    number(d.rms.l2_star), number(d.rms.centered), number(d.rms.wraparound),
+                    std::to_string(d.t_value_max), number(d.min_distance_mean)});
     }
   }
   return text;
@@ -436,25 +446,30 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
     t += "\n";
   }
   t += "\n## L2 discrepancies\n\n";
-  t += "Pictured realization (root mean square over the realizations in brackets).\n\n";
-  t += "| point set | N | D* | CD | WD |\n|---|---|---|---|---|\n";
+  t += "Pictured realization (root mean square over the realizations in brackets); t: the largest "
+       "t-value of the realizations as (t, m, 2)-nets, N = 2^m (0: every elementary interval of "
+       "area 1/N holds one point); δ: the mean minimum distance over the hexagonal packing's "
+       "(sampling/net_quality.hpp).\n\n";
+  t += "| point set | N | D* | CD | WD | t | δ |\n|---|---|---|---|---|---|---|\n";
   for (const std::uint64_t n : gallery_sizes) {
     const quadmc::l2_discrepancies e = independent_rms(n);
-    t += fmt::format("| *independent, expected* | {} | {:.4f} | {:.4f} | {:.4f} |\n", n, e.l2_star,
-                     e.centered, e.wraparound);
+    t += fmt::format("| *independent, expected* | {} | {:.4f} | {:.4f} | {:.4f} | | |\n", n,
+                     e.l2_star, e.centered, e.wraparound);
     for (const set_result& s : results) {
       for (const discrepancy_row& d : s.discrepancy) {
         if (d.n != n) continue;
-        t += fmt::format("| {} | {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) |\n",
-                         table_name(*s.set), n, d.shown.l2_star, d.rms.l2_star, d.shown.centered,
-                         d.rms.centered, d.shown.wraparound, d.rms.wraparound);
+        t += fmt::format(
+            "| {} | {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) | {} | {:.3f} |\n",
+            table_name(*s.set), n, d.shown.l2_star, d.rms.l2_star, d.shown.centered, d.rms.centered,
+            d.shown.wraparound, d.rms.wraparound, d.t_value_max, d.min_distance_mean);
       }
     }
   }
   t += "\n## Files\n\n";
   t += "`scatter.csv` (set, n, index, x1, x2), `strata.csv` (set, n, kind, columns, rows), "
        "`spectrum.csv` (set, n, realizations, radius, frequencies, mean_power, standard_error), "
-       "`discrepancy.csv` (set, n, realizations, l2_star, centered, wraparound and their _rms), "
+       "`discrepancy.csv` (set, n, realizations, l2_star, centered, wraparound and their _rms, "
+       "t_value_max, min_distance_ratio_mean), "
        "`meta.csv` (what built the command). Regenerate with `quadmc gallery` "
        "(`build/release/bench/quadmc gallery`).\n";
   if (results.back().set->entry == nullptr) {

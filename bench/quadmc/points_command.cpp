@@ -5,17 +5,21 @@
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/estimators/point_set_catalogue.hpp"
+#include "quadmc/sampling/discrepancy.hpp"
+#include "quadmc/sampling/net_quality.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
-
+#include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -88,6 +92,9 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
   }
   points->add_option("--out", request.out, "Output file (default: stdout)")
       ->check(quadmc_cli::non_empty_path());
+  points->add_flag("--report", request.report,
+                   "Instead of the points: their t-values, minimum distance and L2 discrepancies "
+                   "as CSV measure,value,note (N ≤ 2^20)");
   return points;
 }
 
@@ -115,6 +122,65 @@ constexpr double announced_bytes = 1e9;
 // The longest text of one coordinate: "0." and 17 significant digits, or an exponent form.
 constexpr double bytes_per_coordinate = 24.0;
 
+// --report's bounds (points_command.hpp): the whole set's t-value up to s = 4, the pairs' while
+// their count times N stays within 2^24 box counts per shape.
+constexpr std::size_t report_whole_t_dimension = 4;
+constexpr double report_pair_budget = 16777216.0;
+
+// The CSV of --report for the points x (row-major, s per point).
+std::string report_of(std::span<const double> x, std::size_t s) {
+  const std::size_t n = x.size() / s;
+  const bool dyadic = std::has_single_bit(n);
+  std::string out = "measure,value,note\n";
+  auto row = [&out](std::string_view measure, const std::string& value, std::string_view note) {
+    out += fmt::format("{},{},{}\n", measure, value, note);
+  };
+  row("points", std::to_string(n), "");
+  row("dimension", std::to_string(s), "");
+  if (!dyadic) {
+    row("t_value", "", "N is not a power of two");
+  } else if (s > report_whole_t_dimension) {
+    row("t_value", "", "s > 4");
+  } else {
+    row("t_value", std::to_string(*quadmc::net_t_value(x, s)), "");
+  }
+  const double pair_work =
+      static_cast<double>(s) * static_cast<double>(s - 1) / 2.0 * static_cast<double>(n);
+  if (s < 2 || !dyadic || pair_work > report_pair_budget) {
+    const std::string_view why = s < 2     ? "s = 1"
+                                 : !dyadic ? "N is not a power of two"
+                                           : "s(s - 1)/2·N > 2^24";
+    for (const std::string_view m : {"pair_t_best", "pair_t_worst", "worst_pair"}) {
+      row(m, "", why);
+    }
+  } else {
+    const quadmc::pair_t_values t = *quadmc::pairwise_t_values(x, s);
+    row("pair_t_best", std::to_string(t.best), "");
+    row("pair_t_worst", std::to_string(t.worst), "");
+    row("worst_pair", fmt::format("{}-{}", t.worst_j + 1, t.worst_k + 1), "coordinates, from 1");
+  }
+  const bool small = n <= quadmc::max_discrepancy_points;
+  if (!small) {
+    row("min_distance_ratio", "", "N > 2^14");
+  } else if (s > 8) {
+    row("min_distance_ratio", "", "s > 8 (no densest packing known)");
+  } else {
+    row("min_distance_ratio", fmt::format("{}", quadmc::normalized_min_distance(x, s)),
+        "over the densest lattice packing's");
+  }
+  if (!small) {
+    for (const std::string_view m : {"l2_star", "centered", "wraparound"}) {
+      row(m, "", "N > 2^14");
+    }
+  } else {
+    const quadmc::l2_discrepancies d = quadmc::discrepancies(x, s);
+    row("l2_star", fmt::format("{}", d.l2_star), "");
+    row("centered", fmt::format("{}", d.centered), "");
+    row("wraparound", fmt::format("{}", d.wraparound), "");
+  }
+  return out;
+}
+
 }  // namespace
 
 void run_points(const points_request& r, const std::function<bool(std::string_view)>& write) {
@@ -131,6 +197,9 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
   const std::string problem = quadmc::size_problem(*set, r.s, r.n, options);
   if (!problem.empty()) {
     throw quadmc::invalid_argument("--n", fmt::format("{} (s = {})", r.n, r.s), problem);
+  }
+  if (r.report && r.n > (std::uint64_t{1} << quadmc::max_net_log2_points)) {
+    throw quadmc::invalid_argument("--n", std::to_string(r.n), "N ≤ 2^20 with --report");
   }
 
   std::unique_ptr<std::FILE, file_closer> file;
@@ -152,12 +221,28 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
     return write(text);
   };
   const double bytes = static_cast<double>(r.n) * static_cast<double>(r.s) * bytes_per_coordinate;
-  if (bytes > announced_bytes) {
+  if (bytes > announced_bytes && !r.report) {
     const bool tera = bytes >= 1e12;
     fmt::print(stderr,
                "quadmc points: up to {:.3g} {} of text ({} points × {} coordinates) to {}\n",
                bytes / (tera ? 1e12 : 1e9), tera ? "TB" : "GB", r.n, r.s,
                r.out.empty() ? "standard output" : r.out);
+  }
+  if (r.report) {
+    std::vector<double> x;
+    x.reserve(r.n * r.s);
+    set->points(
+        r.s, r.n, {r.seed, r.stream},
+        [&](std::uint64_t, std::span<const double> batch) {
+          x.insert(x.end(), batch.begin(), batch.end());
+        },
+        options);
+    if (!emit(report_of(x, r.s))) return;
+    if (file && std::fclose(file.release()) != 0) {
+      throw std::runtime_error(
+          fmt::format("--out {}: close failed: {}", r.out, std::strerror(errno)));
+    }
+    return;
   }
   std::string text;
   for (std::size_t j = 0; j < r.s; ++j) text += fmt::format("{}x{}", j == 0 ? "" : ",", j + 1);

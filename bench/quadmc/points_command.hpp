@@ -9,6 +9,12 @@
 // K, stream, options) give bitwise the same file. Extra flags beyond the fixed form: --stream, and
 // each key a set of the catalogue has as --key ('-' for '_'): --randomization and --periodization
 // (a value), --allow-any-n and --drop-first-point (flags); the sets read their own values.
+// With --report the command writes, instead of the points, what they are as a net and a packing
+// (sampling/net_quality.hpp) and their L2 discrepancies (sampling/discrepancy.hpp), as CSV
+// measure,value,note: the whole set's t-value (N = 2^m, s ≤ 4), the best and worst t over the
+// projections on pairs of coordinates and the first worst pair (N = 2^m, s(s − 1)/2·N ≤ 2^24),
+// the minimum distance over the densest packing's (N ≤ 2^14, s ≤ 8), the discrepancies
+// (N ≤ 2^14); a measure beyond its bound has an empty value and the bound as its note. N ≤ 2^20.
 // Exit status as for every subcommand: 1 for values the set refuses (an unknown set, a
 // randomization it has not, N not 2^m for a randomized net), 2 for usage errors (a missing or
 // malformed flag).
@@ -33,7 +39,8 @@ struct points_request {
   // The point sets' own options given (--randomization owen, --allow-any-n): key → value, "true"
   // for a flag; a key not given is absent (the set's default).
   std::map<std::string, std::string, std::less<>> set_options;
-  std::string out;  // empty: stdout
+  std::string out;      // empty: stdout
+  bool report = false;  // --report: the set's net quality and discrepancies, not its points
 };
 
 // Adds the `points` subcommand to `app`, filling `request` when it is parsed.

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -76,6 +77,33 @@ TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
   }
   EXPECT_EQ(sets.size(), 11u);
   EXPECT_EQ(spectrum.rows.size(), 11u * 64u);
+}
+
+// discrepancy.csv's t-values (sampling/net_quality.hpp): the scrambled nets of every size are
+// (0, m, 2)-nets; the randomly shifted k × k grid of centres, k = 2^(m/2), has t = m/2 exactly
+// (a dyadic box no thinner than a cell holds its share of the columns and rows of any shifted
+// grid; a thinner one misses some); every set reports a positive minimum distance (it may exceed
+// the packing's at small N, where the square's sides leave room: 16 points can be 1/3 apart).
+TEST_F(GalleryCommand, NetsHaveTZeroAndShiftedGridsHalfOfM) {
+  ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
+  const quadmc::csv_table d = table("discrepancy.csv");
+  int checked = 0;
+  for (const auto& row : d.rows) {
+    const std::string set = row[d.column("set")];
+    const auto n = std::stoull(row[d.column("n")]);
+    const std::string t = row[d.column("t_value_max")];
+    if (set == "sobol" || set == "padded_sobol" || set == "pmj02") {
+      EXPECT_EQ(t, "0") << set << " N = " << n;
+      ++checked;
+    } else if (set == "unjittered") {
+      EXPECT_EQ(t, std::to_string(std::countr_zero(n) / 2)) << "N = " << n;
+      ++checked;
+    }
+    const double delta = std::stod(row[d.column("min_distance_ratio_mean")]);
+    EXPECT_GT(delta, 0.0) << set << " N = " << n;
+    EXPECT_TRUE(std::isfinite(delta)) << set << " N = " << n;
+  }
+  EXPECT_EQ(checked, 16);
 }
 
 // Every grid strata.csv lists is checked against the points of scatter.csv: `cells` means each

@@ -224,5 +224,37 @@ TEST(QmcScene, ExplicitPointsThatAreNoPowerOfTwoFailAtTheKey) {
   EXPECT_NE(r.err.find("nearest valid sizes 512 and 1024"), std::string::npos) << describe(r);
 }
 
+// The value of `measure` in a --report CSV (measure,value,note), or "?" when it is missing.
+std::string reported(const std::string& csv, const std::string& measure) {
+  const std::size_t at = csv.find("\n" + measure + ",");
+  if (at == std::string::npos) return "?";
+  const std::size_t begin = at + measure.size() + 2;
+  return csv.substr(begin, csv.find(',', begin) - begin);
+}
+
+// --report: pmj02's pairs (0, 1) and (2, 3) are (0, 10, 2)-nets and its cross pairs are not; the
+// whole set's t is given at s = 4 and left out, with the reason, where N is not 2^m; a --report
+// beyond 2^20 points is refused naming --n.
+TEST(PointsCommand, ReportStatesTheNetAndPackingOfTheSet) {
+  scratch_folder dir;
+  const command_result r =
+      run_quadmc(dir, {"points", "pmj02", "--n", "1024", "--s", "4", "--seed", "3", "--report"});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_EQ(r.out.rfind("measure,value,note\npoints,1024,\ndimension,4,\n", 0), 0u) << r.out;
+  EXPECT_EQ(reported(r.out, "pair_t_best"), "0") << r.out;
+  EXPECT_NE(reported(r.out, "pair_t_worst"), "0") << r.out;
+  EXPECT_NE(reported(r.out, "t_value"), "?") << r.out;
+  const double ratio = std::stod(reported(r.out, "min_distance_ratio"));
+  EXPECT_GT(ratio, 0.0);
+  EXPECT_LT(ratio, 1.0);
+  const command_result wide = run_quadmc(dir, {"points", "sobol", "--n", "1000", "--s", "6",
+                                               "--seed", "3", "--allow-any-n", "--report"});
+  ASSERT_EQ(wide.exit_status, 0) << describe(wide);
+  EXPECT_NE(wide.out.find("\nt_value,,N is not a power of two\n"), std::string::npos) << wide.out;
+  expect_points_error(
+      {"points", "independent", "--n", "2000000", "--s", "1", "--seed", "1", "--report"}, "--n",
+      "N ≤ 2^20 with --report");
+}
+
 }  // namespace
 }  // namespace quadmc_cli_test

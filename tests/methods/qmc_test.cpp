@@ -144,12 +144,13 @@ TEST(QmcRates, OwenScrambledSobolFallsAtMinusThreeHalves) {
 
 // The padded sets are the same nets in s = 2: pmj02 (a nested uniform scramble of a
 // (0,2)-sequence in distribution, [Helmer et al. 2021]) and padded_sobol fit −3/2 on the same
-// integrand, ladder and allowance as Owen-scrambled Sobol' above.
+// integrand and allowance as Owen-scrambled Sobol' above, over N = 2^6 … 2^14 (a quarter of the
+// work: the slope's own sampling error grows to about 0.017, still a ninth of the allowance).
 TEST(QmcRates, PaddedNetsFallAtMinusThreeHalvesInTwoDimensions) {
   const integrand_params p = gaussian_params(2);
   const any_integrand f = make_integrand("genz_gaussian", p);
   for (const char* name : {"pmj02", "padded_sobol"}) {
-    const power_law_fit fit = fitted_rate(*make_method(name), f, p, 6, 16, 64);
+    const power_law_fit fit = fitted_rate(*make_method(name), f, p, 6, 14, 64);
     EXPECT_NEAR(fit.slope, -1.5, 0.15) << name << " [" << fit.ci_low << ", " << fit.ci_high << "]";
   }
 }

@@ -26,20 +26,25 @@ std::vector<double> points_of(const pmj02_points& p) {
   return x;
 }
 
-// 2^13 points: past the table of the first 2^12, so the chains of the later points are checked
-// too. Every prefix of 2^m points and every aligned block of 2^m is a (0, m, 2)-net, for m up to
-// 13 and three seeds.
+// Every prefix of 2^m points and every aligned block of 2^m is a (0, m, 2)-net, for m up to 13
+// and three seeds: in s = 2 from the table alone (it holds the whole set), and in s = 64, whose
+// table holds the first 2^17/64 = 2^11 points, through the chains of the later ones (the first
+// pair; the last one, whose sequence indices are shuffled, as a whole).
 TEST(Pmj02Points, EveryAlignedBlockOfTwoToTheMPointsIsANet) {
   constexpr unsigned top = 13;
-  for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    const pmj02_points p(2, std::uint64_t{1} << top, seed, 4);
-    const std::vector<double> x = points_of(p);
-    for (unsigned m = 0; m <= top; ++m) {
-      const std::uint64_t block = std::uint64_t{1} << m;
-      for (std::uint64_t first = 0; first < p.size(); first += block) {
-        ASSERT_TRUE(is_pair_net(x, 2, 0, 1, first, m))
-            << "seed " << seed << ", block of 2^" << m << " at " << first;
+  for (const std::size_t s : {2u, 64u}) {
+    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+      const pmj02_points p(s, std::uint64_t{1} << top, seed, 4);
+      const std::vector<double> x = points_of(p);
+      for (unsigned m = 0; m <= top; ++m) {
+        const std::uint64_t block = std::uint64_t{1} << m;
+        for (std::uint64_t first = 0; first < p.size(); first += block) {
+          ASSERT_TRUE(is_pair_net(x, s, 0, 1, first, m))
+              << "s = " << s << ", seed " << seed << ", block of 2^" << m << " at " << first;
+        }
       }
+      // A later pair follows its sequence at shuffled indices: the whole set is its net.
+      EXPECT_TRUE(is_pair_net(x, s, s - 2, s - 1, 0, top)) << "s = " << s << ", seed " << seed;
     }
   }
 }
@@ -106,14 +111,15 @@ TEST(Pmj02Points, EveryPairIsANetAndPairsAreShuffled) {
 }
 
 // Each point is uniform (a nested uniform scramble in distribution, [Helmer et al. 2021]): over
-// 4096 seeds, point 1000's y in 16 equal bins is within 4.9 standard deviations of 256 in each
-// (binomial, p = 1/16, sd = 15.5: a false alarm of 1e-6 per bin, 1.6e-5 for the 16).
+// 4096 seeds, point 13's y (level 3, a chain of three partners) in 16 equal bins is within 4.9
+// standard deviations of 256 in each (binomial, p = 1/16, sd = 15.5: a false alarm of 1e-6 per
+// bin, 1.6e-5 for the 16).
 TEST(Pmj02Points, EachPointIsUniform) {
   std::vector<int> bins(16, 0);
   std::vector<double> x(2);
   for (std::uint64_t r = 0; r < 4096; ++r) {
-    const pmj02_points p(2, 1024, 5, r);
-    p.generate(1000, x);
+    const pmj02_points p(2, 16, 5, r);
+    p.generate(13, x);
     ++bins[static_cast<std::size_t>(x[1] * 16)];
   }
   const double sd = std::sqrt(4096.0 * (1.0 / 16) * (15.0 / 16));

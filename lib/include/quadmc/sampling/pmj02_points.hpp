@@ -24,12 +24,13 @@
 // is distributed as a nested uniform scramble [Owen 1995] of the (0,2)-sequence: each node's flip
 // is the digit of the first point that reaches it.
 //
-// Randomness is counter-based like every set's: w_j of coordinate c is word j·s + c of
+// Randomness is counter-based like every set's: w_j of coordinate c is uniform j·s + c of
 // philox_stream(seed, stream) for the pair's own sequence index j = π_g(i) (π_0 the identity,
 // π_g for g ≥ 1 independent random permutations of [0, N) keyed from the top of the counter
 // space). Point j is a pure function of its partner chain j → p → … → 0 (at most 32 steps, one
 // per level): a batch computes each chain down to a table of the sequence's first points, built
-// once per set, so a point costs a few Philox words per coordinate and no state is carried.
+// once per set (the whole set up to 2^17 coordinates), so a point costs a lookup, or beyond the
+// table one Philox word per remaining level, and no state is carried.
 // Coordinates are 64-digit fractions, exact, whose top 53 digits become the double. A trailing
 // 1D group (odd s) is the x coordinate of a pair: a stratified (0,1)-sequence.
 #pragma once
@@ -42,6 +43,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -71,20 +73,24 @@ class pmj02_points {
     for (std::size_t g = 1; g < groups; ++g) {
       shuffles_.emplace_back(n_, rng_.bits(std::numeric_limits<std::uint64_t>::max() - g));
     }
-    // The first points of every coordinate's sequence, where every chain ends: 2^12 points, or
-    // fewer so that the table stays within 2^16 words in high dimensions (each entry is the
-    // chain's value, so the table changes no bit, only the chain's length).
+    // The first points of every coordinate's sequence, where every chain ends: up to 2^17
+    // fractions in all (1 MiB; the whole set for N ≤ 2^16 in 2D), each the chain's value, so the
+    // table changes no bit, only the chain's length. Its words come from one vectorized pass
+    // over the stream's uniforms [0, T·s) (philox_stream::fill_uniform), then one recurrence per
+    // coordinate: a few nanoseconds per point.
     const std::uint64_t per_coordinate =
-        std::bit_floor(std::max<std::uint64_t>(1, (std::uint64_t{1} << 16) / s_));
-    table_size_ = std::min({n_, std::uint64_t{1} << 12, per_coordinate});
+        std::bit_floor(std::max<std::uint64_t>(1, (std::uint64_t{1} << 17) / s_));
+    table_size_ = std::min(n_, per_coordinate);
+    std::vector<double> uniforms(table_size_ * s_);
+    rng_.fill_uniform(0, uniforms);
     table_.resize(table_size_ * s_);
     for (std::size_t c = 0; c < s_; ++c) {
       const std::span<const std::uint32_t, 32> a = offsets(c);
       std::uint64_t* t = table_.data() + c * table_size_;
-      t[0] = word(0, c);
+      t[0] = word_of(uniforms[c]);
       for (std::uint64_t j = 1; j < table_size_; ++j) {
         const int level = std::bit_width(j) - 1;
-        t[j] = step(t[partner(j, level, a)], j, level, c);
+        t[j] = step(t[partner(j, level, a)], word_of(uniforms[j * s_ + c]), level);
       }
     }
   }
@@ -135,7 +141,7 @@ class pmj02_points {
     std::uint64_t v = table_[c * table_size_ + q];
     while (length > 0) {
       const std::uint64_t r = chain[--length];
-      v = step(v, r, std::bit_width(r) - 1, c);
+      v = step(v, word_of(rng_.uniform(r * s_ + c)), std::bit_width(r) - 1);
     }
     return v;
   }
@@ -150,16 +156,18 @@ class pmj02_points {
                                std::span<const std::uint32_t, 32> a) noexcept {
     return (j - (std::uint64_t{1} << level)) ^ a[static_cast<std::size_t>(level)];
   }
-  std::uint64_t word(std::uint64_t j, std::size_t c) const noexcept {
-    return rng_.bits(j * s_ + c);
+  // w_j of coordinate c is uniform number j·s + c of the stream as a 53-digit fraction: the
+  // point's double keeps 53 digits, of which w_j supplies all but the level + 1 ≤ 32 fixed ones,
+  // so its 53 are as many as can show.
+  static std::uint64_t word_of(double uniform) noexcept {
+    return static_cast<std::uint64_t>(std::ldexp(uniform, 53)) << 11;
   }
   // x_j from its partner's x_p: the other half of their shared interval of width 2^−level, at a
   // uniform position inside it (level + 1 ≤ 32 digits fixed, the rest from w_j).
-  std::uint64_t step(std::uint64_t partner_value, std::uint64_t j, int level,
-                     std::size_t c) const noexcept {
+  static std::uint64_t step(std::uint64_t partner_value, std::uint64_t w, int level) noexcept {
     const int width = level + 1;
     const std::uint64_t interval = (partner_value >> (64 - width)) ^ 1;
-    return (interval << (64 - width)) | (word(j, c) >> width);
+    return (interval << (64 - width)) | (w >> width);
   }
 
   std::size_t s_;
