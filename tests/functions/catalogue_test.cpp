@@ -104,7 +104,7 @@ TEST(Catalogue, KeysAreDocumentedAndNamesUnique) {
       EXPECT_FALSE(key.choices.empty()) << e.name << " " << key.key;
     }
   }
-  EXPECT_EQ(names.size(), 28u);
+  EXPECT_EQ(names.size(), 31u);
 }
 
 // The planner draws an instance from (seed, family, s, k) before building it, so it needs the

@@ -8,6 +8,7 @@
 #include "quadmc/functions/irradiance.hpp"
 #include "quadmc/functions/ishigami.hpp"
 #include "quadmc/functions/keister.hpp"
+#include "quadmc/functions/random_regions.hpp"
 #include "quadmc/functions/sobol_g.hpp"
 #include "quadmc/functions/stability_1d.hpp"
 
@@ -37,6 +38,9 @@ constexpr std::array<std::string_view, 1> t_key{"t"};
 constexpr std::array<std::string_view, 1> a_key{"a"};
 constexpr std::array<std::string_view, 2> irradiance_keys{"occluder", "radiance"};
 constexpr std::array<std::string_view, 2> ab_keys{"a", "b"};
+constexpr std::array<std::string_view, 2> heaviside_keys{"normal", "point"};
+constexpr std::array<std::string_view, 2> gaussian_bump_keys{"mean", "scales"};
+constexpr std::array<std::string_view, 1> angle_key{"angle"};
 constexpr std::array<string_key, 1> genz_string_keys{{{"coefficient_decay", genz_decay_names}}};
 constexpr std::array<std::string_view, 5> option_keys{"spot", "strike", "rate", "volatility",
                                                       "maturity"};
@@ -154,6 +158,43 @@ any_integrand make_half_space(const integrand_params& p) {
   return any_integrand(half_space_indicator(std::move(w), scalar_or(p, "t", t)));
 }
 
+// The random-region families (random_regions.hpp): omitted parameters drawn from the seed.
+any_integrand make_heaviside_random(const integrand_params& p) {
+  const std::size_t s = dimension_or(p, 1);
+  heaviside_parameters drawn = heaviside_random_parameters(s, p.seed);
+  return any_integrand(heaviside_random(vector_of_length(p, "normal", s, std::move(drawn.normal)),
+                                        vector_of_length(p, "point", s, std::move(drawn.point))));
+}
+drawn_parameters draw_heaviside_random(const integrand_params& p) {
+  heaviside_parameters drawn = heaviside_random_parameters(p.dimension, p.seed);
+  return {{"normal", std::move(drawn.normal)}, {"point", std::move(drawn.point)}};
+}
+
+any_integrand make_disk_random(const integrand_params& p) {
+  require_fixed_dimension(p, 2, "disk_random");
+  disk_parameters drawn = disk_random_parameters(p.seed);
+  return any_integrand(disk_random(vector_of_length(p, "center", 2, std::move(drawn.center)),
+                                   scalar_or(p, "r", drawn.r)));
+}
+drawn_parameters draw_disk_random(const integrand_params& p) {
+  disk_parameters drawn = disk_random_parameters(p.seed);
+  return {{"center", std::move(drawn.center)}, {"r", {drawn.r}}};
+}
+
+any_integrand make_gaussian_random(const integrand_params& p) {
+  require_fixed_dimension(p, 2, "gaussian_random");
+  gaussian_2d_parameters drawn = gaussian_random_parameters(p.seed);
+  return any_integrand(gaussian_random(vector_of_length(p, "mean", 2, std::move(drawn.mean)),
+                                       vector_of_length(p, "scales", 2, std::move(drawn.scales)),
+                                       scalar_or(p, "angle", drawn.angle)));
+}
+drawn_parameters draw_gaussian_random(const integrand_params& p) {
+  gaussian_2d_parameters drawn = gaussian_random_parameters(p.seed);
+  return {{"mean", std::move(drawn.mean)},
+          {"scales", std::move(drawn.scales)},
+          {"angle", {drawn.angle}}};
+}
+
 any_integrand make_sobol_g(const integrand_params& p) {
   const std::size_t s = dimension_or(p, 1);
   require(s >= 1, "dimension", s, "s ≥ 1");
@@ -186,7 +227,7 @@ any_integrand make_irradiance(const integrand_params& p) {
   return any_integrand(Family(make_irradiance_setup(p)));
 }
 
-const std::array<catalogue_entry, 28> entries = {{
+const std::array<catalogue_entry, 31> entries = {{
     {"genz_oscillatory", "cos(2πu₁ + Σ aᵢxᵢ) on [0,1]^s", "analytic", genz_vector_keys, no_keys,
      genz_doc, make_genz<genz_oscillatory, genz_family::oscillatory>,
      draw_genz<genz_family::oscillatory>, false, false, 0, genz_string_keys},
@@ -237,9 +278,28 @@ const std::array<catalogue_entry, 28> entries = {{
      "inside the cube",
      make_disk, nullptr, false, false, 0},
     {"half_space", "1 if Σ wᵢxᵢ ≤ t else 0 on [0,1]^s", "discontinuous", w_key, t_key,
-     "w: weights > 0 of any magnitude, within 2^1021 of each other, length s (default all 1); t: "
-     "in (0, Σw) (default 0.6·Σw); s ≤ 20",
+     "w: non-zero weights of any sign and magnitude, within 2^1021 of each other, length s "
+     "(default all 1); t: in (Σ of the negative wᵢ, Σ of the positive wᵢ) (default 0.6·Σw); "
+     "s ≤ 20",
      make_half_space, nullptr, false, true, 0},
+    {"heaviside_random", "1 if n·(x − p) ≤ 0 else 0 on [0,1]^s, a random edge", "discontinuous",
+     heaviside_keys, no_keys,
+     "normal: non-zero, length s (default: a uniform unit vector drawn from seed); point: in "
+     "[0,1]^s, on the plane (default: uniform, drawn from seed); s ≤ 20",
+     make_heaviside_random, draw_heaviside_random, false, true, 0},
+    {"disk_random", "1 if ‖x − center‖ ≤ r else 0 on [0,1]², the disk clipped to the square",
+     "discontinuous", center_key, r_key,
+     "center: in [0,1]² (default uniform, drawn from seed); r: 0 < r ≤ 1 (default uniform in "
+     "[0.1, 0.4], drawn from seed); dimension 2",
+     make_disk_random, draw_disk_random, false, false, 2},
+    {"gaussian_random",
+     "exp(−½ (x − mean)ᵀ R diag(scales⁻²) Rᵀ (x − mean)) on [0,1]², R the "
+     "rotation by angle",
+     "analytic", gaussian_bump_keys, angle_key,
+     "mean: in [0,1]² (default uniform); scales: σ₁, σ₂ in [0.01, 10] (default log-uniform in "
+     "[0.05, 0.5]); angle: radians (default uniform in [0, π)); all drawn from seed when "
+     "omitted; dimension 2",
+     make_gaussian_random, draw_gaussian_random, false, false, 2},
     {"sobol_g", "Π (|4xᵢ − 2| + aᵢ)/(1 + aᵢ) on [0,1]^s", "C0", a_key, no_keys,
      "a: aᵢ ≥ 0, length s (default aᵢ = (i − 1)/2)", make_sobol_g, nullptr, false, false, 0},
     {"keister", "π^{s/2}·cos(‖Φ⁻¹(x)‖/√2) on [0,1]^s", "singular", no_keys, no_keys,

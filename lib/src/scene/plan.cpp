@@ -121,7 +121,8 @@ std::string_view leading_identifier(std::string_view parameter) {
 }
 
 // The parameters of f drawn from the seed (catalogue_entry::drawn): those the family draws and
-// the scene does not give, each with its values for instance seed `seed`. Empty when every
+// the scene does not give (a drawn scalar, as disk_random's r, is a vector of one value), each
+// with its values for instance seed `seed`. Empty when every
 // instance of an ensemble is the same integrand.
 drawn_parameters drawn_for(const integrand_spec& f, std::size_t s, std::uint64_t seed) {
   drawn_parameters out;
@@ -132,7 +133,7 @@ drawn_parameters drawn_for(const integrand_spec& f, std::size_t s, std::uint64_t
   params.seed = seed;
   params.strings = f.strings;  // how a draw is shaped (Genz coefficient_decay)
   for (auto& [key, values] : entry->drawn(params)) {
-    if (!f.vectors.contains(key)) out.emplace(key, std::move(values));
+    if (!f.vectors.contains(key) && !f.scalars.contains(key)) out.emplace(key, std::move(values));
   }
   return out;
 }

@@ -3,7 +3,10 @@
 //
 //   disk_indicator  1 if ‖x − c‖ ≤ r   volume π^{s/2} r^s / Γ(s/2 + 1)   (inside the cube; a
 //                                      disk in 2D, a ball otherwise: one name in every s)
-//   half_space  1 if Σ wᵢxᵢ ≤ t, wᵢ > 0   volume Σ_{v∈{0,1}^s} (−1)^{|v|} (t − w·v)₊^s / (s!·Π wᵢ)
+//   half_space  1 if Σ wᵢxᵢ ≤ t, wᵢ ≠ 0  volume Σ_{v∈{0,1}^s} (−1)^{|v|} (t' − |w|·v)₊^s /
+//   (s!·Π|wᵢ|)
+//                                      with t' = t + Σ_(wᵢ<0) |wᵢ| (each axis of a negative weight
+//                                      reflected, x ↦ 1 − x, which keeps the volume)
 //
 // The half-space volume is the cube-slice formula (Barrow & Smith, "Spline notation applied to a
 // volume problem", Amer. Math. Monthly 86, 1979), an alternating sum over the 2^s vertices:
@@ -100,7 +103,7 @@ class half_space_indicator {
   static constexpr std::size_t max_dimension = 20;  // the closed form sums 2^s terms
   static constexpr double max_relative_error = 1e-10;
 
-  // The plane must cut the cube: 0 < t < Σw.
+  // The plane must cut the cube: Σ_(wᵢ<0) wᵢ < t < Σ_(wᵢ>0) wᵢ (0 < t < Σw for positive w).
   //
   // The region {Σ wᵢxᵢ ≤ t} does not change when w and t are multiplied by the same c > 0, so
   // both are divided by c = 2^⌊log₂ max wᵢ⌋ first, which is exact (a power of two): the largest
@@ -129,7 +132,8 @@ class half_space_indicator {
                                  error_bound_),
         .regularity = smoothness::discontinuous};
     info.derivative_bound[0] = 1.0;
-    // In 1D, 1{w·x ≤ t} with 0 < t < w is a jump of size 1 at t/w (f(t/w) = 1, the left limit;
+    // In 1D, 1{w·x ≤ t} with the plane inside is a jump of size 1 at t/w (f(t/w) = 1, the left
+    // limit for w > 0, the right one for w < 0;
     // where fl(w·x) switches differs from t/w by rounding only, and the envelopes do not depend
     // on where the jump is).
     if (w_.size() == 1) {
