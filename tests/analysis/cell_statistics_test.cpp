@@ -292,6 +292,10 @@ TEST(CellStatistics, DiscrepancyColumnsAreRootMeanSquaresOrEmpty) {
   const cell_statistics c = compute_cell_statistics(reps, 1.0, error_bars::replicates);
   EXPECT_NEAR(c.l2_star_discrepancy, std::sqrt((0.09 + 0.16) / 2), 1e-15);
   EXPECT_TRUE(std::isnan(c.centered_discrepancy)) << "no repetition measured it";
+  // An ensemble measures its first instance only: the others' NaN are left out, not zeros.
+  reps.push_back({1.0, nan, 8, 0.1});
+  const cell_statistics pooled = compute_cell_statistics(reps, 1.0, error_bars::replicates);
+  EXPECT_NEAR(pooled.l2_star_discrepancy, std::sqrt((0.09 + 0.16) / 2), 1e-15);
 }
 
 }  // namespace

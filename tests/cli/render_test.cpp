@@ -136,7 +136,7 @@ TEST(RenderCommandWithoutImages, BundledSceneRuns) {
   write_text(dir / "render.toml", text);
   const command_result r = run_quadmc(dir, {"render", "render.toml"});
   ASSERT_EQ(r.exit_status, 0) << describe(r);
-  EXPECT_NE(r.out.find("3 estimators × 5 point sets × spp 1, 4, 16, 64 = 60 images"),
+  EXPECT_NE(r.out.find("3 estimators × 8 point sets × spp 1, 4, 16, 64 = 96 images"),
             std::string::npos)
       << r.out;
   EXPECT_TRUE(fs::exists(dir / "results" / "render" / "light_sampling.csv"));

@@ -67,7 +67,8 @@ TEST(ResultsCsv, ExactHeaderLines) {
             "smoothness,envelope,tolerance,error_estimate,estimate_covers,estimate_covers_3x,"
             "chi2_per_dof,q_value,replicate_std_error,l2_star_discrepancy,centered_discrepancy,"
             "wraparound_discrepancy,predicted_error,prediction_ratio,local_slope,rounding_level,"
-            "seconds_per_estimate,seconds_spread,timed_estimates,reached");
+            "seconds_per_estimate,seconds_spread,timed_estimates,reached,instances,mse_mean,"
+            "mse_ci95_low,mse_ci95_high,mse_median,mse_worst");
   const std::string slopes = slopes_csv_text("default", tables);
   EXPECT_EQ(slopes.substr(0, slopes.find('\n')),
             "scene,integrand,s,method,slope,ci_low,ci_high,theory,verdict,points_used,"

@@ -210,9 +210,21 @@ N = [64, 256, 1024]
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(series.cells[k].n, (std::uint64_t{64} << (2 * k)));
     EXPECT_EQ(series.cells[k].repetitions.size(), 12u) << "3 instances × 4 repetitions";
+    EXPECT_EQ(series.cells[k].instances, 3u);
   }
   const convergence_table table = analyse_convergence(series);
   EXPECT_EQ(table.rows.size(), 3u);
+  // The ensemble's statistics: the mean of the instances' MSE is the pooled RMSE squared, the
+  // median and the worst instance bracket it.
+  for (const convergence_row& row : table.rows) {
+    EXPECT_EQ(row.ensemble.instances, 3u);
+    EXPECT_NEAR(row.ensemble.mse_mean, row.stats.rmse * row.stats.rmse,
+                1e-12 * row.ensemble.mse_mean);
+    EXPECT_LE(row.ensemble.mse_median, row.ensemble.mse_worst);
+    EXPECT_GE(row.ensemble.mse_worst, row.ensemble.mse_mean);
+    EXPECT_LE(row.ensemble.mse_ci95_low, row.ensemble.mse_mean);
+    EXPECT_GE(row.ensemble.mse_ci95_high, row.ensemble.mse_mean);
+  }
 }
 
 // Threads: an empty run_options::threads takes the scene's, an explicit 0 means all cores (not

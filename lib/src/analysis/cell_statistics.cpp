@@ -211,15 +211,19 @@ cell_statistics compute_cell_statistics(std::span<const repetition_result> repet
       }
     }
   }
-  // Root mean squares of the point sets' discrepancies (each ≤ a few units: no scaling needed).
+  // Root mean squares of the point sets' discrepancies (each ≤ a few units: no scaling needed)
+  // over the repetitions that measured them: all of a cell's, or an ensemble's first instance's.
   auto root_mean_square = [&](double repetition_result::*field) {
     neumaier_sum sum;
+    std::size_t measured = 0;
     for (const repetition_result& rep : repetitions) {
       const double d = rep.*field;
-      if (std::isnan(d)) return std::numeric_limits<double>::quiet_NaN();
+      if (std::isnan(d)) continue;
       sum += d * d;
+      ++measured;
     }
-    return std::sqrt(sum.value() / count);
+    return measured == 0 ? std::numeric_limits<double>::quiet_NaN()
+                         : std::sqrt(sum.value() / static_cast<double>(measured));
   };
   out.l2_star_discrepancy = root_mean_square(&repetition_result::l2_star_discrepancy);
   out.centered_discrepancy = root_mean_square(&repetition_result::centered_discrepancy);

@@ -364,6 +364,10 @@ convergence_table analyse_convergence(const convergence_series& series,
     row.timing = cell->timing;
     try {
       row.stats = compute_cell_statistics(cell->repetitions, series.reference, series.errors);
+      if (cell->instances > 1) {
+        row.ensemble =
+            compute_ensemble_statistics(cell->repetitions, series.reference, cell->instances);
+      }
     } catch (const invalid_argument& e) {
       throw invalid_argument(fmt::format("{}: {}", where, e.what()));
     }

@@ -233,6 +233,36 @@ std::string effective_dimension_section(std::span<const effective_dimension_row>
          body + "\n";
 }
 
+// Ensembles (ensemble_statistics.hpp), per series at its largest N: the mean of the instances'
+// MSE with its 95% interval, the median and the worst instance, and the slope of the mean MSE
+// (twice the fitted RMSE slope: RMSE² = mean MSE). Empty when no series pools instances.
+std::string ensemble_section(std::span<const convergence_table> tables) {
+  std::string body;
+  for (const convergence_table& t : tables) {
+    if (t.rows.empty() || t.rows.back().ensemble.instances <= 1) continue;
+    const convergence_row& r = t.rows.back();
+    const ensemble_statistics& e = r.ensemble;
+    const std::string slope = std::isnan(t.fit.slope)
+                                  ? std::string("–")
+                                  : fmt::format("{:.2f} [{:.2f}, {:.2f}]", 2 * t.fit.slope,
+                                                2 * t.fit.ci_low, 2 * t.fit.ci_high);
+    body += fmt::format("| {} | {} | {} | {} | {} | {} [{}, {}] | {} | {} | {:.1f} | {} |\n",
+                        cell(t.integrand), t.s, cell(t.method), r.stats.evaluations, e.instances,
+                        sci(e.mse_mean), sci(e.mse_ci95_low), sci(e.mse_ci95_high),
+                        sci(e.mse_median), sci(e.mse_worst), e.mse_worst / e.mse_median, slope);
+  }
+  if (body.empty()) return {};
+  return "## Ensembles\n\n"
+         "Per series at its largest N, over the instances of the ensemble (each instance its own "
+         "random integrand, docs/theory.md#random-ensembles): the mean squared error with its 95% "
+         "Student interval, the median and the worst instance, the worst over the median, and the "
+         "slope of the mean MSE against N with its 95% interval (twice the RMSE slope of the "
+         "slope table). Per cell: columns `mse_mean` … `mse_worst` of `convergence.csv`.\n\n"
+         "| integrand | s | method | N | instances | MSE mean [95% CI] | median | worst | "
+         "worst/median | MSE slope |\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n" +
+         body + "\n";
+}
+
 std::string targets_not_reached(std::span<const convergence_table> tables) {
   bool any_tolerance = false;
   std::string list;
@@ -455,6 +485,7 @@ std::string render_results_markdown(const run_info& info,
                     t.points_used(), t.floor_points(), cell(t.verdict_reason));
   }
   out += '\n';
+  out += ensemble_section(tables);
 
   // The floor rule of rounding_floor.hpp, per series: the smallest error reached before rounding
   // took over, absolute and relative to |I|, and where the floor began (reported as each method's

@@ -121,7 +121,13 @@ std::string convergence_csv_text(std::string_view scene,
                                                number(row.timing.seconds_per_estimate),
                                                number(row.timing.spread),
                                                fmt::format("{}", row.timing.estimates),
-                                               number(c.reached)};
+                                               number(c.reached),
+                                               fmt::format("{}", row.ensemble.instances),
+                                               number(row.ensemble.mse_mean),
+                                               number(row.ensemble.mse_ci95_low),
+                                               number(row.ensemble.mse_ci95_high),
+                                               number(row.ensemble.mse_median),
+                                               number(row.ensemble.mse_worst)};
       out += csv_line(fields);
     }
   }

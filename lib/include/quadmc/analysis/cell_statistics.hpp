@@ -38,7 +38,9 @@
 //                     standard error of estimate_mean, whose 95% interval is
 //                     estimate_mean ± t(0.975, R − 1)·replicate_std_error; NaN for R = 1.
 //   *_discrepancy     √(Σ D_r²/R) of the repetitions' point-set discrepancies
-//                     (sampling/discrepancy.hpp); NaN when any repetition has none.
+//                     (sampling/discrepancy.hpp), over the repetitions that measured them (an
+//                     ensemble measures its first instance's: the others' points are more
+//                     randomizations of the same set); NaN when none did.
 //
 // Error bars from replicates (error_bars::replicates: randomized quasi-Monte Carlo, whose single
 // run cannot estimate its own error, docs/theory.md#replicate-error-bars): the R repetitions are

@@ -32,6 +32,7 @@
 
 #include "quadmc/analysis/cell_statistics.hpp"
 #include "quadmc/analysis/cell_timing.hpp"
+#include "quadmc/analysis/ensemble_statistics.hpp"
 #include "quadmc/analysis/error_prediction.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/analysis/rounding_floor.hpp"
@@ -65,6 +66,9 @@ struct convergence_cell {
   // The stable time of one estimate (cell_timing.hpp); untimed (estimates = 0) in a cell built
   // by hand, whose time per estimate is then its repetitions' mean.
   cell_timing timing;
+  // The instances of an ensemble whose repetitions the cell pools, R each, in instance order
+  // (ensemble_statistics.hpp); 1 for one integrand.
+  std::size_t instances = 1;
 };
 
 // Input: one series, as the runner assembles it.
@@ -111,6 +115,9 @@ struct convergence_row {
   std::uint64_t n = 0;
   double tolerance = std::numeric_limits<double>::quiet_NaN();  // convergence_cell::tolerance
   cell_statistics stats;
+  // Per instance of an ensemble (ensemble_statistics.hpp): computed where the cell pools more
+  // than one instance, else the defaults (1 instance, NaN).
+  ensemble_statistics ensemble;
   bool floor = false;  // at the rounding floor: excluded from the fit and the envelope verdict
   std::uint64_t per_axis = 0;                                  // convergence_cell::per_axis
   double envelope = std::numeric_limits<double>::quiet_NaN();  // convergence_cell::error_envelope

@@ -76,7 +76,7 @@ inline constexpr std::array<std::string_view, 15> convergence_csv_columns = {
     "scene",          "integrand",         "s",           "method",        "N",
     "evaluations",    "repetitions",       "reference",   "estimate_mean", "rmse",
     "mean_abs_error", "std_error_of_rmse", "coverage_95", "seconds",       "evals_per_second"};
-inline constexpr std::array<std::string_view, 21> convergence_csv_added_columns = {
+inline constexpr std::array<std::string_view, 27> convergence_csv_added_columns = {
     "floor",
     "smoothness",
     "envelope",
@@ -97,7 +97,13 @@ inline constexpr std::array<std::string_view, 21> convergence_csv_added_columns 
     "seconds_per_estimate",
     "seconds_spread",
     "timed_estimates",
-    "reached"};
+    "reached",
+    "instances",
+    "mse_mean",
+    "mse_ci95_low",
+    "mse_ci95_high",
+    "mse_median",
+    "mse_worst"};
 inline constexpr std::array<std::string_view, 11> slopes_csv_columns = {
     "scene",   "integrand", "s",       "method",      "slope",       "ci_low",
     "ci_high", "theory",    "verdict", "points_used", "floor_points"};
