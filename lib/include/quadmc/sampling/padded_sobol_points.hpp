@@ -21,8 +21,8 @@
 // permutations and scrambles every pair would be the same two coordinates.
 #pragma once
 
+#include "quadmc/sampling/padded_pairs.hpp"
 #include "quadmc/sampling/point_set.hpp"
-#include "quadmc/sampling/random_permutation.hpp"
 #include "quadmc/sampling/sobol_points.hpp"
 
 #include <algorithm>
@@ -51,7 +51,8 @@ class padded_sobol_points {
         n_(n),
         randomizer_(dimension, static_cast<unsigned>(std::bit_width(n - 1)),
                     philox_stream(seed, stream)),
-        columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension) {
+        columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension),
+        pairs_(dimension, n, philox_stream(seed, stream), permutation_keys) {
     const sobol_matrices matrices(std::min<std::size_t>(dimension, 2));
     for (std::size_t c = 0; c < s_; ++c) {
       const auto base = matrices.columns(c % 2);
@@ -61,12 +62,6 @@ class padded_sobol_points {
         out[k] = static_cast<std::uint64_t>(base[k]) << 32;
       }
       randomizer_.prepare(c, out);
-    }
-    const philox_stream rng(seed, stream);
-    const std::size_t groups = (s_ + 1) / 2;
-    shuffles_.reserve(groups);
-    for (std::size_t g = 1; g < groups; ++g) {
-      shuffles_.emplace_back(n_, randomization_key(rng, permutation_keys + g));
     }
   }
 
@@ -78,27 +73,9 @@ class padded_sobol_points {
 
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);
-    const std::uint64_t count = out.size() / s_;
-    std::array<std::uint64_t, 64> index;
-    for (std::uint64_t begin = 0; begin < count; begin += index.size()) {
-      const auto run =
-          static_cast<std::size_t>(std::min<std::uint64_t>(index.size(), count - begin));
-      for (std::size_t j = 0; j < s_; j += 2) {
-        const std::size_t g = j / 2;
-        const std::span<std::uint64_t> q = std::span(index).first(run);
-        if (g == 0) {
-          for (std::size_t p = 0; p < run; ++p) q[p] = first + begin + p;
-        } else {
-          shuffles_[g - 1].apply(first + begin, q);
-        }
-        const std::size_t last = std::min(j + 2, s_);
-        for (std::size_t c = j; c < last; ++c) {
-          for (std::size_t p = 0; p < run; ++p) {
-            out[(begin + p) * s_ + c] = fraction_to_unit(digits(q[p], c));
-          }
-        }
-      }
-    }
+    pairs_.generate(first, out, [this](std::uint64_t q, std::size_t c) {
+      return fraction_to_unit(digits(q, c));
+    });
   }
 
   // The randomized 64-digit fraction of coordinate c at sequence index q (tests: the nets).
@@ -122,8 +99,8 @@ class padded_sobol_points {
   std::size_t s_;
   std::uint64_t n_;
   Randomizer randomizer_;
-  std::vector<std::uint64_t> columns_;        // 32 per coordinate, randomized by prepare()
-  std::vector<random_permutation> shuffles_;  // π_g for g ≥ 1
+  std::vector<std::uint64_t> columns_;  // 32 per coordinate, randomized by prepare()
+  padded_pairs pairs_;                  // π_g of the pairs g ≥ 1
 };
 
 }  // namespace quadmc

@@ -37,8 +37,8 @@
 
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/rng.hpp"
+#include "quadmc/sampling/padded_pairs.hpp"
 #include "quadmc/sampling/point_set.hpp"
-#include "quadmc/sampling/random_permutation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -65,14 +65,11 @@ class pmj02_points {
   static constexpr std::uint64_t max_points = std::uint64_t{1} << 32;  // 32 levels
 
   pmj02_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
-      : s_(dimension), n_(n), rng_(seed, stream), partners_(&pmj02_partner_offsets()) {
-    require_point_set_size(dimension, n);
-    require(n <= max_points, "number of points N", n, "N ≤ 2^32 (32 levels of the sequence)");
-    const std::size_t groups = (s_ + 1) / 2;
-    shuffles_.reserve(groups);
-    for (std::size_t g = 1; g < groups; ++g) {
-      shuffles_.emplace_back(n_, rng_.bits(std::numeric_limits<std::uint64_t>::max() - g));
-    }
+      : s_(checked_dimension(dimension, n)),
+        n_(n),
+        rng_(seed, stream),
+        partners_(&pmj02_partner_offsets()),
+        pairs_(s_, n_, rng_, 0) {
     // The first points of every coordinate's sequence, where every chain ends: up to 2^17
     // fractions in all (1 MiB; the whole set for N ≤ 2^16 in 2D), each the chain's value, so the
     // table changes no bit, only the chain's length. Its words come from one vectorized pass
@@ -103,27 +100,9 @@ class pmj02_points {
 
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);
-    const std::uint64_t count = out.size() / s_;
-    std::array<std::uint64_t, 64> index;
-    for (std::uint64_t begin = 0; begin < count; begin += index.size()) {
-      const auto run =
-          static_cast<std::size_t>(std::min<std::uint64_t>(index.size(), count - begin));
-      for (std::size_t j = 0; j < s_; j += 2) {
-        const std::size_t g = j / 2;
-        const std::span<std::uint64_t> q = std::span(index).first(run);
-        if (g == 0) {
-          for (std::size_t p = 0; p < run; ++p) q[p] = first + begin + p;
-        } else {
-          shuffles_[g - 1].apply(first + begin, q);
-        }
-        const std::size_t last = std::min(j + 2, s_);
-        for (std::size_t c = j; c < last; ++c) {
-          for (std::size_t p = 0; p < run; ++p) {
-            out[(begin + p) * s_ + c] = philox_stream::to_unit(fraction(q[p], c));
-          }
-        }
-      }
-    }
+    pairs_.generate(first, out, [this](std::uint64_t q, std::size_t c) {
+      return philox_stream::to_unit(fraction(q, c));
+    });
   }
 
   // The 64-digit fraction of coordinate c of sequence point j (tests: the net property).
@@ -170,11 +149,17 @@ class pmj02_points {
     return (interval << (64 - width)) | (w >> width);
   }
 
+  static std::size_t checked_dimension(std::size_t s, std::uint64_t n) {
+    require_point_set_size(s, n);
+    require(n <= max_points, "number of points N", n, "N ≤ 2^32 (32 levels of the sequence)");
+    return s;
+  }
+
   std::size_t s_;
   std::uint64_t n_;
   philox_stream rng_;
   const pmj02_partners* partners_;
-  std::vector<random_permutation> shuffles_;  // π_g for g ≥ 1
+  padded_pairs pairs_;  // π_g of the pairs g ≥ 1
   std::uint64_t table_size_ = 1;
   std::vector<std::uint64_t> table_;  // the first table_size_ fractions of every coordinate
 };
