@@ -157,7 +157,8 @@ std::string report_of(std::span<const double> x, std::size_t s) {
     const quadmc::pair_t_values t = *quadmc::pairwise_t_values(x, s);
     row("pair_t_best", std::to_string(t.best), "");
     row("pair_t_worst", std::to_string(t.worst), "");
-    row("worst_pair", fmt::format("{}-{}", t.worst_j + 1, t.worst_k + 1), "coordinates, from 1");
+    row("worst_pair", fmt::format("{}-{}", t.worst_j + 1, t.worst_k + 1),
+        "coordinates counted from 1");
   }
   const bool small = n <= quadmc::max_discrepancy_points;
   if (!small) {
@@ -238,30 +239,26 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
         },
         options);
     if (!emit(report_of(x, r.s))) return;
-    if (file && std::fclose(file.release()) != 0) {
-      throw std::runtime_error(
-          fmt::format("--out {}: close failed: {}", r.out, std::strerror(errno)));
+  } else {
+    std::string text;
+    for (std::size_t j = 0; j < r.s; ++j) text += fmt::format("{}x{}", j == 0 ? "" : ",", j + 1);
+    text += '\n';
+    if (!emit(text)) return;
+    try {
+      set->points(
+          r.s, r.n, {r.seed, r.stream},
+          [&](std::uint64_t, std::span<const double> x) {
+            text.clear();
+            auto out = std::back_inserter(text);
+            for (std::size_t k = 0; k < x.size(); ++k) {
+              fmt::format_to(out, "{}{}", x[k], (k + 1) % r.s == 0 ? "\n" : ",");
+            }
+            if (!emit(text)) throw output_gone{};
+          },
+          options);
+    } catch (const output_gone&) {
+      return;  // `write` has recorded why; the caller reports it
     }
-    return;
-  }
-  std::string text;
-  for (std::size_t j = 0; j < r.s; ++j) text += fmt::format("{}x{}", j == 0 ? "" : ",", j + 1);
-  text += '\n';
-  if (!emit(text)) return;
-  try {
-    set->points(
-        r.s, r.n, {r.seed, r.stream},
-        [&](std::uint64_t, std::span<const double> x) {
-          text.clear();
-          auto out = std::back_inserter(text);
-          for (std::size_t k = 0; k < x.size(); ++k) {
-            fmt::format_to(out, "{}{}", x[k], (k + 1) % r.s == 0 ? "\n" : ",");
-          }
-          if (!emit(text)) throw output_gone{};
-        },
-        options);
-  } catch (const output_gone&) {
-    return;  // `write` has recorded why; the caller reports it
   }
   if (file && std::fclose(file.release()) != 0) {
     throw std::runtime_error(

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -241,6 +242,11 @@ TEST(PointsCommand, ReportStatesTheNetAndPackingOfTheSet) {
       run_quadmc(dir, {"points", "pmj02", "--n", "1024", "--s", "4", "--seed", "3", "--report"});
   ASSERT_EQ(r.exit_status, 0) << describe(r);
   EXPECT_EQ(r.out.rfind("measure,value,note\npoints,1024,\ndimension,4,\n", 0), 0u) << r.out;
+  // Three fields on every line: no note may carry a comma.
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 2) << line;
+  }
   EXPECT_EQ(reported(r.out, "pair_t_best"), "0") << r.out;
   EXPECT_NE(reported(r.out, "pair_t_worst"), "0") << r.out;
   EXPECT_NE(reported(r.out, "t_value"), "?") << r.out;
