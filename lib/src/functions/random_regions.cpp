@@ -103,26 +103,23 @@ gaussian_2d_parameters gaussian_random_parameters(std::uint64_t seed) {
       {rng.uniform(0), rng.uniform(1)}, {scale(2), scale(3)}, std::numbers::pi * rng.uniform(4)};
 }
 
+half_space_indicator heaviside_random::through(const std::vector<double>& normal,
+                                               const std::vector<double>& point) {
+  require(point.size() == normal.size(), "point", point.size(),
+          fmt::format("length s = {} (the length of normal)", normal.size()));
+  // t = n·p: the plane through p. p inside the cube makes the plane cut it unless p is a vertex,
+  // which half_space_indicator then refuses by name.
+  double t = 0.0;
+  for (std::size_t j = 0; j < point.size(); ++j) {
+    require(std::isfinite(point[j]) && point[j] >= 0.0 && point[j] <= 1.0, "point", point[j],
+            "a point of [0,1]^s");
+    t += normal[j] * point[j];
+  }
+  return half_space_indicator(normal, t);
+}
+
 heaviside_random::heaviside_random(std::vector<double> normal, std::vector<double> point)
-    : region_(
-          [&] {
-            require(point.size() == normal.size(), "point", point.size(),
-                    fmt::format("length s = {} (the length of normal)", normal.size()));
-            return normal;
-          }(),
-          [&] {
-            // t = n·p: the plane through p. p inside the cube makes the plane cut it unless p is
-            // a vertex, which half_space_indicator then refuses by name.
-            double t = 0.0;
-            for (std::size_t j = 0; j < point.size(); ++j) {
-              require(std::isfinite(point[j]) && point[j] >= 0.0 && point[j] <= 1.0, "point",
-                      point[j], "a point of [0,1]^s");
-              t += normal[j] * point[j];
-            }
-            return t;
-          }()),
-      normal_(std::move(normal)),
-      point_(std::move(point)) {}
+    : region_(through(normal, point)) {}
 
 integrand_info heaviside_random::info() const {
   integrand_info info = region_.info();

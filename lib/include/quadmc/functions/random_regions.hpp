@@ -65,8 +65,11 @@ class heaviside_random {
   integrand_info info() const;
 
  private:
+  // {n·x ≤ n·p}, the lengths of n and p and p's place in the cube checked.
+  static half_space_indicator through(const std::vector<double>& normal,
+                                      const std::vector<double>& point);
+
   half_space_indicator region_;
-  std::vector<double> normal_, point_;
 };
 
 // 1 if ‖x − c‖ ≤ r on the unit square; the disk may extend beyond it.

@@ -61,16 +61,16 @@ class cmj_points {
     columns_ = s_ == 1 ? n_ : integer_root(n_, 2);
     rows_ = n_ / columns_;
     // Keys from the top of the counter space, which no jitter reaches (point_set.hpp): per group
-    // g, word 3g keys π_g, 3g + 1 σ_g and 3g + 2 τ_g.
+    // g, word 3g keys π_g (g ≥ 1; π_0 is the identity), 3g + 1 σ_g and 3g + 2 τ_g.
     const auto key = [&](std::uint64_t w) {
       return rng_.bits(std::numeric_limits<std::uint64_t>::max() - w);
     };
     const std::size_t groups = (s_ + 1) / 2;
-    samples_.reserve(groups);
+    samples_.reserve(groups - 1);
     row_offsets_.reserve(groups);
     column_offsets_.reserve(groups);
     for (std::size_t g = 0; g < groups; ++g) {
-      samples_.emplace_back(n_, key(3 * g));
+      if (g > 0) samples_.emplace_back(n_, key(3 * g));
       row_offsets_.emplace_back(rows_, key(3 * g + 1));
       column_offsets_.emplace_back(columns_, key(3 * g + 2));
     }
@@ -111,7 +111,7 @@ class cmj_points {
         if (g == 0) {
           for (std::size_t p = 0; p < run; ++p) c[p] = first + begin + p;
         } else {
-          samples_[g].apply(first + begin, c);
+          samples_[g - 1].apply(first + begin, c);
         }
         for (std::size_t p = 0; p < run; ++p) {
           double* x = out.data() + (begin + p) * s_;
@@ -137,7 +137,7 @@ class cmj_points {
   std::uint64_t columns_ = 1;  // m
   std::uint64_t rows_ = 1;     // n
   philox_stream rng_;
-  std::vector<random_permutation> samples_;         // π_g
+  std::vector<random_permutation> samples_;         // π_g for g ≥ 1
   std::vector<random_permutation> row_offsets_;     // σ_g over the n rows
   std::vector<random_permutation> column_offsets_;  // τ_g over the m columns
 };
