@@ -106,6 +106,8 @@ TEST(NetQuality, BadInputIsNamed) {
   EXPECT_FALSE(net_t_value(std::vector<double>(2 * 48, 0.5), 2).has_value()) << "N = 48";
   EXPECT_THROW(net_t_value(std::vector<double>(2 * 16, 1.0), 2), invalid_argument);
   EXPECT_THROW(net_t_value(std::vector<double>(9 * 16, 0.5), 9), invalid_argument);
+  // s = 8 at N = 2^16 would count 65536 points into C(23, 7) = 245157 shapes: refused, not run.
+  EXPECT_THROW(net_t_value(std::vector<double>(8 * 65536, 0.5), 8), invalid_argument);
   const std::array<std::size_t, 1> beyond{2};
   EXPECT_THROW(net_t_value(std::vector<double>(2 * 16, 0.5), 2, beyond), invalid_argument);
   EXPECT_THROW(normalized_min_distance(std::vector<double>(5, 0.5), 2), invalid_argument);

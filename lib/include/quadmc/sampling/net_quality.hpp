@@ -29,14 +29,17 @@
 
 namespace quadmc {
 
-// The largest N and s the t-value counts take (2^20 points; the whole set's t for s ≤ 8).
+// The largest N and s the t-value counts take (2^20 points; the whole set's t for s ≤ 8), and
+// the work they may cost: C(m + k − 1, k − 1) shapes of elementary intervals in k coordinates,
+// each counting all N = 2^m points, at most 2^31 counts (seconds) for t = 0.
 inline constexpr unsigned max_net_log2_points = 20;
 inline constexpr std::size_t max_net_dimension = 8;
+inline constexpr double max_net_box_counts = 2147483648.0;
 
 // The t-value of the N = 2^m points given row-major (x[i·s + j]) in coordinates `axes` (all s
 // when empty), or nullopt when N is not a power of two. Throws invalid_argument for s = 0, a size
-// that is not a multiple of s, N > 2^20, more than 8 axes, an axis ≥ s or a coordinate outside
-// [0, 1).
+// that is not a multiple of s, N > 2^20, more than 8 axes, an axis ≥ s, more box counts than
+// max_net_box_counts, or a coordinate outside [0, 1).
 std::optional<unsigned> net_t_value(std::span<const double> points, std::size_t s,
                                     std::span<const std::size_t> axes = {});
 
