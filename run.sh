@@ -36,7 +36,8 @@ LIBRARY_PACKAGES=(libboost-dev                # Boost.Math (header-only, part of
                   libtomlplusplus-dev         # toml++ (scene files)
                   librandom123-dev            # Random123 (Philox counter-based RNG)
                   libquadrule-dev             # quadrule (Gauss–Patterson tables of the sparse grids)
-                  libquantlib0-dev)           # QuantLib: the lattice generating vectors
+                  libquantlib0-dev            # QuantLib: the lattice generating vectors
+                  libfftw3-dev)               # FFTW: the power spectrum of render error images
 # ... and with them: every preset but `package` configures the tests and the timing binaries.
 LIB_PACKAGES=("${BUILD_PACKAGES[@]}" "${LIBRARY_PACKAGES[@]}"
               libgtest-dev libgmock-dev       # GoogleTest

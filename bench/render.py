@@ -2,12 +2,13 @@
 """Draws the pictures of `quadmc render` from the files it wrote.
 
 Usage: render.py FOLDER. Reads images.csv and pixels.f64 (the images as float64, little-endian,
-one after the other; the command removes both once this script has run), rmse.csv, slopes.csv
-and light_sampling.csv of FOLDER, and writes exact.png (the exact image and where the light is
+one after the other; the command removes both once this script has run), rmse.csv, slopes.csv,
+error_spectrum.csv, lowpass.csv and light_sampling.csv of FOLDER, and writes exact.png (the exact image and where the light is
 fully seen, partly hidden, hidden), comparison.png (estimates and signed errors of the three
 estimators at one spp), errors_<estimator>.png (the signed error of every point set at every
-spp), rmse.png (image RMSE against spp with the fitted slopes) and light_sampling.png (the
-1 x L against L x 1 experiment). Computes no statistic: every number comes from the command
+spp), rmse.png (image RMSE against spp with the fitted slopes), error_spectrum.png (from
+error_spectrum.csv and lowpass.csv: the error's power by frequency and its RMSE after each
+low-pass, at the largest spp) and light_sampling.png (the 1 x L against L x 1 experiment). Computes no statistic: every number comes from the command
 (bench/quadmc/render_command.hpp). Debian's python3-matplotlib (and its numpy), headless (Agg).
 """
 
@@ -160,6 +161,39 @@ def main(folder):
     # Below the axes: inside, the legend would hide the steepest lines at large spp.
     ax.legend(fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.12))
     fig.savefig(os.path.join(folder, "rmse.png"), dpi=90, bbox_inches="tight", metadata=META)
+    plt.close(fig)
+
+    # error_spectrum.png: per estimator at the largest spp, each set's relative error power by
+    # frequency ring (white noise: 1) and its RMSE after each Gaussian low-pass.
+    spectrum = read(folder, "error_spectrum.csv")
+    lowpass = read(folder, "lowpass.csv")
+    top = str(spps[-1])
+    fig, axes = plt.subplots(2, len(estimators), figsize=(4.2 * len(estimators), 7.0),
+                             squeeze=False)
+    for j, e in enumerate(estimators):
+        for k, s in enumerate(sets):
+            ring = [r for r in spectrum
+                    if (r["estimator"], r["point_set"], r["spp"]) == (e, s, top)
+                    and r["relative_power"] not in ("nan", "")]
+            axes[0][j].plot([float(r["frequency"]) for r in ring],
+                            [float(r["relative_power"]) for r in ring],
+                            color="C{}".format(k % 10), lw=1.0, label=s)
+            cut = [r for r in lowpass if (r["estimator"], r["point_set"], r["spp"]) == (e, s, top)]
+            axes[1][j].plot([float(r["sigma"]) for r in cut], [float(r["rmse"]) for r in cut],
+                            color="C{}".format(k % 10), marker="o", ms=3, lw=1.0, label=s)
+        axes[0][j].axhline(1.0, color="k", lw=0.6, ls="-.")
+        axes[0][j].set_yscale("log")
+        axes[0][j].set_xlabel("frequency (cycles per pixel)")
+        axes[0][j].set_title("{}, spp {}".format(e, top), fontsize=9)
+        axes[1][j].set_yscale("log")
+        axes[1][j].set_xlabel("low-pass σ (pixels)")
+        for a in (axes[0][j], axes[1][j]):
+            a.grid(True, lw=0.3, color="0.85")
+    axes[0][0].set_ylabel("error power / mean square (white noise: 1)")
+    axes[1][0].set_ylabel("RMSE after the low-pass")
+    axes[1][-1].legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    fig.savefig(os.path.join(folder, "error_spectrum.png"), dpi=80, metadata=META)
     plt.close(fig)
 
     # light_sampling.png

@@ -20,7 +20,7 @@
 #    need them (a run with plots on and no matplotlib is refused in one line before it computes
 #    anything; CSV and Markdown need neither);
 #  - libquadmc-dev: Depends, what the installed CMake package files find_dependency() (the -dev
-#    packages of fmt, Boost, toml++, Random123, quadrule and QuantLib, whose headers or libraries
+#    packages of fmt, Boost, toml++, Random123, quadrule, QuantLib and FFTW, whose headers or libraries
 #    the library's use, and CLI11, which quadmc::command links), and quadmc of the same version:
 #    quadmc::command compiles the path /usr/share/quadmc (QUADMC_COMMAND_SCRIPTS,
 #    bench/CMakeLists.txt) into the commands built on it, and the quadmc package ships that folder;
@@ -96,13 +96,13 @@ if(QUADMC_DPKG_SHLIBDEPS AND QUADMC_FILE_COMMAND)
 else()
   message(STATUS "dpkg-shlibdeps or file not found (packages dpkg-dev, file): the Debian "
                  "packages declare the Debian 12 runtime libraries by name instead")
-  set(quadmc_runtime_depends "libc6, libstdc++6, libgcc-s1, libfmt9, libtomlplusplus3, libquadrule1, libquantlib0v5")
+  set(quadmc_runtime_depends "libc6, libstdc++6, libgcc-s1, libfmt9, libtomlplusplus3, libquadrule1, libquantlib0v5, libfftw3-double3")
 endif()
 # No CPACK_DEBIAN_PACKAGE_DEPENDS: a component without its own Depends would inherit it.
 set(CPACK_DEBIAN_COMMAND_PACKAGE_DEPENDS "${quadmc_runtime_depends}")
 set(CPACK_DEBIAN_COMMAND_PACKAGE_RECOMMENDS "python3, python3-matplotlib")
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
-    "quadmc (= ${PROJECT_VERSION}), libfmt-dev, libboost-dev (>= 1.74), libtomlplusplus-dev, librandom123-dev, libquadrule-dev, libquantlib0-dev, libcli11-dev")
+    "quadmc (= ${PROJECT_VERSION}), libfmt-dev, libboost-dev (>= 1.74), libtomlplusplus-dev, librandom123-dev, libquadrule-dev, libquantlib0-dev, libfftw3-dev, libcli11-dev")
 if(QUADMC_WITH_PYTHON)
   math(EXPR quadmc_python_next_minor "${Python3_VERSION_MINOR} + 1")
   set(quadmc_python_depends

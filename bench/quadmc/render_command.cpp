@@ -3,6 +3,7 @@
 // order once all images are done, so the numbers do not depend on the thread count.
 #include "render_command.hpp"
 
+#include "quadmc/analysis/image_error.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
@@ -34,9 +35,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -58,9 +62,14 @@ constexpr std::size_t rows_per_block = 8;
 // The binary copy of the images that render.py reads; removed once the PNGs are drawn.
 constexpr std::string_view pixels_file = "pixels.f64";
 constexpr std::string_view index_file = "images.csv";
-constexpr std::array<std::string_view, 10> fixed_files{
-    "README.md", "meta.csv",       "rmse.csv", "slopes.csv",         "light_sampling.csv",
-    "exact.png", "comparison.png", "rmse.png", "light_sampling.png", "images.csv"};
+constexpr std::array<std::string_view, 13> fixed_files{
+    "README.md",          "meta.csv",           "rmse.csv",  "slopes.csv",     "light_sampling.csv",
+    "lowpass.csv",        "error_spectrum.csv", "exact.png", "comparison.png", "rmse.png",
+    "error_spectrum.png", "light_sampling.png", "images.csv"};
+// The standard deviations (pixels) of the Gaussian low-pass filters of lowpass.csv; 0: none.
+constexpr std::array<double, 5> lowpass_sigmas{0.0, 0.5, 1.0, 2.0, 4.0};
+// The frequencies (cycles per pixel) the page's "low-frequency power" averages over.
+constexpr double low_frequency = 1.0 / 16.0;
 constexpr std::array<quadmc::light_sample_correlation, 2> correlations{
     quadmc::light_sample_correlation::correlated, quadmc::light_sample_correlation::decorrelated};
 
@@ -124,7 +133,34 @@ struct error_stats {
   double mean_error = 0.0;
   double max_abs_error = 0.0;
   double neighbour_correlation = 0.0;  // Σ e(c, r)·e(c+1, r) / Σ e² over the same pairs
+  // Estimates only (analysis/image_error.hpp): the RMSE after each low-pass of lowpass_sigmas,
+  // and the relative power spectrum of the error.
+  std::array<double, lowpass_sigmas.size()> lowpass_rmse{};
+  std::vector<quadmc::spectrum_ring> spectrum{};
 };
+
+// The error image's low-pass RMSEs and spectrum into `s`.
+void measure_frequencies(std::span<const double> x, std::span<const double> exact,
+                         std::size_t width, std::size_t height, error_stats& s) {
+  std::vector<double> e(x.size());
+  for (std::size_t p = 0; p < x.size(); ++p) e[p] = x[p] - exact[p];
+  for (std::size_t i = 0; i < lowpass_sigmas.size(); ++i) {
+    s.lowpass_rmse[i] = quadmc::lowpass_rmse(e, width, height, lowpass_sigmas[i]);
+  }
+  s.spectrum = quadmc::error_spectrum(e, width, height);
+}
+
+// The mean relative power over the rings up to low_frequency (weighted by their frequencies).
+double low_frequency_power(const error_stats& s) {
+  double power = 0.0;
+  std::uint64_t count = 0;
+  for (const quadmc::spectrum_ring& ring : s.spectrum) {
+    if (ring.frequency > low_frequency || ring.frequencies == 0) continue;
+    power += ring.relative_power * static_cast<double>(ring.frequencies);
+    count += ring.frequencies;
+  }
+  return count == 0 ? std::numeric_limits<double>::quiet_NaN() : power / static_cast<double>(count);
+}
 
 error_stats compare(std::span<const double> x, std::span<const double> exact,
                     std::span<const quadmc::light_visibility> vis, std::size_t width) {
@@ -426,6 +462,7 @@ void measure(const render_scene& sc, const quadmc::irradiance_plane& plane, rend
     const image& im = r.images[k];
     if (im.kind == image_kind::estimate) {
       r.stats[k] = compare(im.pixels, exact, r.visibility, plane.width);
+      measure_frequencies(im.pixels, exact, plane.width, plane.height, r.stats[k]);
     }
     if (im.kind == image_kind::light_sampling) {
       r.stats[k] = compare(im.pixels, *exact_mean, r.visibility, plane.width);
@@ -498,6 +535,35 @@ std::string slopes_csv(const render_result& r) {
     csv += line({std::string(to_string(f.technique)), std::string(f.set->name),
                  std::to_string(f.fit.points), number(f.fit.slope), number(f.fit.ci_low),
                  number(f.fit.ci_high), quadmc::to_string(f.fit.status)});
+  }
+  return csv;
+}
+
+std::string lowpass_csv(const render_result& r) {
+  std::string csv = line({"estimator", "point_set", "spp", "sigma", "rmse"});
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind != image_kind::estimate) continue;
+    for (std::size_t i = 0; i < lowpass_sigmas.size(); ++i) {
+      csv += line({std::string(to_string(im.technique)), std::string(im.set->name),
+                   std::to_string(im.spp), number(lowpass_sigmas[i]),
+                   number(r.stats[k].lowpass_rmse[i])});
+    }
+  }
+  return csv;
+}
+
+std::string error_spectrum_csv(const render_result& r) {
+  std::string csv =
+      line({"estimator", "point_set", "spp", "frequency", "frequencies", "relative_power"});
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind != image_kind::estimate) continue;
+    for (const quadmc::spectrum_ring& ring : r.stats[k].spectrum) {
+      csv += line({std::string(to_string(im.technique)), std::string(im.set->name),
+                   std::to_string(im.spp), number(ring.frequency), std::to_string(ring.frequencies),
+                   number(ring.relative_power)});
+    }
   }
   return csv;
 }
@@ -592,6 +658,29 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
                           *low->independent / low->rmse);
     }
     lines.push_back(line + fmt::format("); highest {} ({:.4g}).", high->what, high->rmse));
+  }
+  // After the widest low-pass at the largest spp: the lowest RMSE left, and the smallest share of
+  // its own RMSE an image keeps (white noise keeps ≈ 1/(2σ√π); blue noise less).
+  const double widest = lowpass_sigmas.back();
+  std::optional<std::pair<double, std::string>> lowest_left, smallest_share;
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind != image_kind::estimate || im.spp != top || !(r.stats[k].lowpass_rmse[0] > 0.0)) {
+      continue;
+    }
+    const std::string what = fmt::format("`{}` with `{}`", to_string(im.technique), im.set->name);
+    const double left = r.stats[k].lowpass_rmse.back();
+    const double share = left / r.stats[k].lowpass_rmse[0];
+    if (!lowest_left || left < lowest_left->first) lowest_left = {left, what};
+    if (!smallest_share || share < smallest_share->first) smallest_share = {share, what};
+  }
+  if (lowest_left) {
+    lines.push_back(fmt::format(
+        "**After a Gaussian low-pass of σ = {} pixels** (spp {}): lowest RMSE {} ({:.4g}); the "
+        "smallest share of its own RMSE kept, {} ({:.3g}; errors independent from pixel to pixel "
+        "keep ≈ {:.3g}).",
+        widest, top, lowest_left->second, lowest_left->first, smallest_share->second,
+        smallest_share->first, 1.0 / (2.0 * widest * std::sqrt(std::numbers::pi))));
   }
   lines.push_back("**Best point set per estimator, all pixels:** " +
                   best_set_per_estimator(sc, r, std::nullopt) + ".");
@@ -721,6 +810,54 @@ std::string readme_rmse(const render_scene& sc, const render_result& r) {
   return t;
 }
 
+// The low-pass table: per estimator and point set at the largest spp, the RMSE after each
+// Gaussian low-pass, how much of it the widest leaves, and the error's power at low frequencies.
+std::string readme_lowpass(const render_scene& sc, const render_result& r) {
+  const std::uint64_t top = sc.spp.back();
+  const double widest = lowpass_sigmas.back();
+  std::string t;
+  t += fmt::format("\n## Error after a low-pass filter, and its spectrum (spp {})\n\n", top);
+  t += fmt::format(
+      "The RMSE of the error image after a Gaussian low-pass of σ pixels (normalized, mirrored "
+      "at the borders; σ = 0 is the RMSE above), as the eye sees an image from further away; and "
+      "the error's power at frequencies up to {} cycle per pixel relative to its mean square "
+      "(white noise: 1; analysis/image_error.hpp). Errors independent from pixel to pixel keep "
+      "a fraction ≈ 1/(2σ√π) of their RMSE after the filter ({:.3g} at σ = {}); errors that "
+      "cancel between neighbouring pixels (blue noise) keep less, and have low-frequency power "
+      "below 1 (docs/theory.md#error-spectrum). Every spp: `lowpass.csv`; every ring of the "
+      "spectrum: `error_spectrum.csv`.\n\n",
+      low_frequency, 1.0 / (2.0 * widest * std::sqrt(std::numbers::pi)), widest);
+  t += "| estimator | point set |";
+  for (const double s : lowpass_sigmas) t += fmt::format(" σ = {} |", s);
+  t += fmt::format(" σ = {} / σ = 0 | power at f ≤ {} |\n|---|---|", widest, low_frequency);
+  for (std::size_t i = 0; i < lowpass_sigmas.size() + 2; ++i) t += "---|";
+  t += "\n";
+  for (const auto tech : sc.estimators) {
+    for (const auto* set : sc.point_sets) {
+      for (std::size_t k = 0; k < r.images.size(); ++k) {
+        const image& im = r.images[k];
+        if (im.kind != image_kind::estimate || im.technique != tech || im.set != set ||
+            im.spp != top) {
+          continue;
+        }
+        const error_stats& s = r.stats[k];
+        t += fmt::format("| {} | {} |", to_string(tech), set->name);
+        for (const double v : s.lowpass_rmse) t += fmt::format(" {} |", fixed(v));
+        t += fmt::format(" {} | {} |\n",
+                         fixed(s.lowpass_rmse[0] > 0.0 ? s.lowpass_rmse.back() / s.lowpass_rmse[0]
+                                                       : std::numeric_limits<double>::quiet_NaN(),
+                               3),
+                         fixed(low_frequency_power(s), 3));
+      }
+    }
+  }
+  if (sc.images) {
+    t += "\n![Error power by frequency and RMSE after each low-pass, at the largest "
+         "spp](error_spectrum.png)\n";
+  }
+  return t;
+}
+
 std::string readme_how_to_read() {
   return "\n## How to read it\n\n"
          "- **Exact image**: irradiance at each pixel centre. Under the occluder the light is "
@@ -792,6 +929,10 @@ std::string readme_files(const render_scene& sc) {
          "`slopes.csv` (estimator, point_set, points, slope, ci_low, ci_high, status), "
          "`light_sampling.csv` (point_set, pixel_samples, light_samples, correlation, rmse, "
          "rmse_penumbra, mean_error, max_abs_error, neighbour_correlation, fingerprint), "
+         "`lowpass.csv` (estimator, point_set, spp, sigma, rmse: after a Gaussian low-pass of "
+         "sigma pixels), `error_spectrum.csv` (estimator, point_set, spp, frequency: the ring's "
+         "outer radius in cycles per pixel, frequencies in it, relative_power: their mean power "
+         "over the error's mean square), "
          "`meta.csv` (what built the command). Per-pixel randomness is counter-based: pixel p of "
          "an image uses the Philox stream stream_id({image, p}), the image named by (estimator, "
          "point set, spp), so the files are the same bits for any thread count. Regenerate with "
@@ -801,8 +942,8 @@ std::string readme_files(const render_scene& sc) {
 
 std::string readme_text(const render_scene& sc, const quadmc::irradiance_plane& plane,
                         const quadmc::provenance& build, const render_result& r) {
-  return readme_intro(sc, plane, build, r) + readme_rmse(sc, r) + readme_how_to_read() +
-         readme_light_sampling(sc, r) + readme_files(sc);
+  return readme_intro(sc, plane, build, r) + readme_rmse(sc, r) + readme_lowpass(sc, r) +
+         readme_how_to_read() + readme_light_sampling(sc, r) + readme_files(sc);
 }
 
 // The images for render.py: float64 little-endian, one after the other, described by
@@ -861,6 +1002,8 @@ void write_report(const fs::path& dir, const render_scene& sc,
                   const render_result& r) {
   write_file(dir / "rmse.csv", rmse_csv(sc, r));
   write_file(dir / "slopes.csv", slopes_csv(r));
+  write_file(dir / "lowpass.csv", lowpass_csv(r));
+  write_file(dir / "error_spectrum.csv", error_spectrum_csv(r));
   if (sc.light_sampling) write_file(dir / "light_sampling.csv", light_sampling_csv(r));
   write_file(dir / std::string(quadmc::meta_csv_file), quadmc::meta_csv_text(build));
   write_file(dir / "README.md", readme_text(sc, plane, build, r));

@@ -27,7 +27,7 @@ width = 16
 height = 12
 region = [-0.55, -0.6, 0.15, 0.1]
 occluder_height = 0.15
-point_sets = ["independent", "jittered"]
+point_sets = ["independent", "jittered", "zsobol"]
 spp = [1, 4, 16]
 images = IMAGES
 
@@ -63,11 +63,11 @@ TEST_F(RenderCommand, PrintsThePlanFirstAndWritesEveryFile) {
   ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
   EXPECT_EQ(result_->out.rfind("render: 16 × 12 pixels of the plane z = 0", 0), 0u)
       << describe(*result_);
-  EXPECT_NE(result_->out.find("3 estimators × 2 point sets × spp 1, 4, 16 = 18 images"),
+  EXPECT_NE(result_->out.find("3 estimators × 3 point sets × spp 1, 4, 16 = 27 images"),
             std::string::npos)
       << result_->out;
   EXPECT_NE(result_->out.find("light sampling: 1 × 4 and 4 × 1"), std::string::npos);
-  EXPECT_NE(result_->out.find("\nrender: 24 images of 16 × 12 pixels in "), std::string::npos)
+  EXPECT_NE(result_->out.find("\nrender: 33 images of 16 × 12 pixels in "), std::string::npos)
       << result_->out;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(*dir_ / "r")) {
@@ -76,28 +76,39 @@ TEST_F(RenderCommand, PrintsThePlanFirstAndWritesEveryFile) {
   std::sort(names.begin(), names.end());
   const std::vector<std::string> expected{"README.md",
                                           "comparison.png",
+                                          "error_spectrum.csv",
+                                          "error_spectrum.png",
                                           "errors_cosine_hemisphere.png",
                                           "errors_light_area.png",
                                           "errors_uniform_hemisphere.png",
                                           "exact.png",
                                           "light_sampling.csv",
                                           "light_sampling.png",
+                                          "lowpass.csv",
                                           "meta.csv",
                                           "rmse.csv",
                                           "rmse.png",
                                           "slopes.csv"};
   EXPECT_EQ(names, expected);
   const quadmc::csv_table rmse = quadmc::parse_csv(read_text(*dir_ / "r" / "rmse.csv"), "rmse.csv");
-  EXPECT_EQ(rmse.rows.size(), 3u * 2u * 3u);
+  EXPECT_EQ(rmse.rows.size(), 3u * 3u * 3u);
   const quadmc::csv_table slopes =
       quadmc::parse_csv(read_text(*dir_ / "r" / "slopes.csv"), "slopes.csv");
-  EXPECT_EQ(slopes.rows.size(), 3u * 2u);
+  EXPECT_EQ(slopes.rows.size(), 3u * 3u);
+  // Five low-pass widths and 32 spectrum rings per estimated image.
+  const quadmc::csv_table lowpass =
+      quadmc::parse_csv(read_text(*dir_ / "r" / "lowpass.csv"), "lowpass.csv");
+  EXPECT_EQ(lowpass.rows.size(), 3u * 3u * 3u * 5u);
+  const quadmc::csv_table spectrum =
+      quadmc::parse_csv(read_text(*dir_ / "r" / "error_spectrum.csv"), "error_spectrum.csv");
+  EXPECT_EQ(spectrum.rows.size(), 3u * 3u * 3u * 32u);
   const quadmc::csv_table light =
       quadmc::parse_csv(read_text(*dir_ / "r" / "light_sampling.csv"), "light_sampling.csv");
   EXPECT_EQ(light.rows.size(), 4u);
   const std::string readme = read_text(*dir_ / "r" / "README.md");
-  for (const std::string link : {"(exact.png)", "(comparison.png)", "(rmse.png)",
-                                 "(errors_light_area.png)", "(light_sampling.png)"}) {
+  for (const std::string link :
+       {"(exact.png)", "(comparison.png)", "(rmse.png)", "(errors_light_area.png)",
+        "(light_sampling.png)", "(error_spectrum.png)"}) {
     EXPECT_NE(readme.find(link), std::string::npos) << link;
   }
 }
@@ -110,8 +121,9 @@ TEST_F(RenderCommand, SameBytesOnOneAndThreeThreadsAndReplacesItsOwnFolder) {
       run_quadmc(*dir_, {"render", "small.toml", "--out", "r1", "--threads", "1"});
   ASSERT_EQ(again.exit_status, 0) << describe(again);
   for (const std::string file :
-       {"rmse.csv", "slopes.csv", "light_sampling.csv", "exact.png", "comparison.png",
-        "errors_light_area.png", "rmse.png", "light_sampling.png"}) {
+       {"rmse.csv", "slopes.csv", "light_sampling.csv", "lowpass.csv", "error_spectrum.csv",
+        "exact.png", "comparison.png", "error_spectrum.png", "errors_light_area.png", "rmse.png",
+        "light_sampling.png"}) {
     EXPECT_EQ(read_text(*dir_ / "r1" / file), read_text(*dir_ / "r" / file)) << file;
   }
   // Another seed into the folder of the first: replaced (its files are the render's own), and
@@ -136,7 +148,7 @@ TEST(RenderCommandWithoutImages, BundledSceneRuns) {
   write_text(dir / "render.toml", text);
   const command_result r = run_quadmc(dir, {"render", "render.toml"});
   ASSERT_EQ(r.exit_status, 0) << describe(r);
-  EXPECT_NE(r.out.find("3 estimators × 8 point sets × spp 1, 4, 16, 64 = 96 images"),
+  EXPECT_NE(r.out.find("3 estimators × 9 point sets × spp 1, 4, 16, 64 = 108 images"),
             std::string::npos)
       << r.out;
   EXPECT_TRUE(fs::exists(dir / "results" / "render" / "light_sampling.csv"));
@@ -151,8 +163,8 @@ TEST(RenderCommandWithoutImages, WritesTheTablesOnly) {
   for (const auto& e : fs::directory_iterator(dir / "results" / "small")) {
     names.insert(e.path().filename().string());
   }
-  EXPECT_EQ(names, (std::set<std::string>{"README.md", "light_sampling.csv", "meta.csv", "rmse.csv",
-                                          "slopes.csv"}));
+  EXPECT_EQ(names, (std::set<std::string>{"README.md", "error_spectrum.csv", "light_sampling.csv",
+                                          "lowpass.csv", "meta.csv", "rmse.csv", "slopes.csv"}));
 }
 
 void expect_render_error(const std::vector<std::string>& args, int status, const std::string& names,

@@ -8,11 +8,14 @@
 #include "quadmc/core/rng.hpp"
 #include "quadmc/estimators/irradiance_estimators.hpp"
 #include "quadmc/sampling/independent_points.hpp"
+#include "quadmc/sampling/zsobol_points.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -152,6 +155,43 @@ TEST(IrradianceImage, PixelKernelMatchesTheLibraryEstimators) {
           << "pixel " << p << ", technique " << static_cast<int>(t);
     }
   }
+}
+
+// zsobol draws the whole image from one sequence: a pixel is the mean over its Morton block of
+// zsobol_points with the image's one stream, whatever block of rows the call computes.
+TEST(IrradianceImage, ZsobolPixelsAreTheirMortonBlocksInAnySplit) {
+  const irradiance_plane plane = catalogue_irradiance_plane(0.15, {-0.55, -0.6, 0.15, 0.1}, 12, 9);
+  const irradiance_plane_sampler sampler(plane);
+  const zsobol_points z(12, 9, 16, 7, stream_id({5}));
+  std::vector<double> whole(plane.pixels());
+  estimate_irradiance_pixels(plane, irradiance_sampling::cosine_hemisphere, zsobol_render_set(), 16,
+                             7, 5, 0, whole);
+  std::vector<double> u(32);
+  for (std::size_t p = 0; p < plane.pixels(); ++p) {
+    z.generate(p % 12, p / 12, u);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < 16; ++i) {
+      sum += sampler.value(irradiance_sampling::cosine_hemisphere, plane.centre(p), u[2 * i],
+                           u[2 * i + 1]);
+    }
+    EXPECT_EQ(whole[p], sum / 16.0) << "pixel " << p;
+  }
+  std::vector<double> parts(plane.pixels());
+  for (const auto& [first, count] :
+       {std::pair<std::size_t, std::size_t>{0, 13}, {13, 50}, {63, 45}}) {
+    estimate_irradiance_pixels(plane, irradiance_sampling::cosine_hemisphere, zsobol_render_set(),
+                               16, 7, 5, first, std::span<double>(parts).subspan(first, count));
+  }
+  EXPECT_EQ(parts, whole);
+  // Sizes it cannot index, and the estimators of one integral, are refused in one line.
+  EXPECT_THROW(estimate_irradiance_pixels(plane, irradiance_sampling::light_area,
+                                          zsobol_render_set(), 12, 7, 5, 0, whole),
+               invalid_argument);
+  EXPECT_FALSE(pixel_samples_problem(zsobol_render_set(), 4096, 4096, 512).empty());
+  EXPECT_TRUE(pixel_samples_problem(zsobol_render_set(), 4096, 4096, 256).empty());
+  EXPECT_THROW(zsobol_render_set().irradiance(irradiance_sampling::light_area, plane.setup_at({}),
+                                              {1, 2}, 16, 1),
+               invalid_argument);
 }
 
 TEST(IrradianceImage, CosineBeatsUniformHemisphereAtEqualSpp) {

@@ -255,7 +255,7 @@ done
 # quadmcConfig.cmake find_dependency()s these (lib/cmake/quadmcConfig.cmake.in); the installed
 # headers include theirs. quadmc::command's scripts folder, /usr/share/quadmc, is quadmc's.
 for dev in libfmt-dev libboost-dev libtomlplusplus-dev librandom123-dev libquadrule-dev \
-  libquantlib0-dev libcli11-dev; do
+  libquantlib0-dev libfftw3-dev libcli11-dev; do
   depends_on libquadmc-dev "$dev" ||
     fail "libquadmc-dev: Depends: expected $dev (quadmcConfig.cmake needs it), got: $(field libquadmc-dev Depends)"
 done

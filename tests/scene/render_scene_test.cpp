@@ -157,6 +157,29 @@ TEST(RenderScene, ListsAreCheckedElementByElement) {
             std::string::npos);
 }
 
+// zsobol is the render's own set: accepted among the images' sets, refused for the light patterns
+// (one integral's points), and its index range (4^⌈log₂ max(W, H)⌉ × spp ≤ 2^32) checked at plan
+// time: 4096² pixels leave spp ≤ 2^8.
+TEST(RenderScene, ZsobolIsAnImageSetWithItsIndexRangeCheckedAtPlanTime) {
+  const render_scene sc = parse_render("point_sets = [\"zsobol\", \"sobol\"]\n");
+  ASSERT_EQ(sc.point_sets.size(), 2u);
+  EXPECT_EQ(sc.point_sets[0], &zsobol_render_set());
+  EXPECT_EQ(sc.point_sets[1]->name, "sobol");
+  EXPECT_NE(
+      render_error("[light_sampling]\npoint_set = \"zsobol\"\n", 2, "light_sampling.point_set")
+          .find("expected a point set, one of: independent"),
+      std::string::npos);
+  EXPECT_NE(render_error("point_sets = [\"zsobol\"]\nspp = [3]\n", 2, "spp")
+                .find("the zsobol points cannot hold 3 samples per pixel"),
+            std::string::npos);
+  const std::string message = render_error(
+      "threads = 1\nwidth = 4096\nheight = 4\nestimators = [\"light_area\"]\n"
+      "point_sets = [\"zsobol\"]\nspp = [256, 512]\n",
+      6, "spp");
+  EXPECT_NE(message.find("cannot hold 512 samples per pixel"), std::string::npos) << message;
+  EXPECT_NE(message.find("spp ≤ 2^8 for a 4096 × 4 image"), std::string::npos) << message;
+}
+
 TEST(RenderScene, ValuesAreShownOnOneLine) {
   // A string with a tab and a quote is shown escaped, as TOML writes it.
   const std::string message = render_error("images = \"a\\tb\\\"\"\n", 1, "images");

@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/sampling/random_permutation.hpp"
+#include "quadmc/sampling/zsobol_points.hpp"
 
 #include <fmt/format.h>
 
@@ -40,6 +41,19 @@ void require_size(const point_set_entry& set, std::uint64_t n, std::string_view 
 }
 
 }  // namespace
+
+std::string pixel_samples_problem(const point_set_entry& set, std::size_t width, std::size_t height,
+                                  std::uint64_t spp) {
+  std::string problem = size_problem(set, 2, spp);
+  if (problem.empty() && &set == &zsobol_render_set()) {
+    try {
+      const zsobol_points z(width, height, spp, 0, 0);
+    } catch (const invalid_argument& e) {
+      problem = e.what();
+    }
+  }
+  return problem;
+}
 
 void validate(const irradiance_plane& plane) {
   const auto& g = plane.region;
@@ -134,6 +148,20 @@ void estimate_irradiance_pixels(const irradiance_plane& plane, irradiance_sampli
     }
   };
   const double inv = 1.0 / static_cast<double>(spp);
+  if (&set == &zsobol_render_set()) {
+    // One sequence for the whole image (one stream), each pixel its Morton block of it.
+    const zsobol_points z(plane.width, plane.height, spp, seed, stream_id({image_stream}));
+    std::vector<double> u(2 * spp);  // once per call, not per pixel
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const std::size_t p = first + k;
+      x = plane.centre(p);
+      sum = 0.0;
+      z.generate(p % plane.width, p / plane.width, u);
+      sink(0, u);
+      out[k] = sum * inv;
+    }
+    return;
+  }
   for (std::size_t k = 0; k < out.size(); ++k) {
     const std::size_t p = first + k;
     x = plane.centre(p);

@@ -610,6 +610,57 @@ estimate irradiance_over_file(irradiance_sampling technique, const irradiance_se
   return irradiance_with(technique, setup, points, threads);
 }
 
+namespace {
+
+// zsobol's points belong to an image: asked for those of one integral, it says where they are.
+[[noreturn]] void zsobol_is_render_only() {
+  throw invalid_argument("point set", "zsobol",
+                         "a point set of the catalogue: zsobol indexes its points by a pixel's "
+                         "Morton code, so it samples images only (quadmc render)");
+}
+estimate zsobol_monte_carlo(const any_integrand&, const point_set_options&, const sample_stream&,
+                            std::uint64_t, unsigned) {
+  zsobol_is_render_only();
+}
+estimate zsobol_importance(const any_integrand&, const unit_warp&, const point_set_options&,
+                           const sample_stream&, std::uint64_t, unsigned) {
+  zsobol_is_render_only();
+}
+estimate zsobol_irradiance(irradiance_sampling, const irradiance_setup&, const point_set_options&,
+                           const sample_stream&, std::uint64_t, unsigned) {
+  zsobol_is_render_only();
+}
+void zsobol_points_over(std::size_t, std::uint64_t, const point_set_options&, const sample_stream&,
+                        const point_batch_sink&) {
+  zsobol_is_render_only();
+}
+
+constexpr std::array<randomization, 1> zsobol_randomizations{randomization::owen};
+
+constexpr point_set_entry zsobol_entry{
+    "zsobol",
+    "render only: one Owen-scrambled 2D Sobol' sequence over the image, by Morton order",
+    point_count::power_of_two,
+    zsobol_randomizations,
+    2,
+    error_source::replicates,
+    std::uint64_t{1} << 32,
+    false,
+    {},
+    no_options,
+    nullptr,
+    net_strata,
+    zsobol_monte_carlo,
+    zsobol_importance,
+    zsobol_irradiance,
+    zsobol_points_over};
+
+}  // namespace
+
+const point_set_entry& zsobol_render_set() noexcept {
+  return zsobol_entry;
+}
+
 std::span<const point_set_entry> point_set_catalogue() noexcept {
   return entries;
 }

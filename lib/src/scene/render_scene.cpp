@@ -47,10 +47,15 @@ const toml::array& bounded_array(const reader& r, const entry& e, std::size_t mo
   return a;
 }
 
-const point_set_entry& set_named(const reader& r, const entry& e) {
-  const std::string what = fmt::format("a point set, one of: {}", point_set_names());
+// A set of the catalogue, or (for the images of point_sets, not [light_sampling], whose light
+// pattern is one integral's) the render-only zsobol.
+const point_set_entry& set_named(const reader& r, const entry& e, bool render_only_too) {
+  const std::string what =
+      fmt::format("a point set, one of: {}{}", point_set_names(),
+                  render_only_too ? fmt::format(", {}", zsobol_render_set().name) : "");
   const std::string name = r.string(e, what);
   const point_set_entry* set = find_point_set(name);
+  if (render_only_too && name == zsobol_render_set().name) set = &zsobol_render_set();
   if (set == nullptr) r.expected(e, what);
   return *set;
 }
@@ -91,10 +96,10 @@ void read_estimators(const reader& r, const entry& e, render_scene& sc) {
 
 void read_point_sets(const reader& r, const entry& e, render_scene& sc) {
   const toml::array& a =
-      bounded_array(r, e, point_set_catalogue().size(), "a non-empty array of point-set names");
+      bounded_array(r, e, point_set_catalogue().size() + 1, "a non-empty array of point-set names");
   for (std::size_t i = 0; i < a.size(); ++i) {
     const entry element = reader::element(e, i);
-    const point_set_entry& set = set_named(r, element);
+    const point_set_entry& set = set_named(r, element, true);
     if (std::find(sc.point_sets.begin(), sc.point_sets.end(), &set) != sc.point_sets.end()) {
       r.fail(element, fmt::format("'{}' is listed twice", set.name));
     }
@@ -125,7 +130,7 @@ void read_light_sampling(const reader& r, const entry& e, render_scene& sc) {
     if (key.str() == "samples") {
       sc.light_samples = r.integer(inner, 1, max_spp, "light samples between 1 and 4096");
     } else {
-      sc.light_sampling_set = &set_named(r, inner);
+      sc.light_sampling_set = &set_named(r, inner, false);
     }
   }
   for (const std::uint64_t n : {std::uint64_t{1}, sc.light_samples}) {
@@ -183,7 +188,7 @@ void check_scene(const reader& r, const toml::table& root, const render_scene& s
   const auto spp = r.find(root, "spp", "");
   for (const auto* set : sc.point_sets) {
     for (const std::uint64_t n : sc.spp) {
-      const std::string problem = size_problem(*set, 2, n);
+      const std::string problem = pixel_samples_problem(*set, sc.width, sc.height, n);
       if (problem.empty()) continue;
       r.fail(spp ? r.at(*spp) : file_start, "spp",
              fmt::format("the {} points cannot hold {} samples per pixel in 2D: {}", set->name, n,

@@ -30,6 +30,7 @@
 #include <numbers>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace quadmc {
@@ -152,8 +153,16 @@ class irradiance_plane_sampler {
 
 // Pixels [first, first + out.size()) of one estimated image: each the mean of the estimator's Y
 // over the `spp` points of `set` (s = 2, the set's default options) at the pixel centre, stream
-// stream_id({image_stream, pixel}). Throws invalid_argument when the set cannot hold spp points
-// in 2D (padded and jittered sets need N = k², Sobol' N = 2^m).
+// stream_id({image_stream, pixel}); with zsobol_render_set() (point_set_catalogue.hpp) instead,
+// one Z-ordered Sobol' sequence over the whole image, stream stream_id({image_stream}), pixel p
+// taking its Morton block (sampling/zsobol_points.hpp). Throws invalid_argument when the set
+// cannot hold spp points in 2D (padded and jittered sets need N = k², Sobol' N = 2^m; zsobol
+// also 4^⌈log₂ max(W, H)⌉ × spp ≤ 2^32).
+// Why `set` cannot draw a W × H image with spp samples per pixel (empty when it can): its 2D
+// counts (size_problem), and for zsobol the Sobol' index range, 4^⌈log₂ max(W, H)⌉ × spp ≤ 2^32.
+std::string pixel_samples_problem(const point_set_entry& set, std::size_t width, std::size_t height,
+                                  std::uint64_t spp);
+
 void estimate_irradiance_pixels(const irradiance_plane& plane, irradiance_sampling technique,
                                 const point_set_entry& set, std::uint64_t spp, std::uint64_t seed,
                                 std::uint64_t image_stream, std::size_t first,

@@ -245,6 +245,12 @@ std::span<const point_set_entry> point_set_catalogue() noexcept;
 const point_set_entry* find_point_set(std::string_view name) noexcept;
 // Comma-separated names, for "expected one of …" messages.
 std::string point_set_names();
+// `zsobol`, the render-only set (sampling/zsobol_points.hpp; docs/theory.md#z-ordered-sobol): not
+// in the catalogue, since a pixel's points depend on where the pixel is and there are no points
+// of one integral to give: its estimators and points() throw invalid_argument saying so.
+// estimate_irradiance_pixels (estimators/irradiance_image.hpp) draws its images.
+const point_set_entry& zsobol_render_set() noexcept;
+
 // One option a caller names by key (`quadmc points`' flags, the Python module's keywords), as
 // text: a choice's name, "true" for a flag that is set, empty for one left at its default.
 struct named_option {

@@ -22,7 +22,8 @@
 //   occluder = true        the catalogue's occluder (functions/irradiance.hpp) or none.
 //   occluder_height = 0.5  its height, 0 < h below the light (default 0.5, the catalogue's).
 //   estimators = [...]     uniform_hemisphere, cosine_hemisphere, light_area (default all three).
-//   point_sets = [...]     names of the point-set catalogue (default independent, jittered,
+//   point_sets = [...]     names of the point-set catalogue, or zsobol (render only:
+//                          sampling/zsobol_points.hpp) (default independent, jittered,
 //                          padded_jittered, latin_hypercube, sobol).
 //   spp = [1, 4, 16, 64]   samples per pixel, increasing, each 1…4096, at most 16 values; every
 //                          set must hold each in 2D.
