@@ -124,8 +124,8 @@ TEST(RankOneLatticePoints, ShiftedPointsAreUniformWithAndWithoutTheBaker) {
 // The vector kernel (sampling/rank1_lattice_blocks.hpp) against the scalar loop kept as
 // generate_reference: bitwise equal with and without shift and baker's transform, dimensions on
 // both sides of the block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices, 16
-// with AVX2, with a masked tail), N = 2^4 … 2^20, batches cut at sizes and starts that split blocks
-// anywhere; at every simd level this CPU offers.
+// with AVX2, with a masked tail), N = 2^4 … 2^16 and 2^20 once per transform, batches cut at sizes
+// and starts that split blocks anywhere; at every simd level this CPU offers.
 template <class P>
 void expect_lattice_kernel_equals_reference(std::size_t s, std::uint64_t n, bool shifted) {
   const rank1_lattice_points<P> points(s, n, 2026, 18, shifted);
@@ -153,13 +153,18 @@ TEST(RankOneLatticePoints, VectorKernelEqualsTheScalarLoopBitwise) {
   const simd_level saved = active_simd_level();
   for (const std::size_t s : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 13u, 64u, 65u, 130u}) {
     for (const std::uint64_t n : {std::uint64_t{1} << 4, std::uint64_t{1} << 12,
-                                  s <= 2 ? std::uint64_t{1} << 20 : std::uint64_t{1} << 14}) {
+                                  s <= 2   ? std::uint64_t{1} << 16
+                                  : s <= 8 ? std::uint64_t{1} << 14
+                                           : std::uint64_t{1} << 13}) {
       for (const bool shifted : {false, true}) {
         expect_lattice_kernel_equals_reference<no_periodization>(s, n, shifted);
         expect_lattice_kernel_equals_reference<baker_transform>(s, n, shifted);
       }
     }
   }
+  // The largest N, 2^20 (products i·z_j up to 2^40), once per transform.
+  expect_lattice_kernel_equals_reference<no_periodization>(1, std::uint64_t{1} << 20, true);
+  expect_lattice_kernel_equals_reference<baker_transform>(2, std::uint64_t{1} << 20, true);
   expect_lattice_kernel_equals_reference<baker_transform>(3600, 64, true);
   set_simd_level(saved);
 }

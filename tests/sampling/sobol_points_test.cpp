@@ -279,7 +279,8 @@ TYPED_TEST(SobolNet, BatchOrderDoesNotChangeAnyBit) {
 // The vector kernel (sampling/sobol_blocks.hpp) against the scalar Gray-code walk kept as
 // generate_reference: bitwise equal for every randomization, dimensions on both sides of the
 // block sizes (s ≤ 8: 8/gcd(s, 8) points per block; above: 64-lane slices, 16 with AVX2, with a
-// masked tail), N up to 2^20, the first point dropped or not, the last indices below 2^32, and
+// masked tail), N up to 2^16 and windows up to 2^20, the first point dropped or not, the last
+// indices below 2^32, and
 // batches cut at sizes and starts that split blocks anywhere; at every simd level this CPU offers.
 template <class R>
 void expect_kernel_equals_reference(std::size_t s, std::uint64_t n, bool drop_first,
@@ -321,9 +322,17 @@ template <class R>
 void expect_kernel_equals_reference_for_all_sizes() {
   const simd_level saved = active_simd_level();
   for (const std::size_t s : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 13u, 64u, 65u, 130u}) {
-    const std::uint64_t n = s == 1 ? std::uint64_t{1} << 20 : s <= 8 ? 1u << 16 : 1u << 12;
+    const std::uint64_t n = s == 1 ? std::uint64_t{1} << 16 : s <= 8 ? 1u << 13 : 1u << 12;
     expect_kernel_equals_reference<R>(s, n, false);
     expect_kernel_equals_reference<R>(s, n - 1, true);
+  }
+  // Columns 13 … 20: windows of 6000 points across 2^17 and 2^20, whose first points set those
+  // columns' bits (the kernel's direct start) and whose walk flips column 17 or 20 once.
+  for (const std::size_t s : {1u, 5u}) {
+    for (const unsigned top : {17u, 20u}) {
+      expect_kernel_equals_reference<R>(s, (std::uint64_t{1} << top) + 3000, false,
+                                        (std::uint64_t{1} << top) - 3000);
+    }
   }
   // The top of the index range: columns 20 … 31 and a block index near 2^29.
   expect_kernel_equals_reference<R>(3, std::uint64_t{1} << 32, false,

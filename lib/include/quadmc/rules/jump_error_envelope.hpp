@@ -78,6 +78,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -232,16 +233,17 @@ inline std::optional<double> product_envelope(const std::vector<factor_bounds>& 
 // neither the integral nor M₀ is known.
 inline std::optional<factor_bounds> bounds_of(const piecewise_smooth_factor& g, double width,
                                               double e) {
-  const std::optional<double> by_max =
-      g.derivative_bound[0] ? std::optional<double>(width * *g.derivative_bound[0]) : std::nullopt;
-  const std::optional<double> by_integral =
-      std::isfinite(g.integral) ? std::optional<double>(std::abs(g.integral)) : std::nullopt;
-  if (!by_max && !by_integral) return std::nullopt;
+  const bool integral_known = std::isfinite(g.integral);
+  if (!g.derivative_bound[0] && !integral_known) return std::nullopt;
+  // +∞ for a bound that is unknown, so that min() takes the known one. (Plain doubles: GCC 12 at
+  // -O1 took a std::optional<double> here for "maybe uninitialized".)
+  constexpr double unknown = std::numeric_limits<double>::infinity();
+  const double by_max = g.derivative_bound[0] ? width * *g.derivative_bound[0] : unknown;
+  const double by_integral = integral_known ? std::abs(g.integral) : unknown;
   factor_bounds out;
   out.envelope = e;
-  out.integral_abs = by_integral ? *by_integral : *by_max;
-  out.sum_abs = by_integral ? *by_integral + e : *by_max;
-  if (by_max) out.sum_abs = std::min(out.sum_abs, *by_max);
+  out.integral_abs = integral_known ? by_integral : by_max;
+  out.sum_abs = integral_known ? std::min(by_integral + e, by_max) : by_max;
   return out;
 }
 
