@@ -935,7 +935,8 @@ std::string readme_files(const render_scene& sc) {
          "over the error's mean square), "
          "`meta.csv` (what built the command). Per-pixel randomness is counter-based: pixel p of "
          "an image uses the Philox stream stream_id({image, p}), the image named by (estimator, "
-         "point set, spp), so the files are the same bits for any thread count. Regenerate with "
+         "point set, spp), and `zsobol` one stream stream_id({image}) for its whole image, so "
+         "the files are the same bits for any thread count. Regenerate with "
          "`build/release/bench/quadmc render " +
          sc.file + "`.\n";
 }
