@@ -14,6 +14,7 @@
 #include "quadmc/sampling/net_quality.hpp"
 #include "quadmc/sampling/periodogram.hpp"
 #include "quadmc/sampling/point_file.hpp"
+#include "quadmc/sampling/zsobol_points.hpp"
 
 #include "build_provenance.hpp"
 #include "cli_validators.hpp"
@@ -104,11 +105,26 @@ struct set_result {
   double seconds = 0.0;
 };
 
-// Realization `stream` of N points: the set's stream of seed K, or a user's file r = stream, read
-// again as the plan read it (read_point_file checks it again, so a file changed since is refused
-// in one line, before anything is written).
+// zsobol's points belong to an image: the gallery shows the first 2 × 2 tile of pixels, N/4
+// samples each, in Morton order, one after the other (pixel (0, 0) first): each pixel's points
+// are a scrambled (0, m − 2, 2)-net and the tile's together a (0, m, 2)-net, the structure that
+// makes neighbouring pixels' errors cancel (sampling/zsobol_points.hpp).
+std::vector<double> zsobol_tile(std::uint64_t n, std::uint64_t seed, std::uint64_t stream) {
+  const quadmc::zsobol_points z(2, 2, n / 4, seed, stream);
+  std::vector<double> x(n * dimension);
+  const std::size_t per_pixel = static_cast<std::size_t>(n / 4) * dimension;
+  for (std::size_t p = 0; p < 4; ++p) {
+    z.generate(p % 2, p / 2, std::span<double>(x).subspan(p * per_pixel, per_pixel));
+  }
+  return x;
+}
+
+// Realization `stream` of N points: the set's stream of seed K (zsobol: its tile), or a user's
+// file r = stream, read again as the plan read it (read_point_file checks it again, so a file
+// changed since is refused in one line, before anything is written).
 std::vector<double> points_of(const gallery_set& set, std::uint64_t n, std::uint64_t seed,
                               std::uint64_t stream) {
+  if (set.entry == &quadmc::zsobol_render_set()) return zsobol_tile(n, seed, stream);
   if (set.entry == nullptr) {
     return quadmc::read_point_file(quadmc::point_file_path(set.path_template, n, stream),
                                    quadmc::point_file_columns::points, n, dimension)
@@ -424,6 +440,11 @@ std::string readme(const std::vector<set_result>& results, const gallery_request
       "permutation is the identity and whose jitter uses the same uniform numbers, so its points "
       "are the jittered points; padding shuffles strata across dimension pairs only from s = 3 "
       "on.\n"
+      "- **zsobol** samples images (`quadmc render` only): its row is the first 2 × 2 tile of "
+      "pixels of an image, N/4 samples each, one pixel after the other in Morton order. Each "
+      "pixel's points are a scrambled (0, m − 2, 2)-net and the four together a (0, m, 2)-net, "
+      "so the tile looks like `sobol`; what the shared net buys, errors that cancel between "
+      "neighbouring pixels, is measured on the render page (results/render).\n"
       "- **Discrepancy table** below: the discrepancies of the pictured points and their root "
       "mean square over min(R, 32) realizations, beside the expected value for independent "
       "points, √((2⁻ˢ − 3⁻ˢ)/N) etc. (sampling/discrepancy.hpp).\n\n",
@@ -520,6 +541,9 @@ std::string points_option_problem(std::string_view text, points_option& out) {
   for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
     if (set.name == out.name) return got("NAME is a point set of the suite; choose another");
   }
+  if (out.name == quadmc::zsobol_render_set().name) {
+    return got("NAME is a point set of the suite; choose another");
+  }
   if (out.path_template.find("{N}") == std::string::npos) {
     return got("PATH_TEMPLATE needs {N} (one file per N = 16, 64, 256, 1024)");
   }
@@ -563,6 +587,11 @@ std::vector<gallery_set> plan_sets(const gallery_request& r, std::vector<std::st
       skipped.push_back(fmt::format("{}: {}", set.name, problem));
     }
   }
+  // The render's own set, as the 2 × 2 tile of pixels zsobol_tile draws (every size is 4·2^k).
+  gallery_set tile{
+      std::string(quadmc::zsobol_render_set().name), &quadmc::zsobol_render_set(), {}, {}};
+  tile.realizations.fill(r.realizations);
+  sets.push_back(std::move(tile));
   for (const std::string& text : r.points) {
     points_option p;
     const std::string problem = points_option_problem(text, p);

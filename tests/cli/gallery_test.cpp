@@ -52,12 +52,12 @@ std::unique_ptr<command_result> GalleryCommand::result_;
 
 TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
   ASSERT_EQ(result_->exit_status, 0) << describe(*result_);
-  EXPECT_EQ(result_->out.rfind("gallery: 11 point sets in s = 2 (seed 5), 3 threads", 0), 0u)
+  EXPECT_EQ(result_->out.rfind("gallery: 12 point sets in s = 2 (seed 5), 3 threads", 0), 0u)
       << describe(*result_);
   EXPECT_NE(result_->out.find("over 3 realizations per set"), std::string::npos);
   EXPECT_NE(result_->out.find("jittered         strata: N = 16: 4 × 4 cells"), std::string::npos)
       << result_->out;
-  EXPECT_NE(result_->out.find("\ngallery: 11 point sets in "), std::string::npos);
+  EXPECT_NE(result_->out.find("\ngallery: 12 point sets in "), std::string::npos);
   EXPECT_NE(result_->out.find("wrote "), std::string::npos);
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(*dir_ / "g")) {
@@ -75,8 +75,8 @@ TEST_F(GalleryCommand, PrintsThePlanFirstAndWritesEveryFile) {
     EXPECT_EQ(row[spectrum.column("realizations")], "3");
     EXPECT_EQ(row[spectrum.column("n")], "1024");
   }
-  EXPECT_EQ(sets.size(), 11u);
-  EXPECT_EQ(spectrum.rows.size(), 11u * 64u);
+  EXPECT_EQ(sets.size(), 12u);  // the catalogue's 11 and zsobol's tile
+  EXPECT_EQ(spectrum.rows.size(), 12u * 64u);
 }
 
 // discrepancy.csv's t-values (sampling/net_quality.hpp): the scrambled nets of every size are
@@ -92,7 +92,8 @@ TEST_F(GalleryCommand, NetsHaveTZeroAndShiftedGridsHalfOfM) {
     const std::string set = row[d.column("set")];
     const auto n = std::stoull(row[d.column("n")]);
     const std::string t = row[d.column("t_value_max")];
-    if (set == "sobol" || set == "padded_sobol" || set == "pmj02") {
+    // zsobol's row is a 2 × 2 tile of pixels, N/4 points each: together one scrambled net.
+    if (set == "sobol" || set == "padded_sobol" || set == "pmj02" || set == "zsobol") {
       EXPECT_EQ(t, "0") << set << " N = " << n;
       ++checked;
     } else if (set == "unjittered") {
@@ -103,7 +104,7 @@ TEST_F(GalleryCommand, NetsHaveTZeroAndShiftedGridsHalfOfM) {
     EXPECT_GT(delta, 0.0) << set << " N = " << n;
     EXPECT_TRUE(std::isfinite(delta)) << set << " N = " << n;
   }
-  EXPECT_EQ(checked, 16);
+  EXPECT_EQ(checked, 20);
 }
 
 // Every grid strata.csv lists is checked against the points of scatter.csv: `cells` means each
@@ -148,7 +149,7 @@ TEST_F(GalleryCommand, StratifiedSetsPutExactlyOnePointPerStratum) {
     }
   }
   for (const std::string n : {"16", "64", "256"}) {
-    for (const std::string set : {"jittered", "unjittered", "padded_jittered", "sobol"}) {
+    for (const std::string set : {"jittered", "unjittered", "padded_jittered", "sobol", "zsobol"}) {
       EXPECT_TRUE(listed.count({set, "cells@" + n})) << set << " N = " << n;
     }
     for (const std::string set : {"latin_hypercube", "lattice"}) {
@@ -256,7 +257,7 @@ TEST_F(GalleryPoints, SobolFilesGiveTheSobolRowBitwiseOnAnyThreadCount) {
   three.insert(three.end(), {"--out", "g", "--threads", "3"});
   const command_result r = run_quadmc(*dir_, three);
   ASSERT_EQ(r.exit_status, 0) << describe(r);
-  EXPECT_EQ(r.out.rfind("gallery: 11 point sets and 1 from files (--points) in s = 2", 0), 0u)
+  EXPECT_EQ(r.out.rfind("gallery: 12 point sets and 1 from files (--points) in s = 2", 0), 0u)
       << r.out;
   EXPECT_NE(r.out.find("mine             strata: none (files pts/{N}_{r}.csv; realizations at "
                        "N = 16, 64, 256, 1024: 4, 4, 4, 4)"),
