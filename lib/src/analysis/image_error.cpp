@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <new>
 
 namespace quadmc {
 
@@ -94,6 +95,7 @@ std::vector<spectrum_ring> error_spectrum(std::span<const double> e, std::size_t
   const std::size_t half = width / 2 + 1;  // r2c keeps k₁ = 0 … ⌊W/2⌋
   const std::unique_ptr<double, fftw_free_deleter> in(fftw_alloc_real(e.size()));
   const std::unique_ptr<fftw_complex, fftw_free_deleter> out(fftw_alloc_complex(height * half));
+  if (!in || !out) throw std::bad_alloc();
   fftw_plan plan = nullptr;
   {
     const std::lock_guard lock(planner_mutex());
