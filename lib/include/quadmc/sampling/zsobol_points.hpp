@@ -58,9 +58,12 @@ class zsobol_points {
     require(row < height_, "pixel row", row, "a row of the image, < its height");
     require(out.size() == 2 * samples_per_pixel(), "output size", out.size(),
             "2 × samples per pixel");
-    const std::uint64_t base = morton(column, row) << sample_bits_;
+    const std::uint64_t pixel = morton(column, row) << sample_bits_;
+    // The digits above the sample bits are the pixel's: permuted once, not once per sample.
+    const std::uint64_t pixel_index = permuted_digits(pixel, index_bits_, sample_bits_);
     for (std::uint64_t i = 0; i < samples_per_pixel(); ++i) {
-      const auto index = static_cast<std::uint32_t>(permuted_index(base | i));
+      const auto index =
+          static_cast<std::uint32_t>(pixel_index | permuted_digits(pixel | i, sample_bits_, 0));
       for (std::size_t d = 0; d < 2; ++d) {
         const std::uint64_t digits = std::uint64_t{sobol_digits(matrices_.columns(d), index)} << 32;
         out[2 * i + d] = fraction_to_unit(scramble_(digits, d));
@@ -71,14 +74,7 @@ class zsobol_points {
   // The sequence index of Morton index m: its base-4 digits permuted from the top, each by the
   // permutation a hash of the digits above it picks (tests: a bijection keeping aligned blocks).
   std::uint64_t permuted_index(std::uint64_t m) const noexcept {
-    std::uint64_t out = 0;
-    int shift = static_cast<int>(index_bits_) - 2;
-    for (; shift >= 0; shift -= 2) {
-      const auto digit = static_cast<unsigned>((m >> shift) & 3);
-      out |= std::uint64_t{permutations[pick(m, shift + 2)][digit]} << shift;
-    }
-    if (shift == -1) out |= (m & 1) ^ (hash(m, 1) >> 63);  // T odd: the last digit is one bit
-    return out;
+    return permuted_digits(m, index_bits_, 0);
   }
 
   // Bits of c at the even positions, of r at the odd ones.
@@ -92,6 +88,23 @@ class zsobol_points {
   }
 
  private:
+  // The permuted digits of m at bits [low, top), read from the top in base 4; when top − low is
+  // odd (T odd, and low = 0) the last digit is the single bit `low`. The pixel's digits [k, T)
+  // are an even count (T − k = 2R), so they and the sample's [0, k) split as permuted_index does.
+  std::uint64_t permuted_digits(std::uint64_t m, unsigned top, unsigned low) const noexcept {
+    std::uint64_t out = 0;
+    unsigned shift = top;
+    for (; shift >= low + 2; shift -= 2) {
+      const unsigned s = shift - 2;
+      const auto digit = static_cast<unsigned>((m >> s) & 3);
+      out |= std::uint64_t{permutations[pick(m, shift)][digit]} << s;
+    }
+    if (shift == low + 1) {
+      out |= (((m >> low) & 1) ^ (hash(m, shift) >> 63)) << low;
+    }
+    return out;
+  }
+
   static constexpr std::array<std::array<std::uint8_t, 4>, 24> permutations = [] {
     std::array<std::array<std::uint8_t, 4>, 24> all{};
     std::size_t n = 0;
@@ -128,15 +141,15 @@ class zsobol_points {
 
   // A hash of the digits of m above bit `low` with a leading 1 marking how many there are, so
   // that prefixes of different lengths are different keys (as owen_scramble's prefixes).
-  std::uint64_t hash(std::uint64_t m, int low) const noexcept {
-    const unsigned above = index_bits_ - static_cast<unsigned>(low);
+  std::uint64_t hash(std::uint64_t m, unsigned low) const noexcept {
+    const unsigned above = index_bits_ - low;
     const std::uint64_t prefix = (m >> low) | (std::uint64_t{1} << above);
     return mix64(key_ ^ mix64(prefix));
   }
 
   // One of the 24 permutations, from the top 32 bits of the hash (multiply-shift: uniform to
   // within 24 / 2^32).
-  std::size_t pick(std::uint64_t m, int low) const noexcept {
+  std::size_t pick(std::uint64_t m, unsigned low) const noexcept {
     return static_cast<std::size_t>(((hash(m, low) >> 32) * 24) >> 32);
   }
 
