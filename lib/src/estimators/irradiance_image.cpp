@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -148,25 +149,24 @@ void estimate_irradiance_pixels(const irradiance_plane& plane, irradiance_sampli
     }
   };
   const double inv = 1.0 / static_cast<double>(spp);
+  // zsobol: one sequence for the whole image (one stream), each pixel its Morton block of it,
+  // into a buffer sized once per call, not per pixel.
+  std::optional<zsobol_points> z;
+  std::vector<double> u;
   if (&set == &zsobol_render_set()) {
-    // One sequence for the whole image (one stream), each pixel its Morton block of it.
-    const zsobol_points z(plane.width, plane.height, spp, seed, stream_id({image_stream}));
-    std::vector<double> u(2 * spp);  // once per call, not per pixel
-    for (std::size_t k = 0; k < out.size(); ++k) {
-      const std::size_t p = first + k;
-      x = plane.centre(p);
-      sum = 0.0;
-      z.generate(p % plane.width, p / plane.width, u);
-      sink(0, u);
-      out[k] = sum * inv;
-    }
-    return;
+    z.emplace(plane.width, plane.height, spp, seed, stream_id({image_stream}));
+    u.resize(2 * spp);
   }
   for (std::size_t k = 0; k < out.size(); ++k) {
     const std::size_t p = first + k;
     x = plane.centre(p);
     sum = 0.0;
-    set.points(2, spp, {seed, stream_id({image_stream, p})}, sink);
+    if (z) {
+      z->generate(p % plane.width, p / plane.width, u);
+      sink(0, u);
+    } else {
+      set.points(2, spp, {seed, stream_id({image_stream, p})}, sink);
+    }
     out[k] = sum * inv;
   }
 }
