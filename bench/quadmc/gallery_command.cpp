@@ -538,10 +538,7 @@ std::string points_option_problem(std::string_view text, points_option& out) {
   if (out.name.empty() || out.name.size() > max_user_name || !safe) {
     return got(fmt::format("NAME must be 1 to {} letters, digits, '_' or '-'", max_user_name));
   }
-  for (const quadmc::point_set_entry& set : quadmc::point_set_catalogue()) {
-    if (set.name == out.name) return got("NAME is a point set of the suite; choose another");
-  }
-  if (out.name == quadmc::zsobol_render_set().name) {
+  if (quadmc::find_point_set(out.name) != nullptr || out.name == quadmc::zsobol_render_set().name) {
     return got("NAME is a point set of the suite; choose another");
   }
   if (out.path_template.find("{N}") == std::string::npos) {

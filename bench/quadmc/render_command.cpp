@@ -150,6 +150,18 @@ void measure_frequencies(std::span<const double> x, std::span<const double> exac
   s.spectrum = quadmc::error_spectrum(e, width, height);
 }
 
+// The share of its RMSE an error image keeps after the widest low-pass; NaN for an exact image.
+double lowpass_share(const error_stats& s) {
+  return s.lowpass_rmse[0] > 0.0 ? s.lowpass_rmse.back() / s.lowpass_rmse[0]
+                                 : std::numeric_limits<double>::quiet_NaN();
+}
+
+// What the widest low-pass leaves of errors independent from pixel to pixel: the filter's
+// Σ w² per axis, ≈ 1/(2σ√π) (docs/theory.md#error-spectrum).
+double white_noise_share() {
+  return 1.0 / (2.0 * lowpass_sigmas.back() * std::sqrt(std::numbers::pi));
+}
+
 // The mean relative power over the rings up to low_frequency (weighted by their frequencies).
 double low_frequency_power(const error_stats& s) {
   double power = 0.0;
@@ -584,22 +596,28 @@ std::string light_sampling_csv(const render_result& r) {
   return csv;
 }
 
-// The README's title, what was rendered and how, and the exact image.
+// The statistics of the estimated image of (technique, set, spp); nullptr if it was not rendered.
+const error_stats* stats_of(const render_result& r, quadmc::irradiance_sampling technique,
+                            const quadmc::point_set_entry* set, std::uint64_t spp) {
+  for (std::size_t k = 0; k < r.images.size(); ++k) {
+    const image& im = r.images[k];
+    if (im.kind == image_kind::estimate && im.technique == technique && im.set == set &&
+        im.spp == spp) {
+      return &r.stats[k];
+    }
+  }
+  return nullptr;
+}
+
 // The RMSE of the image of (technique, set, spp) over all pixels (visibility nullopt) or over one
 // visibility class; nullopt where that class has no pixel (its RMSE is NaN).
 std::optional<double> rmse_of(const render_result& r, quadmc::irradiance_sampling technique,
                               const quadmc::point_set_entry* set, std::uint64_t spp,
                               std::optional<std::size_t> visibility) {
-  for (std::size_t k = 0; k < r.images.size(); ++k) {
-    const image& im = r.images[k];
-    if (im.kind != image_kind::estimate || im.technique != technique || im.set != set ||
-        im.spp != spp) {
-      continue;
-    }
-    const double e = visibility ? r.stats[k].rmse_by_visibility[*visibility] : r.stats[k].rmse;
-    return std::isnan(e) ? std::nullopt : std::optional<double>(e);
-  }
-  return std::nullopt;
+  const error_stats* s = stats_of(r, technique, set, spp);
+  if (s == nullptr) return std::nullopt;
+  const double e = visibility ? s->rmse_by_visibility[*visibility] : s->rmse;
+  return std::isnan(e) ? std::nullopt : std::optional<double>(e);
 }
 
 // Per estimator, its point sets' RMSE at each spp: the table the page shows, as one
@@ -665,12 +683,10 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
   std::optional<std::pair<double, std::string>> lowest_left, smallest_share;
   for (std::size_t k = 0; k < r.images.size(); ++k) {
     const image& im = r.images[k];
-    if (im.kind != image_kind::estimate || im.spp != top || !(r.stats[k].lowpass_rmse[0] > 0.0)) {
-      continue;
-    }
+    const double share = lowpass_share(r.stats[k]);
+    if (im.kind != image_kind::estimate || im.spp != top || std::isnan(share)) continue;
     const std::string what = fmt::format("`{}` with `{}`", to_string(im.technique), im.set->name);
     const double left = r.stats[k].lowpass_rmse.back();
-    const double share = left / r.stats[k].lowpass_rmse[0];
     if (!lowest_left || left < lowest_left->first) lowest_left = {left, what};
     if (!smallest_share || share < smallest_share->first) smallest_share = {share, what};
   }
@@ -680,7 +696,7 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
         "smallest share of its own RMSE kept, {} ({:.3g}; errors independent from pixel to pixel "
         "keep ≈ {:.3g}).",
         widest, top, lowest_left->second, lowest_left->first, smallest_share->second,
-        smallest_share->first, 1.0 / (2.0 * widest * std::sqrt(std::numbers::pi))));
+        smallest_share->first, white_noise_share()));
   }
   lines.push_back("**Best point set per estimator, all pixels:** " +
                   best_set_per_estimator(sc, r, std::nullopt) + ".");
@@ -724,6 +740,7 @@ std::vector<std::string> answer_lines(const render_scene& sc, const render_resul
   return lines;
 }
 
+// The README's title, what was rendered and how, and the exact image.
 std::string readme_intro(const render_scene& sc, const quadmc::irradiance_plane& plane,
                          const quadmc::provenance& build, const render_result& r) {
   const double pixels = static_cast<double>(plane.pixels());
@@ -826,7 +843,7 @@ std::string readme_lowpass(const render_scene& sc, const render_result& r) {
       "cancel between neighbouring pixels (blue noise) keep less, and have low-frequency power "
       "below 1 (docs/theory.md#error-spectrum). Every spp: `lowpass.csv`; every ring of the "
       "spectrum: `error_spectrum.csv`.\n\n",
-      low_frequency, 1.0 / (2.0 * widest * std::sqrt(std::numbers::pi)), widest);
+      low_frequency, white_noise_share(), widest);
   t += "| estimator | point set |";
   for (const double s : lowpass_sigmas) t += fmt::format(" σ = {} |", s);
   t += fmt::format(" σ = {} / σ = 0 | power at f ≤ {} |\n|---|---|", widest, low_frequency);
@@ -834,21 +851,12 @@ std::string readme_lowpass(const render_scene& sc, const render_result& r) {
   t += "\n";
   for (const auto tech : sc.estimators) {
     for (const auto* set : sc.point_sets) {
-      for (std::size_t k = 0; k < r.images.size(); ++k) {
-        const image& im = r.images[k];
-        if (im.kind != image_kind::estimate || im.technique != tech || im.set != set ||
-            im.spp != top) {
-          continue;
-        }
-        const error_stats& s = r.stats[k];
-        t += fmt::format("| {} | {} |", to_string(tech), set->name);
-        for (const double v : s.lowpass_rmse) t += fmt::format(" {} |", fixed(v));
-        t += fmt::format(" {} | {} |\n",
-                         fixed(s.lowpass_rmse[0] > 0.0 ? s.lowpass_rmse.back() / s.lowpass_rmse[0]
-                                                       : std::numeric_limits<double>::quiet_NaN(),
-                               3),
-                         fixed(low_frequency_power(s), 3));
-      }
+      const error_stats* s = stats_of(r, tech, set, top);
+      if (s == nullptr) continue;
+      t += fmt::format("| {} | {} |", to_string(tech), set->name);
+      for (const double v : s->lowpass_rmse) t += fmt::format(" {} |", fixed(v));
+      t += fmt::format(" {} | {} |\n", fixed(lowpass_share(*s), 3),
+                       fixed(low_frequency_power(*s), 3));
     }
   }
   if (sc.images) {

@@ -48,6 +48,12 @@ void convolve_line(const double* in, double* out, std::size_t count, std::size_t
   }
 }
 
+double mean_square(std::span<const double> x) {
+  neumaier_sum sq;
+  for (const double v : x) sq += v * v;
+  return sq.value() / static_cast<double>(x.size());
+}
+
 struct fftw_free_deleter {
   void operator()(void* p) const noexcept { fftw_free(p); }
 };
@@ -65,28 +71,25 @@ double lowpass_rmse(std::span<const double> e, std::size_t width, std::size_t he
   require_image(e, width, height);
   require(std::isfinite(sigma) && sigma >= 0.0 && sigma <= 64.0, "low-pass sigma (pixels)", sigma,
           "0 ≤ σ ≤ 64");
-  std::vector<double> filtered(e.begin(), e.end());
-  if (sigma > 0.0) {
-    const auto radius = static_cast<std::size_t>(std::ceil(4.0 * sigma));
-    std::vector<double> w(2 * radius + 1);
-    double total = 0.0;
-    for (std::size_t i = 0; i < w.size(); ++i) {
-      const double d = static_cast<double>(i) - static_cast<double>(radius);
-      w[i] = std::exp(-d * d / (2.0 * sigma * sigma));
-      total += w[i];
-    }
-    for (double& x : w) x /= total;
-    std::vector<double> rows(e.size());
-    for (std::size_t r = 0; r < height; ++r) {
-      convolve_line(e.data() + r * width, rows.data() + r * width, width, 1, w);
-    }
-    for (std::size_t c = 0; c < width; ++c) {
-      convolve_line(rows.data() + c, filtered.data() + c, height, width, w);
-    }
+  if (sigma == 0.0) return std::sqrt(mean_square(e));
+  const auto radius = static_cast<std::size_t>(std::ceil(4.0 * sigma));
+  std::vector<double> w(2 * radius + 1);
+  double total = 0.0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const double d = static_cast<double>(i) - static_cast<double>(radius);
+    w[i] = std::exp(-d * d / (2.0 * sigma * sigma));
+    total += w[i];
   }
-  neumaier_sum sq;
-  for (const double x : filtered) sq += x * x;
-  return std::sqrt(sq.value() / static_cast<double>(e.size()));
+  for (double& x : w) x /= total;
+  std::vector<double> rows(e.size());
+  for (std::size_t r = 0; r < height; ++r) {
+    convolve_line(e.data() + r * width, rows.data() + r * width, width, 1, w);
+  }
+  std::vector<double> filtered(e.size());
+  for (std::size_t c = 0; c < width; ++c) {
+    convolve_line(rows.data() + c, filtered.data() + c, height, width, w);
+  }
+  return std::sqrt(mean_square(filtered));
 }
 
 std::vector<spectrum_ring> error_spectrum(std::span<const double> e, std::size_t width,
@@ -111,10 +114,8 @@ std::vector<spectrum_ring> error_spectrum(std::span<const double> e, std::size_t
     fftw_destroy_plan(plan);
   }
 
-  neumaier_sum sq;
-  for (const double x : e) sq += x * x;
   const auto pixels = static_cast<double>(e.size());
-  const double mean_square = sq.value() / pixels;
+  const double mean_sq = mean_square(e);
 
   std::vector<neumaier_sum> power(spectrum_rings);
   std::vector<std::uint64_t> count(spectrum_rings, 0);
@@ -142,9 +143,9 @@ std::vector<spectrum_ring> error_spectrum(std::span<const double> e, std::size_t
   for (std::size_t b = 0; b < spectrum_rings; ++b) {
     rings[b].frequency = static_cast<double>(b + 1) / 64.0;
     rings[b].frequencies = count[b];
-    rings[b].relative_power = count[b] == 0 || mean_square == 0.0
+    rings[b].relative_power = count[b] == 0 || mean_sq == 0.0
                                   ? nan
-                                  : power[b].value() / static_cast<double>(count[b]) / mean_square;
+                                  : power[b].value() / static_cast<double>(count[b]) / mean_sq;
   }
   return rings;
 }
