@@ -8,6 +8,7 @@
 #include "quadmc/estimators/importance_sampling.hpp"
 #include "quadmc/estimators/irradiance_estimators.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/estimators/sample_values.hpp"
 #include "quadmc/sampling/cmj_points.hpp"
 #include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
@@ -19,6 +20,7 @@
 #include "quadmc/sampling/pmj02_points.hpp"
 #include "quadmc/sampling/point_file.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
+#include "quadmc/sampling/rank1_lattice_sequence.hpp"
 #include "quadmc/sampling/sobol_points.hpp"
 #include "quadmc/sampling/stratum_grid.hpp"
 #include "quadmc/sampling/unjittered_points.hpp"
@@ -66,6 +68,17 @@ struct plain_set {
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options&,
                               const sample_stream& st, Fn&& fn) {
     return fn(P(s, n, st.seed, st.stream));
+  }
+};
+
+// Independent points: point i is the same whatever N, so the set extends.
+template <class P>
+struct extensible_plain_set : plain_set<P> {
+  static constexpr coefficient_transform coefficients = coefficient_transform::none;
+  template <class Fn>
+  static decltype(auto) visit_extensible(std::size_t s, std::uint64_t n, const point_set_options& o,
+                                         const sample_stream& st, Fn&& fn) {
+    return plain_set<P>::visit(s, n, o, st, std::forward<Fn>(fn));
   }
 };
 
@@ -300,6 +313,15 @@ void require_qmc_request(const point_set_entry& set, std::size_t s, std::uint64_
 }
 
 struct sobol_set {
+  // The first 2^m points of the set built for n_cap are a net for every 2^m ≤ n_cap (the
+  // scramble's depth covers n_cap), in Gray-code order; a digitally shifted one has the Walsh
+  // coefficients of the guaranteed rule.
+  static constexpr coefficient_transform coefficients = coefficient_transform::walsh;
+  template <class Fn>
+  static decltype(auto) visit_extensible(std::size_t s, std::uint64_t n, const point_set_options& o,
+                                         const sample_stream& st, Fn&& fn) {
+    return visit(s, n, o, st, std::forward<Fn>(fn));
+  }
   template <class Fn>
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
                               const sample_stream& st, Fn&& fn) {
@@ -341,6 +363,12 @@ struct padded_sobol_set {
 };
 
 struct halton_set {
+  static constexpr coefficient_transform coefficients = coefficient_transform::none;
+  template <class Fn>
+  static decltype(auto) visit_extensible(std::size_t s, std::uint64_t n, const point_set_options& o,
+                                         const sample_stream& st, Fn&& fn) {
+    return visit(s, n, o, st, std::forward<Fn>(fn));
+  }
   template <class Fn>
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
                               const sample_stream& st, Fn&& fn) {
@@ -358,6 +386,21 @@ struct halton_set {
 };
 
 struct lattice_set {
+  // The extensible lattice in radical-inverse order: its first 2^m points are the 2^m-point
+  // lattice with the same shift, for every 2^m ≤ n_cap; the guaranteed rule takes its Fourier
+  // coefficients.
+  static constexpr coefficient_transform coefficients = coefficient_transform::fourier;
+  template <class Fn>
+  static decltype(auto) visit_extensible(std::size_t s, std::uint64_t n, const point_set_options& o,
+                                         const sample_stream& st, Fn&& fn) {
+    const point_set_entry& set = entry_named("lattice");
+    require_qmc_request(set, s, n, o);
+    const bool shifted = *set.randomization_of(o) == randomization::shift;
+    if (o.periodic == periodization::baker) {
+      return fn(rank1_lattice_sequence<baker_transform>(s, n, st.seed, st.stream, shifted));
+    }
+    return fn(rank1_lattice_sequence<no_periodization>(s, n, st.seed, st.stream, shifted));
+  }
   template <class Fn>
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
                               const sample_stream& st, Fn&& fn) {
@@ -370,6 +413,19 @@ struct lattice_set {
     return fn(rank1_lattice_points<no_periodization>(s, n, st.seed, st.stream, shifted));
   }
 };
+
+// The extensible sets' runs of values: the set built for n_cap points, the run
+// [first, first + y.size()) of it (sample_values.hpp).
+template <class Set>
+void extension_over(const any_integrand& f, const point_set_options& options,
+                    const sample_stream& stream, std::uint64_t n_cap, std::uint64_t first,
+                    std::span<double> y, unsigned threads, bool transform_order) {
+  Set::visit_extensible(f.dimension(), n_cap, options, stream, [&](const auto& points) {
+    sample_values(f, points, first, y, threads,
+                  transform_order && Set::coefficients == coefficient_transform::walsh);
+    return 0;
+  });
+}
 
 template <class Set>
 estimate monte_carlo_over(const any_integrand& f, const point_set_options& options,
@@ -472,27 +528,37 @@ struct set_facts {
 };
 
 template <class Set>
+concept extensible_set = requires {
+  Set::coefficients;
+};
+
+template <class Set>
 constexpr point_set_entry point_set_entry_for(const set_facts& f) {
-  return {f.name,
-          f.description,
-          f.counts,
-          f.randomizations,
-          f.max_dimension,
-          f.errors,
-          f.max_points,
-          f.takes_any_prefix,
-          f.options,
-          f.options_from,
-          f.theory,
-          f.strata,
-          monte_carlo_over<Set>,
-          importance_over<Set>,
-          irradiance_over<Set>,
-          points_over<Set>};
+  point_set_entry e{f.name,
+                    f.description,
+                    f.counts,
+                    f.randomizations,
+                    f.max_dimension,
+                    f.errors,
+                    f.max_points,
+                    f.takes_any_prefix,
+                    f.options,
+                    f.options_from,
+                    f.theory,
+                    f.strata,
+                    monte_carlo_over<Set>,
+                    importance_over<Set>,
+                    irradiance_over<Set>,
+                    points_over<Set>};
+  if constexpr (extensible_set<Set>) {
+    e.extension_over = extension_over<Set>;
+    e.coefficients = Set::coefficients;
+  }
+  return e;
 }
 
 constexpr std::array<point_set_entry, 11> entries{{
-    point_set_entry_for<plain_set<independent_points>>(
+    point_set_entry_for<extensible_plain_set<independent_points>>(
         {.name = "independent", .description = "independent uniform points"}),
     point_set_entry_for<plain_set<jittered_points>>(
         {.name = "jittered",
@@ -503,7 +569,8 @@ constexpr std::array<point_set_entry, 11> entries{{
         {.name = "unjittered",
          .description = "cell centres of a randomly shifted k^s grid",
          .counts = point_count::perfect_power,
-         .strata = grid_strata}),
+         .strata = grid_strata,
+         .errors = error_source::none}),
     point_set_entry_for<plain_set<padded_jittered_points>>(
         {.name = "padded_jittered",
          .description = "k x k jittered strata padded across dimension pairs",
@@ -757,7 +824,7 @@ point_count point_set_entry::counts_with(const point_set_options& options) const
 }
 
 error_source point_set_entry::errors_with(const point_set_options& options) const noexcept {
-  if (randomization_of(options) == randomization::none) return error_source::own;
+  if (randomization_of(options) == randomization::none) return error_source::none;
   return errors;
 }
 

@@ -60,7 +60,8 @@ point_file_data read_uniform_file(const point_set_choice& points, const uniform_
 sizing point_set_sizing(const point_set_entry& set, std::uint64_t N, std::size_t s);
 
 // Where a cell's error bars come from for points of this error source: a randomized
-// quasi-Monte Carlo set's single run has no error estimate of its own, its replicates do.
+// quasi-Monte Carlo set's single run has no error estimate of its own, its replicates do; a set
+// with neither reports its own, none (NaN), as a deterministic rule does.
 inline error_bars error_bars_of(error_source source) noexcept {
   return source == error_source::replicates ? error_bars::replicates : error_bars::own;
 }

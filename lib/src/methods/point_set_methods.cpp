@@ -4,6 +4,7 @@
 // k(k + 1)). Also the `point_set` key of the methods that take one (families.hpp's
 // read_point_set), a catalogue set or the user's files.
 #include "families.hpp"
+#include "stopping.hpp"
 
 #include <fmt/format.h>
 
@@ -102,11 +103,22 @@ using theory_fn = theoretical_rate (*)(const integrand_class&);
 
 class point_set_method final : public method {
  public:
-  point_set_method(const method_descriptor& d, const point_set_entry& set, theory_fn theory)
-      : method(d), set_(&set), theory_(theory) {}
+  point_set_method(const method_descriptor& d, const point_set_entry& set, theory_fn theory,
+                   stopping_choice stopping)
+      : method(d), set_(&set), theory_(theory), stopping_(std::move(stopping)) {}
+
+  std::string label_suffix() const override { return stopping_.label_suffix(); }
+
+  std::optional<control_refusal> refuses(cell_control control) const override {
+    return stopping_.refuses(control);
+  }
 
   sizing size_for(std::uint64_t N, std::size_t s) const override {
     return point_set_sizing(*set_, N, s);
+  }
+
+  sizing tolerance_size_for(std::uint64_t budget, std::size_t s) const override {
+    return stopping_sizing(stopping_, *set_, {}, budget, s);
   }
 
   theoretical_rate theory(const integrand_class& f) const override { return theory_(f); }
@@ -114,6 +126,9 @@ class point_set_method final : public method {
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {
+    if (cell.control == cell_control::tolerance) {
+      return run_stopping(stopping_, *set_, {}, cell, context);
+    }
     return from_estimate(set_->monte_carlo(cell.function, {context.seed, cell.stream},
                                            cell.size.evaluations, context.threads));
   }
@@ -121,6 +136,7 @@ class point_set_method final : public method {
  private:
   const point_set_entry* set_;
   theory_fn theory_;
+  stopping_choice stopping_;
 };
 
 theoretical_rate plain_theory(const integrand_class& f) {
@@ -173,60 +189,46 @@ theoretical_rate latin_hypercube_theory(const integrand_class& f) {
 }
 
 template <theory_fn Theory>
-std::unique_ptr<const method> create_over(const method_descriptor& d, option_reader&,
+std::unique_ptr<const method> create_over(const method_descriptor& d, option_reader& r,
                                           std::string_view set) {
-  return std::make_unique<point_set_method>(d, *find_point_set(set), Theory);
+  const point_set_entry& points = *find_point_set(set);
+  return std::make_unique<point_set_method>(d, points, Theory, read_stopping(r, points, {}));
 }
 
-constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+// Each runs at its N, or to a tolerance by a stopping rule (stopping.hpp).
+constexpr std::array<cell_control, 2> fixed_or_tolerance{cell_control::fixed_size,
+                                                         cell_control::tolerance};
 
 const std::array<method_descriptor, 6> descriptors{{
-    {"plain_mc",
-     "plain Monte Carlo with independent uniform points",
-     method_kind::randomized,
-     {},
-     fixed_only,
+    {"plain_mc", "plain Monte Carlo with independent uniform points", method_kind::randomized,
+     stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<plain_theory>(d, r, "independent");
      }},
-    {"jittered",
-     "jittered (stratified) sampling, one random point per cell, N = k^s",
-     method_kind::randomized,
-     {},
-     fixed_only,
+    {"jittered", "jittered (stratified) sampling, one random point per cell, N = k^s",
+     method_kind::randomized, stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<one_point_per_stratum_rate>(d, r, "jittered");
      }},
-    {"unjittered",
-     "one point at the centre of each cell of a randomly shifted k^s grid",
-     method_kind::randomized,
-     {},
-     fixed_only,
+    {"unjittered", "one point at the centre of each cell of a randomly shifted k^s grid",
+     method_kind::randomized, stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<unjittered_theory>(d, r, "unjittered");
      }},
-    {"padded_jittered",
-     "k x k jittered 2D strata padded across dimension pairs, N = k^2",
-     method_kind::randomized,
-     {},
-     fixed_only,
+    {"padded_jittered", "k x k jittered 2D strata padded across dimension pairs, N = k^2",
+     method_kind::randomized, stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<padded_theory>(d, r, "padded_jittered");
      }},
     {"cmj",
      "correlated multi-jittered sampling (Kensler 2013), m x n cells padded across pairs, "
      "N = k^2 or k(k+1)",
-     method_kind::randomized,
-     {},
-     fixed_only,
+     method_kind::randomized, stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<cmj_theory>(d, r, "cmj");
      }},
-    {"latin_hypercube",
-     "Latin hypercube sampling (McKay et al. 1979)",
-     method_kind::randomized,
-     {},
-     fixed_only,
+    {"latin_hypercube", "Latin hypercube sampling (McKay et al. 1979)", method_kind::randomized,
+     stopping_docs, fixed_or_tolerance,
      [](const method_descriptor& d, option_reader& r) {
        return create_over<latin_hypercube_theory>(d, r, "latin_hypercube");
      }},

@@ -21,6 +21,7 @@
 // Beside the error, cells of N ≤ 1024 carry the L2 discrepancies of their points
 // (sampling/discrepancy.hpp), computed outside the timed run (measure_points).
 #include "families.hpp"
+#include "stopping.hpp"
 
 #include "quadmc/sampling/discrepancy.hpp"
 
@@ -46,6 +47,7 @@ struct qmc_options {
   point_set_options set;
   std::string label_suffix;  // the set's options given, in its order (point_set_option)
   std::vector<std::uint64_t> points;
+  std::optional<stopping_choice> stopping;  // the sets that may run to a tolerance
 };
 
 // A building block's rate with the set's own words before its note.
@@ -68,7 +70,18 @@ class qmc_method final : public method {
     return error_bars_of(set_->errors_with(options_.set));
   }
 
-  std::string label_suffix() const override { return options_.label_suffix; }
+  std::string label_suffix() const override {
+    return options_.label_suffix + (options_.stopping ? options_.stopping->label_suffix() : "");
+  }
+
+  std::optional<control_refusal> refuses(cell_control control) const override {
+    return options_.stopping ? options_.stopping->refuses(control) : std::nullopt;
+  }
+
+  sizing tolerance_size_for(std::uint64_t budget, std::size_t s) const override {
+    if (set_->max_dimension != 0 && s > set_->max_dimension) return size_for(budget, s);
+    return stopping_sizing(*options_.stopping, *set_, options_.set, budget, s);
+  }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {
     if (set_->max_dimension == 0 || f.s <= set_->max_dimension) return std::nullopt;
@@ -124,6 +137,9 @@ class qmc_method final : public method {
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {
+    if (cell.control == cell_control::tolerance) {
+      return run_stopping(*options_.stopping, *set_, options_.set, cell, context);
+    }
     const estimate e = set_->monte_carlo(cell.function, {context.seed, cell.stream},
                                          cell.size.evaluations, context.threads, options_.set);
     // No std_error nor error_estimate: one run of these points has none (e.std_error is NaN);
@@ -136,6 +152,8 @@ class qmc_method final : public method {
 
   void measure_points(const method_cell& cell, const run_context& context,
                       repetition_result& result) const override {
+    // A cell to a tolerance spends what its rule decides; its size is only the budget.
+    if (cell.control == cell_control::tolerance) return;
     const std::uint64_t n = cell.size.evaluations;
     const std::size_t s = cell.function.dimension();
     if (n > discrepancy_max_points || n * n * s > discrepancy_max_pair_coordinates) return;
@@ -208,6 +226,7 @@ std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_read
   }
   o.set = set.options_of(values);
   o.points = read_points(r, set, o.set);
+  if (d.supports(cell_control::tolerance)) o.stopping = read_stopping(r, set, o.set);
   return std::make_unique<qmc_method>(d, set, std::move(o));
 }
 
@@ -217,15 +236,17 @@ struct qmc_method_spec {
   std::string_view name;
   std::string_view description;
   std::string_view points;
+  bool to_tolerance = false;  // control = "tolerance" with a stopping rule (stopping.hpp)
 };
 constexpr std::array<qmc_method_spec, 5> specs{{
     {"sobol",
      "randomized Sobol' points (Joe-Kuo directions, Gray-code order), N = 2^m; error bars from "
      "replicates",
      "explicit N per cell (an integer or an increasing list), replacing budget.N; 2^m "
-     "unless allow_any_n"},
+     "unless allow_any_n",
+     true},
     {"halton", "randomized Halton points in the first s prime bases; error bars from replicates",
-     "explicit N per cell (an integer or an increasing list), replacing budget.N"},
+     "explicit N per cell (an integer or an increasing list), replacing budget.N", true},
     {"padded_sobol",
      "scrambled 2D Sobol' nets per pair of dimensions, shuffled across pairs (pbrt-v4's "
      "PaddedSobolSampler), N = 2^m; error bars from replicates",
@@ -238,9 +259,12 @@ constexpr std::array<qmc_method_spec, 5> specs{{
      "randomly shifted rank-1 lattice (Cools-Kuo-Nuyens vector), N = 2^m <= 2^20; error bars "
      "from replicates",
      "explicit N per cell (2^m <= 2^20, an integer or an increasing list), replacing "
-     "budget.N"},
+     "budget.N",
+     true},
 }};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+constexpr std::array<cell_control, 2> fixed_or_tolerance{cell_control::fixed_size,
+                                                         cell_control::tolerance};
 
 // The descriptors with their option docs, built from the specs and the catalogue's constant
 // entries on first use: the registry may ask for them from another file's static initializer
@@ -255,8 +279,14 @@ struct qmc_descriptors {
         docs[i].push_back({o.key, o.meaning});
       }
       docs[i].push_back({"points", specs[i].points});
+      if (specs[i].to_tolerance) {
+        for (const option_doc& o : stopping_docs) docs[i].push_back(o);
+      }
       descriptors.push_back({specs[i].name, specs[i].description, method_kind::randomized, docs[i],
-                             fixed_only, create_qmc});
+                             specs[i].to_tolerance
+                                 ? std::span<const cell_control>(fixed_or_tolerance)
+                                 : std::span<const cell_control>(fixed_only),
+                             create_qmc});
     }
   }
 };

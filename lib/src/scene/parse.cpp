@@ -445,6 +445,13 @@ method_spec parse_method(const scene_reader& r, const toml::table& t, std::size_
   }
   parse_control(r, t, prefix, *descriptor, m);
   m.configured = descriptor->create(*descriptor, options);
+  if (const auto no = m.configured->refuses(m.control)) {
+    if (no->key == "control") {
+      if (const auto e = r.find(t, "control", prefix)) r.fail(*e, no->message);
+      r.fail(m.table, prefix + ".control", no->message);
+    }
+    options.fail(no->key, no->message);
+  }
 
   if (const auto e = r.find(t, "integrands", prefix)) {
     const toml::array& a = r.array(*e, "a non-empty array of integrand names");

@@ -444,7 +444,7 @@ void plan_pair(const scene& sc, std::size_t fi, std::size_t mi, double scale,
     const std::uint64_t budget = sc.budget.max_evaluations
                                      ? *sc.budget.max_evaluations / repetitions
                                      : plan_limits::default_tolerance_budget;
-    const sizing largest = m.size_for(budget, s);
+    const sizing largest = m.tolerance_size_for(budget, s);
     for (const double tolerance : method.tolerances) {
       const std::string at =
           fmt::format("{} × {}, tolerance = {}", method.label, f.name, tolerance);

@@ -206,7 +206,10 @@ void run_assembly::add(std::size_t index, cell_run run) {
       series.reference_uncertainty = p.references[cell.integrand].uncertainty;
     }
     series.relative_tolerance = mspec.relative_tolerance;
-    series.errors = mspec.configured->error_bars();
+    // A cell run to a tolerance claims its own error (the stopping rule's, over its own
+    // replicates where it has them), whatever a fixed-size cell of the method would need.
+    series.errors =
+        cell.control == cell_control::tolerance ? error_bars::own : mspec.configured->error_bars();
     series.rounding = rounding_model{info.precision, mspec.configured->summation_scheme()};
     // A prediction is of one instance on fixed grids: not for an ensemble (its cells pool
     // instances) nor for cells that may stop early.

@@ -104,6 +104,11 @@ struct point_set_theory {
   bool padded = false;
 };
 
+// The transform whose coefficients a guaranteed stopping rule reads off an extensible set's
+// values (estimators/stopping_rules.hpp): Walsh for a digital net, Fourier for a rank-1 lattice,
+// none for a set with neither structure.
+enum class coefficient_transform { none, walsh, fourier };
+
 // The strata a set fills with exactly one point each, by construction: the k^s cells of a grid
 // (`per_axis` = k), or N strata along every axis (a Latin hypercube's rows and columns).
 enum class strata_kind { cells, rows_and_columns };
@@ -113,10 +118,12 @@ struct point_strata {
 };
 std::string_view to_string(strata_kind k) noexcept;
 
-// Whether one run estimates its own error (σ̂²/N and its stratified variants), or only
-// independent replicates of the whole set can (randomized quasi-Monte Carlo:
-// docs/theory.md#replicate-error-bars).
-enum class error_source { own, replicates };
+// Whether one run estimates its own error (σ̂²/N and its stratified variants), only independent
+// replicates of the whole set can (randomized quasi-Monte Carlo:
+// docs/theory.md#replicate-error-bars), or neither can (a deterministic set; cell centres that
+// share one random shift): the methods report no error estimate then, and a stopping rule has
+// nothing to size a sample from.
+enum class error_source { own, replicates, none };
 
 // The largest count ≤ N a set can hold in s dimensions, and its strata per axis k (0 for `any`).
 struct point_count_choice {
@@ -182,6 +189,16 @@ struct point_set_entry {
   // discrepancy columns.
   void (*points_over)(std::size_t s, std::uint64_t n, const point_set_options& options,
                       const sample_stream& stream, const point_batch_sink& sink);
+  // f·vol at points first … first + y.size() − 1 of the set built for n_cap points, for the
+  // stopping rules that double N and keep what they spent (estimators/stopping_rules.hpp);
+  // nullptr for a set whose 2N points are not its N points and N more (jittered, Latin
+  // hypercube: their strata change with N). `transform_order`: Sobol' values in natural-index
+  // order (the Walsh transform's), which the run [0, 2^k) or [2^k, 2^(k+1)) permutes; the lattice
+  // is in radical-inverse order either way (sampling/rank1_lattice_sequence.hpp).
+  void (*extension_over)(const any_integrand& f, const point_set_options& options,
+                         const sample_stream& stream, std::uint64_t n_cap, std::uint64_t first,
+                         std::span<double> y, unsigned threads, bool transform_order) = nullptr;
+  coefficient_transform coefficients = coefficient_transform::none;
 
   // Plain Monte Carlo: the mean of f·volume over the points mapped to f's box.
   estimate monte_carlo(const any_integrand& f, const sample_stream& stream, std::uint64_t n,
@@ -203,6 +220,12 @@ struct point_set_entry {
   void points(std::size_t s, std::uint64_t n, const sample_stream& stream,
               const point_batch_sink& sink, const point_set_options& options = {}) const {
     points_over(s, n, options, stream, sink);
+  }
+  bool extensible() const noexcept { return extension_over != nullptr; }
+  void extension_values(const any_integrand& f, const sample_stream& stream, std::uint64_t n_cap,
+                        std::uint64_t first, std::span<double> y, unsigned threads,
+                        bool transform_order, const point_set_options& options = {}) const {
+    extension_over(f, options, stream, n_cap, first, y, threads, transform_order);
   }
 
   // The option keyed `key`, or nullptr.

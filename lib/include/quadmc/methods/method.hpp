@@ -86,6 +86,12 @@ struct method_cell {
   std::uint64_t repetition = 0;  // r, 0 … repetitions − 1 (the realization of a file's points)
 };
 
+// Why a configured method cannot run under a control: the key to blame and the message.
+struct control_refusal {
+  std::string key;
+  std::string message;
+};
+
 struct method_descriptor;
 
 // A [[method]] as configured by its table. Immutable after creation, so one object serves every
@@ -118,6 +124,17 @@ class method {
 
   // The size for nominal N in s dimensions.
   virtual sizing size_for(std::uint64_t N, std::size_t s) const = 0;
+
+  // The size of a cell run to a tolerance within `budget` evaluations per repetition (what a
+  // stopping rule may spend), or why the budget cannot hold it; by default size_for(budget).
+  virtual sizing tolerance_size_for(std::uint64_t budget, std::size_t s) const {
+    return size_for(budget, s);
+  }
+
+  // Why the method, as its table configured it, cannot run under `control` (keys that belong to
+  // another control, a control its options leave no rule for); nullopt when it can. The scene
+  // parser and quadmc.integrate fail with it before any plan.
+  virtual std::optional<control_refusal> refuses(cell_control) const { return std::nullopt; }
 
   // Explicit sizes replacing the ladder (the rules' `panels`), each as a size; empty when the
   // method follows budget.N.
