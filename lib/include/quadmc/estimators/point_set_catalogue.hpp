@@ -11,7 +11,8 @@
 // count. Sets that need N = k^s (jittered, unjittered) or N = 2^m (Sobol', lattice) reject other N
 // with the nearest valid sizes: largest_point_count() maps a nominal N to the count a set can
 // hold first. The quasi-Monte Carlo sets (sobol, halton, lattice) take point_set_options (their
-// randomization, the lattice's periodization, Sobol's allow_any_n and drop_first_point); the
+// randomization, the lattice's periodization, Sobol's allow_any_n, drop_first_point and
+// interlacing); the
 // other sets ignore them. An entry owns its options: it lists their keys (point_set_option, which
 // the methods read from a [[method]] table and `quadmc points` from its command line), turns the
 // values given into point_set_options (options_from), states the rate theory gives its sample
