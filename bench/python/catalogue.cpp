@@ -78,9 +78,17 @@ py::list point_sets() {
       randomizations.append(text(quadmc::to_string(r)));
     }
     d["randomizations"] = randomizations;
-    // key → its choices (the default first), or None for a flag (True or False).
+    // key → its choices (the default first; ints for an integer key such as interlacing), or
+    // None for a flag (True or False).
     py::dict options;
     for (const quadmc::point_set_option& o : p.options) {
+      if (o.integer) {
+        py::list values;
+        for (const std::string_view c : o.choices)
+          values.append(py::int_(std::stoll(std::string(c))));
+        options[text(o.key)] = values;
+        continue;
+      }
       options[text(o.key)] = o.is_flag() ? py::object(py::none()) : py::object(strings(o.choices));
     }
     d["options"] = options;

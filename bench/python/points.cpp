@@ -35,6 +35,13 @@ constexpr std::uint64_t max_dimension = std::uint64_t{1} << 20;
 std::string text_of(const quadmc::point_set_entry& set, std::string_view key,
                     const py::handle& value) {
   const quadmc::point_set_option* option = set.option(key);
+  // An integer choice (interlacing = 2) takes a Python int, as a scene takes a TOML integer; its
+  // text is then checked against the choices.
+  if (option != nullptr && option->integer &&
+      (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))) {
+    throw quadmc::invalid_argument(
+        key, quoted(value), fmt::format("an integer, one of {}", fmt::join(option->choices, ", ")));
+  }
   if (option == nullptr || !option->is_flag()) return quoted(value);
   if (!py::isinstance<py::bool_>(value)) {
     throw quadmc::invalid_argument(key, quoted(value), "True or False");
@@ -85,7 +92,7 @@ py::array_t<double> points(const std::string& set_name, const py::object& n_valu
   if (s > max_dimension) {
     throw quadmc::invalid_argument("s", std::to_string(s), "s ≤ 2^20");
   }
-  if (const std::string problem = quadmc::dimension_problem(set, s); !problem.empty()) {
+  if (const std::string problem = quadmc::dimension_problem(set, s, options); !problem.empty()) {
     throw quadmc::invalid_argument("s", std::to_string(s), problem);
   }
   if (const std::string problem = quadmc::size_problem(set, s, n, options); !problem.empty()) {

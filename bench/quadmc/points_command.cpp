@@ -192,7 +192,7 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
   }
   const quadmc::point_set_options options = options_for(*set, r);
   // The dimension first, so that a set that cannot have s dimensions blames --s, not --n.
-  if (const std::string problem = quadmc::dimension_problem(*set, r.s); !problem.empty()) {
+  if (const std::string problem = quadmc::dimension_problem(*set, r.s, options); !problem.empty()) {
     throw quadmc::invalid_argument("--s", std::to_string(r.s), problem);
   }
   const std::string problem = quadmc::size_problem(*set, r.s, r.n, options);

@@ -205,9 +205,10 @@ TEST(PointSetCatalogue, EachSetReadsItsOwnKeys) {
     }
   }
   const point_set_entry& sobol = *find_point_set("sobol");
-  const std::vector<std::string_view> none{"", "", ""};
+  const std::vector<std::string_view> none{"", "", "", ""};
   EXPECT_EQ(sobol.options_of(none).random, std::nullopt);
-  const std::vector<std::string_view> flags{"shift", "true", "true"};
+  EXPECT_EQ(sobol.options_of(none).interlacing, 1u);
+  const std::vector<std::string_view> flags{"shift", "true", "true", ""};
   const point_set_options o = sobol.options_of(flags);
   EXPECT_EQ(o.random, randomization::shift);
   EXPECT_TRUE(o.allow_any_n);
@@ -216,6 +217,59 @@ TEST(PointSetCatalogue, EachSetReadsItsOwnKeys) {
   const std::vector<std::string_view> baker{"", "baker"};
   EXPECT_EQ(find_point_set("lattice")->options_of(baker).periodic, periodization::baker);
   EXPECT_EQ(find_point_set("jittered")->option("randomization"), nullptr);
+}
+
+// Sobol's integer key `interlacing` as `quadmc points` and the Python module give it (text
+// checked against its choices), and the randomizations and dimensions it refuses.
+TEST(PointSetCatalogue, SobolInterlacingIsCheckedByItsChoices) {
+  const point_set_entry& sobol = *find_point_set("sobol");
+  const point_set_option* key = sobol.option("interlacing");
+  ASSERT_NE(key, nullptr);
+  EXPECT_TRUE(key->integer);
+  EXPECT_EQ(key->choices.front(), "1") << "the default first";
+  auto parameter = [](std::string_view k) { return std::string(k); };
+  for (const std::string_view alpha : {"1", "2", "3"}) {
+    const std::vector<named_option> given{{"interlacing", alpha}};
+    EXPECT_EQ(checked_options(sobol, given, parameter).interlacing,
+              static_cast<unsigned>(alpha[0] - '0'));
+  }
+  for (const std::string_view bad : {"0", "4", "two"}) {
+    const std::vector<named_option> given{{"interlacing", bad}};
+    try {
+      (void)checked_options(sobol, given, parameter);
+      ADD_FAILURE() << "interlacing = " << bad << " accepted";
+    } catch (const invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("one of 1, 2, 3"), std::string::npos) << e.what();
+    }
+  }
+  const std::vector<named_option> fast{{"interlacing", "2"}, {"randomization", "fast_owen"}};
+  EXPECT_THROW((void)checked_options(sobol, fast, parameter), invalid_argument);
+  point_set_options o;
+  o.interlacing = 2;
+  o.random = randomization::lms_shift;
+  EXPECT_NE(interlacing_problem(sobol, o).find("owen, shift or none"), std::string::npos);
+  EXPECT_THROW((void)sobol.monte_carlo(gaussian, {1, 1}, 64, 1, o), invalid_argument);
+  o.random = std::nullopt;
+  EXPECT_EQ(interlacing_problem(sobol, o), "");
+  // α·s ≤ 3667: s = 1833 with α = 2 fits, 1834 does not, and the message names s, α and the
+  // limit (size_problem begins with it).
+  EXPECT_EQ(dimension_problem(sobol, 1833, o), "");
+  const std::string beyond = dimension_problem(sobol, 1834, o);
+  for (const std::string_view part : {"α·s ≤ 3667", "α = 2", "s = 1834"}) {
+    EXPECT_NE(beyond.find(part), std::string::npos) << beyond;
+  }
+  EXPECT_EQ(size_problem(sobol, 1834, 8, o), beyond);
+  // The threaded sample mean of the catalogue: 1 and 3 threads agree bitwise (N = 2^15, 3 chunks).
+  for (const randomization r : {randomization::owen, randomization::shift, randomization::none}) {
+    o.random = r;
+    const estimate one = sobol.monte_carlo(gaussian, {42, 7}, std::uint64_t{1} << 15, 1, o);
+    EXPECT_TRUE(
+        bitwise_equal(one, sobol.monte_carlo(gaussian, {42, 7}, std::uint64_t{1} << 15, 3, o)))
+        << to_string(r);
+    // A 2^15-point order-2 net on this analytic f errs far below the 1e-3 allowance of
+    // EverySetIsBitwiseIdenticalForAnyThreadCount (its error there is O((log N)²/N)·V_HK).
+    EXPECT_NEAR(one.value, gaussian.info().exact, 1e-3) << to_string(r);
+  }
 }
 
 // The theory the quasi-Monte Carlo sets state, per option (the methods turn it into a rate:
@@ -228,6 +282,16 @@ TEST(PointSetCatalogue, QuasiMonteCarloSetsStateTheirTheory) {
   point_set_options dropped;
   dropped.drop_first_point = true;
   EXPECT_EQ(sobol.theory_of(dropped)->basis, rate_basis::broken_net);
+  point_set_options interlaced;
+  interlaced.interlacing = 3;
+  const point_set_theory order3 = *sobol.theory_of(interlaced);
+  EXPECT_EQ(order3.basis, rate_basis::interlaced_net);
+  EXPECT_EQ(order3.interlacing, 3u);
+  EXPECT_TRUE(order3.scrambled);
+  interlaced.random = randomization::shift;
+  EXPECT_FALSE(sobol.theory_of(interlaced)->scrambled);
+  interlaced.drop_first_point = true;
+  EXPECT_EQ(sobol.theory_of(interlaced)->basis, rate_basis::broken_net);
   const point_set_theory halton = *find_point_set("halton")->theory_of({randomization::owen});
   EXPECT_EQ(halton.basis, rate_basis::low_discrepancy);
   EXPECT_NE(halton.note.find("owen-randomized"), std::string::npos) << halton.note;

@@ -113,7 +113,10 @@ std::vector<option_table> configurations(std::string_view name) {
     std::vector<option_table> out{{}};
     for (const point_set_option& o : set->options) {
       for (std::size_t i = 1; i < o.choices.size(); ++i) {
-        out.push_back({{std::string(o.key), std::string(o.choices[i])}});
+        // An integer choice is a number in a table (interlacing = 2), a string choice a string.
+        const option_value value = o.integer ? option_value(std::stod(std::string(o.choices[i])))
+                                             : option_value(std::string(o.choices[i]));
+        out.push_back({{std::string(o.key), value}});
       }
     }
     return out;

@@ -9,6 +9,7 @@
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -205,6 +206,93 @@ TEST(QmcRates, DigitalShiftAndTheAntiPatternsAreShallowerThanOwen) {
   EXPECT_GT(off_grid, owen + 0.3) << "owen " << owen << ", N = 2^k + 1 " << off_grid;
 }
 
+// interlacing = α is an integer key: 1, 2 or 3, named in the label as "_interlacing<α>"; a
+// string, another integer, a randomization an interlaced net refuses or more than 3667 Sobol'
+// dimensions fail at plan time, each naming what it expects.
+TEST(QmcMethods, InterlacingIsAnIntegerOneTwoOrThree) {
+  EXPECT_EQ(make_method("sobol", {{"interlacing", 2}})->label_suffix(), "_interlacing2");
+  EXPECT_EQ(make_method("sobol", {{"interlacing", 3}, {"randomization", "shift"}})->label_suffix(),
+            "_shift_interlacing3");
+  EXPECT_EQ(make_method("sobol", {{"interlacing", 1}})->label_suffix(), "_interlacing1");
+  for (const option_value& bad : {option_value(0), option_value(4), option_value(2.5)}) {
+    const std::string e = error_of("sobol", {{"interlacing", bad}});
+    EXPECT_NE(e.find("interlacing"), std::string::npos) << e;
+    EXPECT_NE(e.find("an integer, one of 1, 2, 3"), std::string::npos) << e;
+  }
+  const std::string text = error_of("sobol", {{"interlacing", "2"}});
+  EXPECT_NE(text.find("an integer, one of 1, 2, 3, got \"2\""), std::string::npos) << text;
+  for (const char* r : {"fast_owen", "lms_shift"}) {
+    const std::string e = error_of("sobol", {{"interlacing", 2}, {"randomization", r}});
+    EXPECT_NE(e.find(fmt::format("randomization \"{}\" with interlacing = 2", r)),
+              std::string::npos)
+        << e;
+    EXPECT_NE(e.find("owen, shift or none"), std::string::npos) << e;
+  }
+  EXPECT_EQ(error_of("sobol", {{"interlacing", 1}, {"randomization", "fast_owen"}}), "no error");
+  EXPECT_NE(error_of("halton", {{"interlacing", 2}}).find("unknown key"), std::string::npos);
+  // α·s ≤ 3667: s = 1222 takes 3666 dimensions with α = 3, s = 1223 would take 3669.
+  const auto three = make_method("sobol", {{"interlacing", 3}});
+  EXPECT_TRUE(three->size_for(1024, 1222).size);
+  const sizing beyond = three->size_for(1024, 1223);
+  EXPECT_FALSE(beyond.size);
+  EXPECT_NE(beyond.reason.find("α·s ≤ 3667"), std::string::npos) << beyond.reason;
+  EXPECT_NE(beyond.reason.find("α = 3"), std::string::npos) << beyond.reason;
+  EXPECT_NE(beyond.reason.find("s = 1223"), std::string::npos) << beyond.reason;
+  EXPECT_TRUE(three->incompatibility({"genz_gaussian", 1223, false}).has_value());
+  EXPECT_FALSE(three->incompatibility({"genz_gaussian", 1222, false}).has_value());
+  EXPECT_EQ(three->size_for(1000, 2).size->evaluations, 512u) << "N = 2^m as without interlacing";
+}
+
+// The interlaced points by the method, 1 and 3 threads: bitwise the same value.
+TEST(QmcMethods, InterlacedRunsAreBitwiseTheSameForAnyThreadCount) {
+  const integrand_params p = gaussian_params(3);
+  const any_integrand f = make_integrand("genz_gaussian", p);
+  for (const char* r : {"owen", "shift", "none"}) {
+    const auto m = make_method("sobol", {{"interlacing", 2}, {"randomization", r}});
+    const repetition_result one = run_once(*m, f, p, 1 << 15, 4, 1);
+    const repetition_result three = run_once(*m, f, p, 1 << 15, 4, 3);
+    EXPECT_EQ(std::memcmp(&one.value, &three.value, sizeof(double)), 0) << r;
+  }
+}
+
+// The order-2 interlaced Sobol' net on the Genz Gaussian of s = 2 (analytic: δ = ∞),
+// Owen-scrambled before interlacing: RMSE N^−5/2 up to log factors ([Dick 2011]). R = 32
+// replicates put each RMSE within about 1/√(2R) ≈ 12.5% for normal errors (a log error of 0.125),
+// so a slope fitted over k ladder points spaced by ln 2 has a sampling error of about
+// 0.125/(sd(ln N)·√k): ≈ 0.017 over 2^6 … 2^16, ≈ 0.06 over 2^12 … 2^17; the ±0.25 of the check
+// is four of the latter (a false alarm below 1e-4 for normal errors), the rest the log factor.
+// Over 2^6 … 2^16 the fit is not −5/2: the RMSE of the 4-dimensional Sobol' net stalls at
+// m = 7–8 and 11–12, the same m for the shift and the scramble (so a property of the net's
+// t-values, not of the randomization), and the fit there is about −1.9, pre-asymptotic
+// (docs/theory.md#pre-asymptotic-ladders); it must still be clearly steeper than order 1's on the
+// same ladder (−3/2 in theory), by more than 0.25, over ten times the difference's sampling error
+// √2·0.017 ≈ 0.024.
+TEST(QmcRates, InterlacedOrderTwoOwenFallsAtMinusFiveHalves) {
+  const integrand_params p = gaussian_params(2);
+  const any_integrand f = make_integrand("genz_gaussian", p);
+  const auto order2 = make_method("sobol", {{"interlacing", 2}});
+  const power_law_fit asymptotic = fitted_rate(*order2, f, p, 12, 17, 32);
+  EXPECT_NEAR(asymptotic.slope, -2.5, 0.25)
+      << "[" << asymptotic.ci_low << ", " << asymptotic.ci_high << "]";
+  const power_law_fit whole = fitted_rate(*order2, f, p, 6, 16, 32);
+  const power_law_fit order1 = fitted_rate(*make_method("sobol"), f, p, 6, 16, 32);
+  EXPECT_LT(whole.slope, order1.slope - 0.25)
+      << "order 2 [" << whole.ci_low << ", " << whole.ci_high << "], order 1 [" << order1.ci_low
+      << ", " << order1.ci_high << "]";
+}
+
+// The digital shift of the order-2 net: N^−2 up to log factors ([Dick 2008]). "About −2" is
+// −2 ± 0.3: the same sampling error as above (≈ 0.017) and the log factor, which here may also
+// steepen the short ladder (the error of a shifted net is dominated by few dual-net Walsh
+// coefficients and moves in steps with m); far from the Owen rate −2.5 and from order 1's −1.
+TEST(QmcRates, InterlacedOrderTwoShiftFallsAtAboutMinusTwo) {
+  const integrand_params p = gaussian_params(2);
+  const any_integrand f = make_integrand("genz_gaussian", p);
+  const power_law_fit fit = fitted_rate(
+      *make_method("sobol", {{"interlacing", 2}, {"randomization", "shift"}}), f, p, 6, 16, 32);
+  EXPECT_NEAR(fit.slope, -2.0, 0.3) << "[" << fit.ci_low << ", " << fit.ci_high << "]";
+}
+
 TEST(QmcTheory, RatesOfTheTable) {
   auto slope = [](std::string_view name, option_table o, smoothness c, std::size_t s) {
     return make_method(name, o)->theory(integrand_class{c, s, std::nan("")}).slope;
@@ -234,6 +322,33 @@ TEST(QmcTheory, RatesOfTheTable) {
   EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::discontinuous, 2), -0.75);
   EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::smooth, 1), -1.5);
   EXPECT_DOUBLE_EQ(*slope("cmj", {}, smoothness::smooth, 6), -0.5);
+  // Interlaced order-α nets: −(α + 1/2) Owen-scrambled, −α shifted or deterministic, on f smooth
+  // enough (δ ≥ α); no rate on kinks or jumps; the broken net's −1 without a net.
+  EXPECT_DOUBLE_EQ(*slope("sobol", {{"interlacing", 2}}, smoothness::analytic, 2), -2.5);
+  EXPECT_DOUBLE_EQ(*slope("sobol", {{"interlacing", 3}}, smoothness::smooth, 4), -3.5);
+  EXPECT_DOUBLE_EQ(
+      *slope("sobol", {{"interlacing", 2}, {"randomization", "shift"}}, smoothness::smooth, 2),
+      -2.0);
+  EXPECT_DOUBLE_EQ(
+      *slope("sobol", {{"interlacing", 3}, {"randomization", "none"}}, smoothness::analytic, 2),
+      -3.0);
+  EXPECT_FALSE(slope("sobol", {{"interlacing", 2}}, smoothness::c0, 2).has_value());
+  EXPECT_FALSE(slope("sobol", {{"interlacing", 2}}, smoothness::discontinuous, 2).has_value());
+  EXPECT_FALSE(slope("sobol", {{"interlacing", 2}}, smoothness::singular, 1).has_value());
+  EXPECT_DOUBLE_EQ(
+      *slope("sobol", {{"interlacing", 2}, {"drop_first_point", true}}, smoothness::smooth, 2),
+      -1.0);
+  EXPECT_DOUBLE_EQ(
+      *slope("sobol", {{"interlacing", 2}, {"allow_any_n", true}}, smoothness::smooth, 2), -1.0);
+  EXPECT_DOUBLE_EQ(*slope("sobol", {{"interlacing", 1}}, smoothness::smooth, 2), -1.5);
+  const theoretical_rate owen =
+      make_method("sobol", {{"interlacing", 2}})->theory(integrand_class{smoothness::smooth, 2});
+  EXPECT_NE(owen.source.find("[Dick 2011]"), std::string::npos) << owen.source;
+  EXPECT_NE(owen.source.find("docs/theory.md#interlaced-nets"), std::string::npos);
+  const theoretical_rate shift =
+      make_method("sobol", {{"interlacing", 2}, {"randomization", "shift"}})
+          ->theory(integrand_class{smoothness::smooth, 2});
+  EXPECT_NE(shift.source.find("[Dick 2008]"), std::string::npos) << shift.source;
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ def command_args(name, options, n, s, seed, stream):
         if value is True:
             args.append(flag)
         elif value is not False:
-            args += [flag, value]
+            args += [flag, str(value)]
     return args
 
 
@@ -100,6 +100,8 @@ def error_text(command, args):
     (lambda: quadmc.points("halton", 16, 2, periodization="baker"),
      ["--n", "16", "--s", "2", "--periodization", "baker"], "--periodization", "periodization"),
     (lambda: quadmc.points("sobol", 16, 3668), ["--n", "16", "--s", "3668"], "--s", "s"),
+    (lambda: quadmc.points("sobol", 16, 1834, interlacing=2),
+     ["--n", "16", "--s", "1834", "--interlacing", "2"], "--s", "s"),
 ])
 def test_refusals_are_the_commands_text(command, module_call, args, flag, keyword):
     set_name = "halton" if "--periodization" in args else "sobol"
@@ -115,6 +117,9 @@ def test_refusals_are_the_commands_text(command, module_call, args, flag, keywor
     (lambda: quadmc.points("sobol", 16, -1), "invalid s = -1: "),
     (lambda: quadmc.points("sobol", 16, 2, seed=-3), "invalid seed = -3: "),
     (lambda: quadmc.points("sobol", 16, 2, allow_any_n="yes"), "invalid allow_any_n = yes: expected True or False"),
+    (lambda: quadmc.points("sobol", 16, 2, interlacing="2"),
+     "invalid interlacing = 2: expected an integer, one of 1, 2, 3"),
+    (lambda: quadmc.points("sobol", 16, 2, interlacing=4), "invalid interlacing = 4: expected one of 1, 2, 3"),
 ])
 def test_bad_arguments_are_value_errors_naming_the_parameter(call, parameter):
     with pytest.raises(ValueError) as error:

@@ -12,6 +12,7 @@
 #include "quadmc/sampling/cmj_points.hpp"
 #include "quadmc/sampling/halton_points.hpp"
 #include "quadmc/sampling/independent_points.hpp"
+#include "quadmc/sampling/interlaced_sobol_points.hpp"
 #include "quadmc/sampling/inversion_warps.hpp"
 #include "quadmc/sampling/jittered_points.hpp"
 #include "quadmc/sampling/latin_hypercube_points.hpp"
@@ -123,9 +124,16 @@ constexpr auto padded_sobol_randomization_names = names_of(padded_sobol_randomiz
 constexpr auto halton_randomization_names = names_of(halton_randomizations);
 constexpr auto lattice_randomization_names = names_of(lattice_randomizations);
 constexpr std::array<std::string_view, 2> periodization_names{"none", "baker"};
+// Sobol's interlacing factors α, as the decimal texts of the integer key (point_set_option).
+constexpr std::array<std::string_view, max_interlacing> interlacing_names{"1", "2", "3"};
+// The randomizations an interlaced net (α > 1) has: those whose theory carries over to the
+// interlaced points (docs/theory.md#interlaced-nets). fast_owen has no rate even for α = 1, and
+// lms_shift's equivalence with Owen's scramble is not carried to interlaced nets here.
+constexpr std::array<randomization, 3> interlaced_randomizations{
+    randomization::owen, randomization::shift, randomization::none};
 
 // Each set's keys, in the order of its options_from's values.
-constexpr std::array<point_set_option, 3> sobol_options{{
+constexpr std::array<point_set_option, 4> sobol_options{{
     {"randomization",
      "\"owen\" (default: nested uniform scrambling), \"fast_owen\" (Burley's hash, not exactly "
      "nested), \"lms_shift\" (linear matrix scramble + digital shift), \"shift\" (digital shift), "
@@ -141,6 +149,13 @@ constexpr std::array<point_set_option, 3> sobol_options{{
      "true: start at point 1, not the origin (the anti-pattern); the label gets \"_drop_first\"",
      {},
      "_drop_first"},
+    {"interlacing",
+     "an integer 1 (default: the Sobol' points), 2 or 3: the order-alpha net interlacing the "
+     "digits of alpha*s Sobol' dimensions (alpha*s <= 3667; randomization owen, shift or none); "
+     "the label gets \"_interlacing<alpha>\"",
+     interlacing_names,
+     {},
+     true},
 }};
 constexpr std::array<point_set_option, 1> padded_sobol_options{{
     {"randomization",
@@ -181,6 +196,8 @@ point_set_options sobol_options_from(point_set_values v) {
   o.random = randomization_given(v[0]);
   o.allow_any_n = v[1] == "true";
   o.drop_first_point = v[2] == "true";
+  // A choice of interlacing_names: "1", "2" or "3" (checked against them before).
+  if (!v[3].empty()) o.interlacing = static_cast<unsigned>(v[3][0] - '0');
   return o;
 }
 // The sets whose one key is `randomization` (padded_sobol, halton).
@@ -196,8 +213,22 @@ point_set_options lattice_options_from(point_set_values v) {
   return o;
 }
 
+// An interlaced Sobol' net (α ≥ 2): [Dick 2011]'s rate when Owen-scrambled before interlacing,
+// [Dick 2008]'s when deterministic or digitally shifted; no net (a prefix of N ≠ 2^m, or the
+// first point dropped) has the broken net's (docs/theory.md#interlaced-nets).
+point_set_theory interlaced_sobol_theory(const point_set_options& o) {
+  const std::string order = fmt::format("interlacing {}", o.interlacing);
+  if (o.drop_first_point) return {rate_basis::broken_net, order + ", first point dropped", {}};
+  if (o.allow_any_n) return {rate_basis::broken_net, order + ", N not 2^m (allow_any_n)", {}};
+  point_set_theory t{rate_basis::interlaced_net, {}, {}};
+  t.interlacing = o.interlacing;
+  t.scrambled = o.random.value_or(sobol_randomizations.front()) == randomization::owen;
+  return t;
+}
+
 // The theories of docs/theory.md#quasi-monte-carlo, per randomization.
 point_set_theory sobol_theory(const point_set_options& o) {
+  if (o.interlacing > 1) return interlaced_sobol_theory(o);
   switch (o.random.value_or(sobol_randomizations.front())) {
     case randomization::owen:
     case randomization::lms_shift:
@@ -308,6 +339,13 @@ void require_qmc_request(const point_set_entry& set, std::size_t s, std::uint64_
     throw invalid_argument("randomization", std::string(to_string(*options.random)),
                            fmt::format("one of {} for the {} points", names, set.name));
   }
+  if (const std::string problem = interlacing_problem(set, options); !problem.empty()) {
+    throw invalid_argument("randomization", std::string(to_string(*set.randomization_of(options))),
+                           problem);
+  }
+  if (const std::string problem = dimension_problem(set, s, options); !problem.empty()) {
+    throw invalid_argument("dimension s", std::to_string(s), problem);
+  }
   const std::string problem = size_problem(set, s, n, options);
   if (!problem.empty()) throw invalid_argument("number of points N", std::to_string(n), problem);
 }
@@ -328,6 +366,7 @@ struct sobol_set {
     const point_set_entry& set = entry_named("sobol");
     require_qmc_request(set, s, n, o);
     const bool drop = o.drop_first_point;
+    if (o.interlacing > 1) return visit_interlaced(set, s, n, o, st, std::forward<Fn>(fn));
     switch (*set.randomization_of(o)) {
       case randomization::owen:
         return fn(sobol_points<owen_scramble>(s, n, st.seed, st.stream, drop));
@@ -340,6 +379,28 @@ struct sobol_set {
       default:
         return fn(sobol_points<unrandomized_digits>(s, n, st.seed, st.stream, drop));
     }
+  }
+
+  // α = interlacing ≥ 2: the αs-dimensional Sobol' points randomized, then interlaced.
+  template <class Fn>
+  static decltype(auto) visit_interlaced(const point_set_entry& set, std::size_t s, std::uint64_t n,
+                                         const point_set_options& o, const sample_stream& st,
+                                         Fn&& fn) {
+    const unsigned alpha = o.interlacing;
+    const bool drop = o.drop_first_point;
+    switch (*set.randomization_of(o)) {
+      case randomization::owen:
+        return fn(interlaced_sobol_points<owen_scramble>(s, alpha, n, st.seed, st.stream, drop));
+      case randomization::shift:
+        return fn(interlaced_sobol_points<digital_shift>(s, alpha, n, st.seed, st.stream, drop));
+      case randomization::none:
+        return fn(
+            interlaced_sobol_points<unrandomized_digits>(s, alpha, n, st.seed, st.stream, drop));
+      default:
+        break;
+    }
+    throw invalid_argument("randomization", std::string(to_string(*set.randomization_of(o))),
+                           interlacing_problem(set, o));
   }
 };
 
@@ -786,7 +847,12 @@ point_set_options checked_options(const point_set_entry& set, std::span<const na
     }
     values[i] = g->value;
   }
-  return set.options_of(values);
+  const point_set_options options = set.options_of(values);
+  if (const std::string problem = interlacing_problem(set, options); !problem.empty()) {
+    throw invalid_argument(parameter("randomization"), to_string(*set.randomization_of(options)),
+                           problem);
+  }
+  return options;
 }
 
 std::optional<randomization> parse_randomization(std::string_view name) noexcept {
@@ -839,8 +905,30 @@ bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
   return s != 0 && n != 0 && size_problem(set, s, n, options).empty();
 }
 
-std::string dimension_problem(const point_set_entry& set, std::size_t s) {
-  if (set.max_dimension != 0 && s > set.max_dimension) {
+std::string interlacing_problem(const point_set_entry& set, const point_set_options& options) {
+  if (options.interlacing <= 1) return {};
+  const auto r = set.randomization_of(options);
+  if (!r || std::find(interlaced_randomizations.begin(), interlaced_randomizations.end(), *r) !=
+                interlaced_randomizations.end()) {
+    return {};
+  }
+  return fmt::format(
+      "owen, shift or none with interlacing = {} ({} has no proven rate for an interlaced net: "
+      "docs/theory.md#interlaced-nets)",
+      options.interlacing, to_string(*r));
+}
+
+std::string dimension_problem(const point_set_entry& set, std::size_t s,
+                              const point_set_options& options) {
+  if (set.max_dimension == 0) return {};
+  // An interlaced set draws α·s dimensions from the tables (sampling/interlaced_sobol_points.hpp).
+  if (options.interlacing > 1 && s > set.max_dimension / options.interlacing) {
+    return fmt::format(
+        "α·s ≤ {} for the {} points with interlacing α = {}, got s = {} (α·s = {}): s ≤ {}",
+        set.max_dimension, set.name, options.interlacing, s, s * options.interlacing,
+        set.max_dimension / options.interlacing);
+  }
+  if (s > set.max_dimension) {
     return fmt::format("s ≤ {} for the {} points, got s = {}", set.max_dimension, set.name, s);
   }
   return {};
@@ -850,7 +938,7 @@ std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_
                          const point_set_options& options) {
   if (s == 0) return "a dimension s ≥ 1";
   if (n == 0) return "N ≥ 1";
-  if (std::string problem = dimension_problem(set, s); !problem.empty()) return problem;
+  if (std::string problem = dimension_problem(set, s, options); !problem.empty()) return problem;
   if (n > (std::uint64_t{1} << 62) / s) {
     return "N·s < 2^62 (the counter space of one random stream)";
   }

@@ -2,8 +2,8 @@
 // `pmj02`, each the sample mean of f over the quasi-Monte Carlo set of
 // estimators/point_set_catalogue.hpp it is named after (docs/theory.md#quasi-monte-carlo). Its keys
 // are the set's own (its point_set_option table: `randomization`, the lattice's `periodization`,
-// Sobol's `allow_any_n` and `drop_first_point`; `quadmc list` prints each with its values) and the
-// label gets the values given, plus
+// Sobol's `allow_any_n`, `drop_first_point` and `interlacing`; `quadmc list` prints each with its
+// values) and the label gets the values given, plus
 //   points            explicit N per cell (an increasing list), replacing budget.N; each must be
 //                     2^m where the set needs it, else the key fails naming the nearest valid
 //                     sizes.
@@ -26,7 +26,9 @@
 #include "quadmc/sampling/discrepancy.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <memory>
@@ -84,12 +86,24 @@ class qmc_method final : public method {
   }
 
   std::optional<std::string> incompatibility(const integrand_traits& f) const override {
-    if (set_->max_dimension == 0 || f.s <= set_->max_dimension) return std::nullopt;
+    if (set_->max_dimension == 0) return std::nullopt;
+    // An interlaced set (interlacing α > 1) draws α·s of the tables' dimensions.
+    if (options_.set.interlacing > 1) {
+      const std::string problem = dimension_problem(*set_, f.s, options_.set);
+      if (problem.empty()) return std::nullopt;
+      return fmt::format("the integrand has s = {}: {}", f.s, problem);
+    }
+    if (f.s <= set_->max_dimension) return std::nullopt;
     return fmt::format("the {} points have at most {} dimensions; the integrand has s = {}",
                        set_->name, set_->max_dimension, f.s);
   }
 
   sizing size_for(std::uint64_t N, std::size_t s) const override {
+    if (options_.set.interlacing > 1) {
+      if (std::string problem = dimension_problem(*set_, s, options_.set); !problem.empty()) {
+        return {std::nullopt, std::move(problem)};
+      }
+    }
     if (set_->max_dimension != 0 && s > set_->max_dimension) {
       return {std::nullopt, fmt::format("s = {} is above the {} points' {} dimensions", s,
                                         set_->name, set_->max_dimension)};
@@ -128,6 +142,8 @@ class qmc_method final : public method {
         return low_discrepancy_rate(f, said.note, std::string(said.source));
       case rate_basis::shifted_lattice:
         return with_prefix(said.note, shifted_lattice_rate(f, said.baker));
+      case rate_basis::interlaced_net:
+        return interlaced_net_rate(f, said.interlacing, said.scrambled);
       case rate_basis::unproven:
         break;
     }
@@ -204,6 +220,21 @@ std::vector<std::uint64_t> read_points(option_reader& r, const point_set_entry& 
   return std::move(*given);
 }
 
+// An integer choice (point_set_option::integer): a TOML integer whose decimal text is one of the
+// key's choices, as that text ("2" for interlacing = 2); a string "2" fails as not an integer.
+std::optional<std::string> read_integer_choice(option_reader& r, const point_set_option& key) {
+  const std::string what = fmt::format("an integer, one of {}", fmt::join(key.choices, ", "));
+  // Any count reads here (2^32 keeps the double → integer conversion exact) so that a number
+  // outside the choices fails with them listed.
+  const auto value = r.count(key.key, 0, std::uint64_t{1} << 32, what);
+  if (!value) return std::nullopt;
+  std::string text = std::to_string(*value);
+  if (std::find(key.choices.begin(), key.choices.end(), text) == key.choices.end()) {
+    r.fail(key.key, fmt::format("expected {}, got {}", what, text));
+  }
+  return text;
+}
+
 // Reads the set's own keys (its point_set_option table) as the method's options, then `points`.
 // A quasi-Monte Carlo method is named after its set.
 std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_reader& r) {
@@ -218,6 +249,12 @@ std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_read
         values[i] = "true";
         o.label_suffix += key.flag_label;
       }
+    } else if (key.integer) {
+      if (auto value = read_integer_choice(r, key)) {
+        chosen[i] = std::move(*value);
+        values[i] = chosen[i];
+        o.label_suffix += fmt::format("_{}{}", key.key, chosen[i]);
+      }
     } else if (auto value = r.choice(key.key, key.choices)) {
       chosen[i] = std::move(*value);
       values[i] = chosen[i];
@@ -225,6 +262,12 @@ std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_read
     }
   }
   o.set = set.options_of(values);
+  // A randomization the interlaced net refuses (fast_owen, lms_shift), named at plan time.
+  if (const std::string problem = interlacing_problem(set, o.set); !problem.empty()) {
+    r.fail("interlacing",
+           fmt::format("randomization \"{}\" with interlacing = {}: expected {}",
+                       to_string(*set.randomization_of(o.set)), o.set.interlacing, problem));
+  }
   o.points = read_points(r, set, o.set);
   if (d.supports(cell_control::tolerance)) o.stopping = read_stopping(r, set, o.set);
   return std::make_unique<qmc_method>(d, set, std::move(o));

@@ -79,6 +79,15 @@ theoretical_rate one_point_per_stratum_rate(const integrand_class& f);
 // rate for kinks in s ≥ 2 or singular f.
 theoretical_rate scrambled_net_rate(const integrand_class& f);
 
+// An order-α digital net by digit interlacing (docs/theory.md#interlaced-nets), α ≥ 2, N = 2^m.
+// For f with square-integrable mixed partial derivatives of order δ: RMSE −(min(α, δ) + 1/2) when
+// the αs-dimensional net is Owen-scrambled before interlacing ([Dick 2011]), −min(α, δ) when it
+// is deterministic or digitally shifted ([Dick 2008]), both up to log factors. δ = ∞ for analytic
+// f; for smooth f δ ≥ α is assumed (the class does not carry δ, as for the rules' full order). No
+// rate for kinks (δ = 1 at most, with no proof for the interlaced net here), jumps or singular f.
+// Throws invalid_argument for α < 2.
+theoretical_rate interlaced_net_rate(const integrand_class& f, unsigned order, bool scrambled);
+
 // Points whose randomization (if any) leaves their discrepancy as it is — a digital shift, the
 // unrandomized Sobol' or Halton points, randomized Halton: −1 up to log factors on f of bounded
 // Hardy–Krause variation (the Koksma–Hlawka bound with D* = O((log N)^s/N),

@@ -11,7 +11,8 @@
 // count. Sets that need N = k^s (jittered, unjittered) or N = 2^m (Sobol', lattice) reject other N
 // with the nearest valid sizes: largest_point_count() maps a nominal N to the count a set can
 // hold first. The quasi-Monte Carlo sets (sobol, halton, lattice) take point_set_options (their
-// randomization, the lattice's periodization, Sobol's allow_any_n and drop_first_point); the
+// randomization, the lattice's periodization, Sobol's allow_any_n, drop_first_point and
+// interlacing); the
 // other sets ignore them. An entry owns its options: it lists their keys (point_set_option, which
 // the methods read from a [[method]] table and `quadmc points` from its command line), turns the
 // values given into point_set_options (options_from), states the rate theory gives its sample
@@ -66,16 +67,22 @@ struct point_set_options {
   quadmc::periodization periodic = quadmc::periodization::none;
   bool allow_any_n = false;       // Sobol': N other than 2^m (the first N points of the sequence)
   bool drop_first_point = false;  // Sobol': start at index 1 (the anti-pattern)
+  // Sobol': the digit interlacing factor α of an order-α net (sampling/interlaced_sobol_points.hpp;
+  // docs/theory.md#interlaced-nets); 1 is the Sobol' points themselves.
+  unsigned interlacing = 1;
 };
 
 // One option key of a point set, as a [[method]] table names it (`quadmc points` takes it as
 // --key with '-' for '_'): a choice among `choices` (the default first), or a flag (no choices;
-// false unless given as true).
+// false unless given as true). An integer choice (`integer`) is written as a TOML integer in a
+// scene (interlacing = 2), its choices being the decimal texts it may take, and the label gets
+// "_<key><value>"; a string choice is a TOML string and the label gets "_<value>".
 struct point_set_option {
   std::string_view key;
   std::string_view meaning;                   // values, default and what the label gets, one line
   std::span<const std::string_view> choices;  // empty: a flag
   std::string_view flag_label;                // a flag set to true: the default label's suffix
+  bool integer = false;                       // choices are integers (decimal text)
 
   bool is_flag() const noexcept { return choices.empty(); }
 };
@@ -93,6 +100,9 @@ enum class rate_basis {
   low_discrepancy,  // Koksma–Hlawka with the set's star discrepancy: `note`, `source`
   shifted_lattice,  // a randomly shifted rank-1 lattice; `baker`: periodized by the tent map
   unproven,         // no rate proven: `note`, `source`
+  // An order-α digital net by interlacing (`interlacing` = α ≥ 2), Owen-scrambled before
+  // interlacing (`scrambled`) or deterministic/digitally shifted (docs/theory.md#interlaced-nets)
+  interlaced_net,
 };
 struct point_set_theory {
   rate_basis basis = rate_basis::unproven;
@@ -102,6 +112,9 @@ struct point_set_theory {
   // The basis holds for s ≤ 2 only: a set padded across pairs of dimensions, whose pairs are
   // associated at random, has plain Monte Carlo's rate beyond (docs/theory.md#padded-jittered).
   bool padded = false;
+  // interlaced_net: the order α and whether the αs-dimensional net was Owen-scrambled.
+  unsigned interlacing = 1;
+  bool scrambled = false;
 };
 
 // The transform whose coefficients a guaranteed stopping rule reads off an extensible set's
@@ -294,7 +307,13 @@ bool accepts_size(const point_set_entry& set, std::size_t s, std::uint64_t n,
 std::uint64_t max_point_count(const point_set_entry& set, const point_set_options& options = {});
 // "s ≤ 3667 for the sobol points, got s = 3668" for a dimension beyond the set's tables, or empty
 // (size_problem begins with it; a caller that names its parameters blames s, not N, for it).
-std::string dimension_problem(const point_set_entry& set, std::size_t s);
+// With interlacing α > 1 the tables must hold α·s dimensions: "α·s ≤ 3667 …" names s, α and the
+// limit.
+std::string dimension_problem(const point_set_entry& set, std::size_t s,
+                              const point_set_options& options = {});
+// "owen, shift or none with interlacing = 2 (fast_owen …)" for a randomization an interlaced set
+// (interlacing > 1) refuses, or empty (docs/theory.md#interlaced-nets).
+std::string interlacing_problem(const point_set_entry& set, const point_set_options& options);
 // "N = 2^m required: nearest valid sizes 512 and 1024"-style text for a count a set cannot hold,
 // or empty when it can.
 std::string size_problem(const point_set_entry& set, std::size_t s, std::uint64_t n,
