@@ -1,10 +1,12 @@
 // Tests of periodized_monte_carlo.hpp (docs/theory.md#lattice-periodizations): the weighted sample
 // mean over a shifted lattice, bitwise the same for any thread count and any evaluation block,
-// the box mapped after the transform, and an overflowing Jacobian reported, not averaged.
+// the box mapped after the transform, the catalogue's lattice entry taking this path for c0 …
+// c3sin, and an overflowing Jacobian reported, not averaged.
 #include "quadmc/estimators/periodized_monte_carlo.hpp"
 
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
+#include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
 #include "test_integrands.hpp"
 
@@ -72,6 +74,24 @@ TYPED_TEST(PeriodizedMonteCarlo, IsBitwiseTheSameForAnyThreadCountAndBlock) {
   EXPECT_TRUE(same_bits(periodized_monte_carlo<T>(periodized_gaussian, points, 1),
                         periodized_monte_carlo<T>(gaussian_in_blocks{}, points, 3)))
       << T::name << ": blocks of 1024 points";
+}
+
+// The catalogue's lattice with periodization = c0 … c3sin is this estimator over the lattice
+// points themselves (periodization none), bit for bit.
+TEST(PeriodizedMonteCarloCatalogue, LatticeEntryTakesThisPath) {
+  const point_set_entry& lattice = *find_point_set("lattice");
+  const std::uint64_t n = std::uint64_t{1} << 12;
+  const rank1_lattice_points<no_periodization> points(2, n, 5, 6);
+  point_set_options o;
+  o.periodic = periodization::c1sin;
+  EXPECT_TRUE(same_bits(lattice.monte_carlo(periodized_gaussian, {5, 6}, n, 2, o),
+                        periodized_monte_carlo<c1sin_transform>(periodized_gaussian, points, 1)));
+  o.periodic = periodization::c3sin;
+  EXPECT_TRUE(same_bits(lattice.monte_carlo(periodized_gaussian, {5, 6}, n, 2, o),
+                        periodized_monte_carlo<c3sin_transform>(periodized_gaussian, points, 1)));
+  EXPECT_FALSE(same_bits(lattice.monte_carlo(periodized_gaussian, {5, 6}, n, 2, o),
+                         lattice.monte_carlo(periodized_gaussian, {5, 6}, n, 2)))
+      << "c3sin is not the plain lattice";
 }
 
 // ∏φ' ≤ (8/3)^s: in s = 800 a point near the cube's centre (every φ' ≈ 8/3 for c3sin) has a
