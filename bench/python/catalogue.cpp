@@ -78,10 +78,13 @@ py::list point_sets() {
       randomizations.append(text(quadmc::to_string(r)));
     }
     d["randomizations"] = randomizations;
-    // key → its choices (the default first), or None for a flag (True or False).
+    // key → its choices (the default first), or None for a flag (True or False). Only the
+    // choices quadmc.points takes: the lattice's weighted periodizations (c0 … c3sin) weight
+    // the points and have none to give (docs/theory.md#lattice-periodizations).
     py::dict options;
     for (const quadmc::point_set_option& o : p.options) {
-      options[text(o.key)] = o.is_flag() ? py::object(py::none()) : py::object(strings(o.choices));
+      options[text(o.key)] =
+          o.is_flag() ? py::object(py::none()) : py::object(strings(o.point_choices()));
     }
     d["options"] = options;
     d["max_dimension"] = p.max_dimension == 0 ? py::object(py::none()) : py::int_(p.max_dimension);

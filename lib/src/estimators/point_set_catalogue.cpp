@@ -780,6 +780,16 @@ std::string_view to_string(strata_kind k) noexcept {
   return k == strata_kind::cells ? "cells" : "rows_and_columns";
 }
 
+std::vector<std::string_view> point_set_option::point_choices() const {
+  std::vector<std::string_view> out;
+  for (const std::string_view c : choices) {
+    if (std::find(weighted_choices.begin(), weighted_choices.end(), c) == weighted_choices.end()) {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
 const point_set_option* point_set_entry::option(std::string_view key) const noexcept {
   for (const point_set_option& o : options) {
     if (o.key == key) return &o;
@@ -809,14 +819,7 @@ point_set_options checked_options(const point_set_entry& set, std::span<const na
     const auto chosen = [&](std::span<const std::string_view> among) {
       return std::find(among.begin(), among.end(), g->value) != among.end();
     };
-    // The choices that give equal-weight points, in the option's order.
-    std::vector<std::string_view> plain;
-    for (const std::string_view c : o.choices) {
-      if (std::find(o.weighted_choices.begin(), o.weighted_choices.end(), c) ==
-          o.weighted_choices.end()) {
-        plain.push_back(c);
-      }
-    }
+    const std::vector<std::string_view> plain = o.point_choices();
     if (!o.is_flag() && chosen(o.weighted_choices)) {
       throw invalid_argument(
           parameter(o.key), g->value,

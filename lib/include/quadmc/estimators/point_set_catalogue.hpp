@@ -30,6 +30,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace quadmc {
 
@@ -90,6 +91,9 @@ struct point_set_option {
   std::span<const std::string_view> weighted_choices = {};
 
   bool is_flag() const noexcept { return choices.empty(); }
+  // The choices that give equal-weight points (all but weighted_choices), in order: what
+  // `quadmc points` and the Python module's point_sets() list.
+  std::vector<std::string_view> point_choices() const;
 };
 
 // The values given for a set's options, one per entry of its `options` (same order): the chosen
