@@ -79,7 +79,9 @@ py::list point_sets() {
     }
     d["randomizations"] = randomizations;
     // key → its choices (the default first; ints for an integer key such as interlacing), or
-    // None for a flag (True or False).
+    // None for a flag (True or False). Only the choices quadmc.points takes: the lattice's
+    // weighted periodizations (c0 … c3sin) weight the points and have none to give
+    // (docs/theory.md#lattice-periodizations).
     py::dict options;
     for (const quadmc::point_set_option& o : p.options) {
       if (o.integer) {
@@ -89,7 +91,8 @@ py::list point_sets() {
         options[text(o.key)] = values;
         continue;
       }
-      options[text(o.key)] = o.is_flag() ? py::object(py::none()) : py::object(strings(o.choices));
+      options[text(o.key)] =
+          o.is_flag() ? py::object(py::none()) : py::object(strings(o.point_choices()));
     }
     d["options"] = options;
     d["max_dimension"] = p.max_dimension == 0 ? py::object(py::none()) : py::int_(p.max_dimension);

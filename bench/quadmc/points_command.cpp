@@ -77,8 +77,9 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
     std::string help;
     for (std::size_t i = 0; i < k.sets.size(); ++i) {
       const quadmc::point_set_option& o = *k.sets[i]->option(k.key);
-      help += fmt::format("{}{}: {}", i == 0 ? "" : "; ", k.sets[i]->name,
-                          o.is_flag() ? o.meaning : fmt::format("{}", fmt::join(o.choices, "|")));
+      help += fmt::format(
+          "{}{}: {}", i == 0 ? "" : "; ", k.sets[i]->name,
+          o.is_flag() ? o.meaning : fmt::format("{}", fmt::join(o.point_choices(), "|")));
     }
     const std::string key(k.key);
     if (k.flag) {

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace quadmc {
 namespace {
 
@@ -78,6 +80,36 @@ TEST(OnePointPerStratumRate, JitteredRates) {
   EXPECT_EQ(*one_point_per_stratum_rate(of(smoothness::c0, 1)).slope, -1.5);
   EXPECT_EQ(*one_point_per_stratum_rate(of(smoothness::discontinuous, 2)).slope, -0.75);
   EXPECT_FALSE(one_point_per_stratum_rate(of(smoothness::singular, 1)).slope);
+}
+
+TEST(ShiftedLatticeRate, PeriodizationOrderSetsTheSlope) {
+  // none and the baker's map as before (docs/theory.md#lattice-rules): −1, and −2 on smooth f.
+  const lattice_periodizing none{};
+  const lattice_periodizing baker{"baker", 0, false};
+  const theoretical_rate plain = shifted_lattice_rate(of(smoothness::smooth, 2), none);
+  EXPECT_EQ(*plain.slope, -1.0);
+  EXPECT_EQ(plain.note, "randomly shifted lattice, f not periodic: N^(-1+e)");
+  const theoretical_rate tent = shifted_lattice_rate(of(smoothness::analytic, 2), baker);
+  EXPECT_EQ(*tent.slope, -2.0);
+  EXPECT_EQ(tent.note, "shifted lattice + baker's transform: N^(-2+e)");
+  EXPECT_EQ(*shifted_lattice_rate(of(smoothness::c0, 2), baker).slope, -1.0);
+  EXPECT_FALSE(shifted_lattice_rate(of(smoothness::singular, 1, -0.75), baker).slope)
+      << "infinite variance";
+  // A weighted periodization periodic through order k = m − 1: −(m + 1) on smooth f
+  // (docs/theory.md#lattice-periodizations), −1 on kinks, none on jumps or singular f.
+  for (int k = 0; k <= 3; ++k) {
+    const lattice_periodizing weighted{"c", k, true};
+    const theoretical_rate r = shifted_lattice_rate(of(smoothness::smooth, 3), weighted);
+    EXPECT_EQ(*r.slope, -(k + 2.0)) << k;
+    EXPECT_NE(r.source.find("#lattice-periodizations"), std::string::npos) << r.source;
+    EXPECT_EQ(*shifted_lattice_rate(of(smoothness::c0, 3), weighted).slope, -1.0) << k;
+    EXPECT_FALSE(shifted_lattice_rate(of(smoothness::discontinuous, 2), weighted).slope) << k;
+    const theoretical_rate singular =
+        shifted_lattice_rate(of(smoothness::singular, 1, -0.75), weighted);
+    EXPECT_FALSE(singular.slope) << k;
+    EXPECT_EQ(singular.note.find("infinite variance"), std::string::npos)
+        << "g = f(φ)φ' need not share f's infinite variance: " << singular.note;
+  }
 }
 
 }  // namespace

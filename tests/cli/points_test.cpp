@@ -149,6 +149,11 @@ TEST(PointsCommand, RefusesWhatTheSetCannotGiveInOneLine) {
   expect_points_error(
       {"points", "lattice", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "tent"},
       "--periodization", "one of none, baker for lattice");
+  // c0 … c3sin weight the points by ∏φ' (docs/theory.md#lattice-periodizations): refused, saying
+  // why and which values the points take.
+  expect_points_error(
+      {"points", "lattice", "--n", "8", "--s", "2", "--seed", "1", "--periodization", "c2sin"},
+      "--periodization", "one of none, baker for lattice's points: c2sin is a change of variables");
 }
 
 // The sets' own flags reach them: --drop-first-point starts the unrandomized Sobol' sequence at

@@ -6,8 +6,10 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/simd_level.hpp"
 #include "quadmc/core/welford.hpp"
+#include "quadmc/estimators/monte_carlo.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/functions/geometric_asian.hpp"
+#include "quadmc/sampling/rank1_lattice_points.hpp"
 #include "test_integrands.hpp"
 
 #include <fmt/format.h>
@@ -216,6 +218,13 @@ TEST(PointSetCatalogue, EachSetReadsItsOwnKeys) {
   EXPECT_EQ(max_point_count(sobol, o), (std::uint64_t{1} << 32) - 1);
   const std::vector<std::string_view> baker{"", "baker"};
   EXPECT_EQ(find_point_set("lattice")->options_of(baker).periodic, periodization::baker);
+  // Every periodization by its name, which to_string gives back.
+  const point_set_option& periodic = *find_point_set("lattice")->option("periodization");
+  ASSERT_EQ(periodic.choices.size(), 7u);
+  for (const std::string_view name : periodic.choices) {
+    const std::vector<std::string_view> values{"", name};
+    EXPECT_EQ(to_string(find_point_set("lattice")->options_of(values).periodic), name);
+  }
   EXPECT_EQ(find_point_set("jittered")->option("randomization"), nullptr);
 }
 
@@ -299,14 +308,86 @@ TEST(PointSetCatalogue, QuasiMonteCarloSetsStateTheirTheory) {
   baker.periodic = periodization::baker;
   const point_set_theory lattice = *find_point_set("lattice")->theory_of(baker);
   EXPECT_EQ(lattice.basis, rate_basis::shifted_lattice);
-  EXPECT_TRUE(lattice.baker);
+  EXPECT_EQ(lattice.periodization, "baker");
+  EXPECT_EQ(lattice.periodic_order, 0) << "f∘φ continuous and periodic";
+  EXPECT_FALSE(lattice.weighted);
   EXPECT_TRUE(lattice.note.empty()) << "shifted by default";
+  EXPECT_EQ(find_point_set("lattice")->theory_of({})->periodic_order, -1) << "f itself";
+  // A weighted periodization: g periodic through order m − 1, m the order of φ''s zeros.
+  const std::vector<std::pair<periodization, int>> orders{{periodization::c0, 0},
+                                                          {periodization::c1, 1},
+                                                          {periodization::c1sin, 1},
+                                                          {periodization::c2sin, 2},
+                                                          {periodization::c3sin, 3}};
+  for (const auto& [p, k] : orders) {
+    point_set_options o;
+    o.periodic = p;
+    const point_set_theory t = *find_point_set("lattice")->theory_of(o);
+    EXPECT_EQ(t.periodization, to_string(p));
+    EXPECT_EQ(t.periodic_order, k) << to_string(p);
+    EXPECT_TRUE(t.weighted) << to_string(p);
+  }
   EXPECT_FALSE(find_point_set("jittered")->theory_of({}));
 }
 
 // The strata each set states, counted here in 2D and for the Latin hypercube in 3D: every stratum
 // holds exactly one point (the gallery draws and counts the same in 2D,
 // tests/cli/gallery_test.cpp).
+// none and baker keep their path through the catalogue: the same bits as monte_carlo over
+// rank1_lattice_points itself.
+TEST(PointSetCatalogue, LatticeWithoutWeightsIsMonteCarloOverItsPoints) {
+  const point_set_entry& lattice = *find_point_set("lattice");
+  const std::uint64_t n = std::uint64_t{1} << 14;
+  point_set_options baker;
+  baker.periodic = periodization::baker;
+  EXPECT_TRUE(
+      bitwise_equal(lattice.monte_carlo(gaussian, {3, 4}, n, 2),
+                    monte_carlo(gaussian, rank1_lattice_points<no_periodization>(2, n, 3, 4), 2)));
+  EXPECT_TRUE(
+      bitwise_equal(lattice.monte_carlo(gaussian, {3, 4}, n, 2, baker),
+                    monte_carlo(gaussian, rank1_lattice_points<baker_transform>(2, n, 3, 4), 2)));
+}
+
+// A weighted periodization has no equal-weight points to give: `quadmc points` and the Python
+// module (checked_options), the points, importance and irradiance estimators refuse it, saying
+// why and what they take; an unknown value lists the values the points take.
+TEST(PointSetCatalogue, PointsRefuseTheWeightedPeriodizations) {
+  const point_set_entry& lattice = *find_point_set("lattice");
+  const auto quoted_flag = [](std::string_view key) { return "--" + std::string(key); };
+  const auto message = [&](std::string_view value) {
+    const std::vector<named_option> given{{"periodization", value}};
+    try {
+      (void)checked_options(lattice, given, quoted_flag);
+    } catch (const invalid_argument& e) {
+      EXPECT_EQ(e.parameter(), "--periodization");
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  for (const std::string_view weighted : {"c0", "c1", "c1sin", "c2sin", "c3sin"}) {
+    const std::string e = message(weighted);
+    EXPECT_NE(e.find("one of none, baker for lattice's points"), std::string::npos) << e;
+    EXPECT_NE(e.find(weighted), std::string::npos) << e;
+    EXPECT_NE(e.find("weights each point"), std::string::npos) << e;
+  }
+  EXPECT_NE(message("tent").find("one of none, baker for lattice"), std::string::npos);
+  EXPECT_EQ(message("baker"), "no error");
+  point_set_options o;
+  o.periodic = periodization::c1sin;
+  const auto sink = [](std::uint64_t, std::span<const double>) {};
+  EXPECT_THROW(lattice.points(2, 64, {1, 2}, sink, o), invalid_argument);
+  const any_integrand line(test_support::make_integrand(
+      "x on [0,1]", box::unit(1), 0.5, [](std::span<const double> x) { return x[0]; }));
+  EXPECT_THROW(lattice.importance(line, {unit_warp_kind::power, 1.0}, {1, 2}, 64, 1, o),
+               invalid_argument);
+  try {
+    lattice.points(2, 64, {1, 2}, sink, o);
+  } catch (const invalid_argument& e) {
+    EXPECT_EQ(e.parameter(), "periodization");
+    EXPECT_NE(std::string(e.what()).find("none or baker"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PointSetCatalogue, StrataHoldOnePointEach) {
   for (const point_set_entry& set : point_set_catalogue()) {
     for (const std::size_t s : {2u, 3u}) {

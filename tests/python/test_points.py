@@ -50,6 +50,10 @@ def parse_csv(text, s):
 def test_every_set_has_its_options_listed():
     sets = quadmc.point_sets()
     assert len(sets) >= 8
+    # The lattice lists the periodizations its points take; c0 … c3sin weight the points and are
+    # the lattice method's only (docs/theory.md#lattice-periodizations).
+    lattice = next(p for p in sets if p["name"] == "lattice")
+    assert lattice["options"]["periodization"] == ["none", "baker"]
     # The randomized nets list their randomizations, the default first, as an option too.
     for point_set in sets:
         if point_set["randomizations"]:
@@ -102,9 +106,14 @@ def error_text(command, args):
     (lambda: quadmc.points("sobol", 16, 3668), ["--n", "16", "--s", "3668"], "--s", "s"),
     (lambda: quadmc.points("sobol", 16, 1834, interlacing=2),
      ["--n", "16", "--s", "1834", "--interlacing", "2"], "--s", "s"),
+    # The lattice's weighted periodizations weight the points: no equal-weight points to give.
+    (lambda: quadmc.points("lattice", 16, 2, periodization="c1sin"),
+     ["--n", "16", "--s", "2", "--periodization", "c1sin"], "--periodization", "periodization"),
 ])
 def test_refusals_are_the_commands_text(command, module_call, args, flag, keyword):
-    set_name = "halton" if "--periodization" in args else "sobol"
+    set_name = "sobol"
+    if "--periodization" in args:
+        set_name = "lattice" if "c1sin" in args else "halton"
     expected = error_text(command, ["points", set_name, "--seed", "0", *args])
     with pytest.raises(ValueError) as error:
         module_call()

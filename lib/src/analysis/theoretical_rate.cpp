@@ -220,9 +220,45 @@ theoretical_rate low_discrepancy_rate(const integrand_class& f, std::string note
   return {std::nullopt, "not tabulated for a singular f", std::move(source)};
 }
 
-theoretical_rate shifted_lattice_rate(const integrand_class& f, bool baker) {
+namespace {
+
+// A weighted periodization (c0 … c3sin): g = f(φ(x))∏φ'(x_j), periodic through order k.
+theoretical_rate weighted_lattice_rate(const integrand_class& f, const lattice_periodizing& p) {
+  constexpr const char* source =
+      "docs/theory.md#lattice-periodizations; [Sidi 1993]; [Laurie 1996]; [Sloan & Joe 1994]; "
+      "[Dick, Kuo & Sloan 2013]";
+  const int m = p.periodic_order + 1;  // the order of φ''s zeros at 0 and 1
+  switch (f.regularity) {
+    case smoothness::analytic:
+    case smoothness::smooth:
+      return {-static_cast<double>(m + 1),
+              fmt::format("shifted lattice + {} transform (phi' zero of order {} at 0 and 1): "
+                          "N^(-{}+e), its constant growing with the order and with s",
+                          p.name, m, m + 1),
+              source};
+    case smoothness::c0:
+      return {-1.0,
+              fmt::format("{} transform on kinks: mixed first derivatives only, N^(-1+e)", p.name),
+              source};
+    case smoothness::discontinuous:
+      return {std::nullopt, "a jump: no lattice rate tabulated", source};
+    case smoothness::singular:
+      break;
+  }
+  // The Jacobian's zeros can tame f ~ x^α (g ~ x^((m+1)α+m)), so f's infinite variance is not
+  // g's; but no rate is proven here.
+  return {std::nullopt,
+          fmt::format("not tabulated for a singular f ({} transform: no rate proven)", p.name),
+          source};
+}
+
+}  // namespace
+
+theoretical_rate shifted_lattice_rate(const integrand_class& f, const lattice_periodizing& p) {
   (void)dimension_of(f);
+  if (p.weighted) return weighted_lattice_rate(f, p);
   if (auto none = infinite_variance_rate(f)) return *none;
+  const bool baker = p.periodic_order >= 0;
   const char* source = baker ? "docs/theory.md#lattice-rules; [Hickernell 2002]; "
                                "[Dick, Nuyens & Pillichshammer 2014]"
                              : "docs/theory.md#lattice-rules; [Dick, Kuo & Sloan 2013]";

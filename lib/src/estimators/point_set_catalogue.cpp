@@ -8,6 +8,7 @@
 #include "quadmc/estimators/importance_sampling.hpp"
 #include "quadmc/estimators/irradiance_estimators.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
+#include "quadmc/estimators/periodized_monte_carlo.hpp"
 #include "quadmc/estimators/sample_values.hpp"
 #include "quadmc/sampling/cmj_points.hpp"
 #include "quadmc/sampling/halton_points.hpp"
@@ -18,6 +19,7 @@
 #include "quadmc/sampling/latin_hypercube_points.hpp"
 #include "quadmc/sampling/padded_jittered_points.hpp"
 #include "quadmc/sampling/padded_sobol_points.hpp"
+#include "quadmc/sampling/periodizing_transforms.hpp"
 #include "quadmc/sampling/pmj02_points.hpp"
 #include "quadmc/sampling/point_file.hpp"
 #include "quadmc/sampling/rank1_lattice_points.hpp"
@@ -131,6 +133,25 @@ constexpr std::array<std::string_view, max_interlacing> interlacing_names{"1", "
 // lms_shift's equivalence with Owen's scramble is not carried to interlaced nets here.
 constexpr std::array<randomization, 3> interlaced_randomizations{
     randomization::owen, randomization::shift, randomization::none};
+// In the order of enum periodization, which periodization_named relies on.
+constexpr std::array<std::string_view, 7> periodization_names{"none",
+                                                              "baker",
+                                                              c0_transform::name,
+                                                              c1_transform::name,
+                                                              c1sin_transform::name,
+                                                              c2sin_transform::name,
+                                                              c3sin_transform::name};
+// The ones that weight the points (is_weighted): no equal-weight points to give.
+constexpr std::array<std::string_view, 5> weighted_periodization_names{
+    c0_transform::name, c1_transform::name, c1sin_transform::name, c2sin_transform::name,
+    c3sin_transform::name};
+
+periodization periodization_named(std::string_view name) {
+  for (std::size_t i = 0; i < periodization_names.size(); ++i) {
+    if (periodization_names[i] == name) return static_cast<periodization>(i);
+  }
+  return periodization::none;
+}
 
 // Each set's keys, in the order of its options_from's values.
 constexpr std::array<point_set_option, 4> sobol_options{{
@@ -178,10 +199,14 @@ constexpr std::array<point_set_option, 2> lattice_options{{
      lattice_randomization_names,
      {}},
     {"periodization",
-     "\"none\" (default) or \"baker\" (the tent transform 1 - |2x - 1|); the label gets the "
-     "suffix",
+     "\"none\" (default), \"baker\" (the tent map 1 - |2x - 1| of the points), or a change of "
+     "variables weighting f(phi(x)) by prod phi'(x_j): \"c0\" (3x^2 - 2x^3), \"c1\" "
+     "(x^3(10 - 15x + 6x^2)), \"c1sin\", \"c2sin\", \"c3sin\" (Sidi's sin^2, sin^3, sin^4 "
+     "transforms); the label gets the suffix",
      periodization_names,
-     {}},
+     {},
+     false,
+     weighted_periodization_names},
 }};
 
 std::optional<randomization> randomization_given(std::string_view value) {
@@ -209,7 +234,7 @@ point_set_options randomization_from(point_set_values v) {
 point_set_options lattice_options_from(point_set_values v) {
   point_set_options o;
   o.random = randomization_given(v[0]);
-  o.periodic = v[1] == "baker" ? periodization::baker : periodization::none;
+  o.periodic = periodization_named(v[1]);
   return o;
 }
 
@@ -270,12 +295,37 @@ point_set_theory halton_theory(const point_set_options& o) {
               : fmt::format("{}-randomized Halton points, no faster rate proven", to_string(r)),
           "docs/theory.md#halton; [Halton 1960]; [Niederreiter 1992, Thm 3.6]"};
 }
+// The order k to which the integrand the lattice rule sees has periodic derivatives
+// (docs/theory.md#lattice-periodizations): none −1 (f itself, not periodic), the baker's map 0
+// (f∘φ continuous and periodic), and m − 1 for a Jacobian vanishing to order m at 0 and 1.
+int periodic_order_of(periodization p) noexcept {
+  switch (p) {
+    case periodization::none:
+      return -1;
+    case periodization::baker:
+      return 0;
+    case periodization::c0:
+      return c0_transform::jacobian_zero_order - 1;
+    case periodization::c1:
+      return c1_transform::jacobian_zero_order - 1;
+    case periodization::c1sin:
+      return c1sin_transform::jacobian_zero_order - 1;
+    case periodization::c2sin:
+      return c2sin_transform::jacobian_zero_order - 1;
+    case periodization::c3sin:
+      return c3sin_transform::jacobian_zero_order - 1;
+  }
+  return -1;
+}
+
 point_set_theory lattice_theory(const point_set_options& o) {
   const bool shifted = o.random.value_or(lattice_randomizations.front()) != randomization::none;
-  return {rate_basis::shifted_lattice,
-          shifted ? "" : "unshifted lattice (deterministic)",
-          {},
-          o.periodic == periodization::baker};
+  point_set_theory t{
+      rate_basis::shifted_lattice, shifted ? "" : "unshifted lattice (deterministic)", {}};
+  t.periodization = to_string(o.periodic);
+  t.periodic_order = periodic_order_of(o.periodic);
+  t.weighted = is_weighted(o.periodic);
+  return t;
 }
 
 // The strata of each set, with its default options (the gallery's tests count the points per
@@ -468,10 +518,51 @@ struct lattice_set {
     const point_set_entry& set = entry_named("lattice");
     require_qmc_request(set, s, n, o);
     const bool shifted = *set.randomization_of(o) == randomization::shift;
+    if (is_weighted(o.periodic)) refuse_weighted(o.periodic);
     if (o.periodic == periodization::baker) {
       return fn(rank1_lattice_points<baker_transform>(s, n, st.seed, st.stream, shifted));
     }
     return fn(rank1_lattice_points<no_periodization>(s, n, st.seed, st.stream, shifted));
+  }
+
+  // The sample mean: with a weighted periodization, of g = f(φ(x))∏φ'(x_j) over the lattice
+  // points themselves (estimators/periodized_monte_carlo.hpp); else monte_carlo over the points
+  // visit makes, as every set's.
+  static estimate monte_carlo_over(const any_integrand& f, const point_set_options& o,
+                                   const sample_stream& st, std::uint64_t n, unsigned threads) {
+    if (!is_weighted(o.periodic)) {
+      return visit(f.dimension(), n, o, st,
+                   [&](const auto& points) { return monte_carlo(f, points, threads); });
+    }
+    const point_set_entry& set = entry_named("lattice");
+    require_qmc_request(set, f.dimension(), n, o);
+    const bool shifted = *set.randomization_of(o) == randomization::shift;
+    const rank1_lattice_points<no_periodization> points(f.dimension(), n, st.seed, st.stream,
+                                                        shifted);
+    switch (o.periodic) {
+      case periodization::c0:
+        return periodized_monte_carlo<c0_transform>(f, points, threads);
+      case periodization::c1:
+        return periodized_monte_carlo<c1_transform>(f, points, threads);
+      case periodization::c1sin:
+        return periodized_monte_carlo<c1sin_transform>(f, points, threads);
+      case periodization::c2sin:
+        return periodized_monte_carlo<c2sin_transform>(f, points, threads);
+      default:
+        return periodized_monte_carlo<c3sin_transform>(f, points, threads);
+    }
+  }
+
+  // The points, importance and irradiance estimators take equal-weight points: a weighted
+  // periodization has none to give.
+  [[noreturn]] static void refuse_weighted(periodization p) {
+    throw invalid_argument(
+        "periodization", std::string(to_string(p)),
+        fmt::format("none or baker for the lattice's points and its importance and irradiance "
+                    "estimators: {} is a change of variables that weights each point by "
+                    "∏φ'(x_j) (docs/theory.md#lattice-periodizations), so only the "
+                    "lattice's sample mean (the lattice method) applies it",
+                    to_string(p)));
   }
 };
 
@@ -586,6 +677,10 @@ struct set_facts {
   std::span<const point_set_option> options = {};
   point_set_options (*options_from)(point_set_values) = no_options;
   point_set_theory (*theory)(const point_set_options&) = nullptr;
+  // A set whose sample mean is not monte_carlo over its points (the lattice's weighted
+  // periodizations) gives its own; nullptr: monte_carlo_over<Set>.
+  estimate (*monte_carlo)(const any_integrand&, const point_set_options&, const sample_stream&,
+                          std::uint64_t, unsigned) = nullptr;
 };
 
 template <class Set>
@@ -607,7 +702,7 @@ constexpr point_set_entry point_set_entry_for(const set_facts& f) {
                     f.options_from,
                     f.theory,
                     f.strata,
-                    monte_carlo_over<Set>,
+                    f.monte_carlo != nullptr ? f.monte_carlo : monte_carlo_over<Set>,
                     importance_over<Set>,
                     irradiance_over<Set>,
                     points_over<Set>};
@@ -695,7 +790,8 @@ constexpr std::array<point_set_entry, 11> entries{{
          .max_points = max_lattice_points,
          .options = lattice_options,
          .options_from = lattice_options_from,
-         .theory = lattice_theory}),
+         .theory = lattice_theory,
+         .monte_carlo = lattice_set::monte_carlo_over}),
 }};
 
 const point_set_entry& entry_named(std::string_view name) {
@@ -814,6 +910,16 @@ std::string_view to_string(strata_kind k) noexcept {
   return k == strata_kind::cells ? "cells" : "rows_and_columns";
 }
 
+std::vector<std::string_view> point_set_option::point_choices() const {
+  std::vector<std::string_view> out;
+  for (const std::string_view c : choices) {
+    if (std::find(weighted_choices.begin(), weighted_choices.end(), c) == weighted_choices.end()) {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
 const point_set_option* point_set_entry::option(std::string_view key) const noexcept {
   for (const point_set_option& o : options) {
     if (o.key == key) return &o;
@@ -840,10 +946,21 @@ point_set_options checked_options(const point_set_entry& set, std::span<const na
     const auto g = std::find_if(given.begin(), given.end(),
                                 [&](const named_option& n) { return n.key == o.key; });
     if (g == given.end() || g->value.empty()) continue;
-    if (!o.is_flag() &&
-        std::find(o.choices.begin(), o.choices.end(), g->value) == o.choices.end()) {
+    const auto chosen = [&](std::span<const std::string_view> among) {
+      return std::find(among.begin(), among.end(), g->value) != among.end();
+    };
+    const std::vector<std::string_view> plain = o.point_choices();
+    if (!o.is_flag() && chosen(o.weighted_choices)) {
+      throw invalid_argument(
+          parameter(o.key), g->value,
+          fmt::format("one of {} for {}'s points: {} is a change of variables that weights each "
+                      "point by ∏φ'(x_j), not a set of equal-weight points, so only the "
+                      "{} method's sample mean takes it",
+                      fmt::join(plain, ", "), set.name, g->value, set.name));
+    }
+    if (!o.is_flag() && !chosen(o.choices)) {
       throw invalid_argument(parameter(o.key), g->value,
-                             fmt::format("one of {} for {}", fmt::join(o.choices, ", "), set.name));
+                             fmt::format("one of {} for {}", fmt::join(plain, ", "), set.name));
     }
     values[i] = g->value;
   }
@@ -865,7 +982,8 @@ std::optional<randomization> parse_randomization(std::string_view name) noexcept
 }
 
 std::string_view to_string(periodization p) noexcept {
-  return p == periodization::baker ? "baker" : "none";
+  const auto i = static_cast<std::size_t>(p);
+  return i < periodization_names.size() ? periodization_names[i] : "?";
 }
 
 std::optional<randomization> point_set_entry::randomization_of(

@@ -141,7 +141,9 @@ class qmc_method final : public method {
       case rate_basis::low_discrepancy:
         return low_discrepancy_rate(f, said.note, std::string(said.source));
       case rate_basis::shifted_lattice:
-        return with_prefix(said.note, shifted_lattice_rate(f, said.baker));
+        return with_prefix(
+            said.note,
+            shifted_lattice_rate(f, {said.periodization, said.periodic_order, said.weighted}));
       case rate_basis::interlaced_net:
         return interlaced_net_rate(f, said.interlacing, said.scrambled);
       case rate_basis::unproven:
@@ -173,6 +175,10 @@ class qmc_method final : public method {
     const std::uint64_t n = cell.size.evaluations;
     const std::size_t s = cell.function.dimension();
     if (n > discrepancy_max_points || n * n * s > discrepancy_max_pair_coordinates) return;
+    // A weighted periodization (c0 … c3sin) averages g over the lattice points themselves: the
+    // points measured are those (docs/theory.md#lattice-periodizations).
+    point_set_options measured = options_.set;
+    if (is_weighted(measured.periodic)) measured.periodic = periodization::none;
     std::vector<double> x;
     x.reserve(n * s);
     set_->points(
@@ -180,7 +186,7 @@ class qmc_method final : public method {
         [&](std::uint64_t, std::span<const double> batch) {
           x.insert(x.end(), batch.begin(), batch.end());
         },
-        options_.set);
+        measured);
     const l2_discrepancies d = discrepancies(x, s);
     result.l2_star_discrepancy = d.l2_star;
     result.centered_discrepancy = d.centered;

@@ -23,6 +23,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace quadmc {
 
@@ -96,12 +97,25 @@ theoretical_rate interlaced_net_rate(const integrand_class& f, unsigned order, b
 theoretical_rate low_discrepancy_rate(const integrand_class& f, std::string note,
                                       std::string source);
 
+// How a shifted lattice's integrand is made periodic (docs/theory.md#lattice-periodizations).
+struct lattice_periodizing {
+  std::string_view name = "none";  // the `periodization` value
+  // k: the integrand the rule sees has derivatives through order k that agree at 0 and 1 (−1: not
+  // periodic; 0: the baker's map and c0; m − 1 for a Jacobian φ' vanishing to order m).
+  int periodic_order = -1;
+  // A change of variables weighting f(φ(x)) by ∏φ' (c0 … c3sin), not a map of the points.
+  bool weighted = false;
+};
+
 // A randomly shifted rank-1 lattice rule: −1 on f with square-integrable mixed first derivatives
 // (analytic, smooth, C0); with the baker's transform −2 on f with square-integrable mixed second
 // derivatives (analytic, smooth; C0 stays −1), both up to N^ε ([Hickernell 2002];
 // [Dick, Nuyens & Pillichshammer 2014]; [Dick, Kuo & Sloan 2013]); no tabulated rate for jumps
-// or singular f.
-theoretical_rate shifted_lattice_rate(const integrand_class& f, bool baker);
+// or singular f. A weighted periodization of order k (φ' vanishing to order m = k + 1): −(k + 2)
+// = −(m + 1) on analytic or smooth f (its Fourier coefficients decay as r(h)^−(m+1)), −1 on C0 f
+// (mixed first derivatives only), none tabulated for jumps or singular f (g ~ x^((m+1)α+m) tames
+// an endpoint singularity, but no rate is proven here).
+theoretical_rate shifted_lattice_rate(const integrand_class& f, const lattice_periodizing& p);
 
 // A scrambled Sobol' set that is no net: N ≠ 2^m, or the first point dropped. Smooth f: −1
 // ([Owen 2022]); otherwise no tabulated rate.

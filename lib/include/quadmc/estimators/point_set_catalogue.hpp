@@ -31,6 +31,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace quadmc {
 
@@ -56,9 +57,17 @@ enum class randomization {
 std::string_view to_string(randomization r) noexcept;
 std::optional<randomization> parse_randomization(std::string_view name) noexcept;
 
-// The lattice's periodization: none, or the baker's (tent) transform.
-enum class periodization { none, baker };
+// The lattice's periodization (docs/theory.md#lattice-periodizations): none; the baker's (tent)
+// map of the points, which preserves the uniform measure; or a periodizing change of variables
+// ∫f = ∫f(φ(x))∏φ'(x_j)dx (sampling/periodizing_transforms.hpp), which weights each point by ∏φ'
+// and so applies only to the lattice's sample mean (monte_carlo), not to its points, importance
+// or irradiance estimators.
+enum class periodization { none, baker, c0, c1, c1sin, c2sin, c3sin };
 std::string_view to_string(periodization p) noexcept;
+// Whether p weights the points by a Jacobian (c0 … c3sin) rather than moving them (none, baker).
+constexpr bool is_weighted(periodization p) noexcept {
+  return p != periodization::none && p != periodization::baker;
+}
 
 // A set's configuration beyond (s, N, seed, stream). Sets without options ignore it, so the
 // default leaves every existing set's bits as they were.
@@ -83,8 +92,15 @@ struct point_set_option {
   std::span<const std::string_view> choices;  // empty: a flag
   std::string_view flag_label;                // a flag set to true: the default label's suffix
   bool integer = false;                       // choices are integers (decimal text)
+  // The choices that weight the points instead of moving them (the lattice's c0 … c3sin): valid
+  // for the set's sample mean (the methods), refused by checked_options, whose callers want
+  // equal-weight points.
+  std::span<const std::string_view> weighted_choices = {};
 
   bool is_flag() const noexcept { return choices.empty(); }
+  // The choices that give equal-weight points (all but weighted_choices), in order: what
+  // `quadmc points` and the Python module's point_sets() list.
+  std::vector<std::string_view> point_choices() const;
 };
 
 // The values given for a set's options, one per entry of its `options` (same order): the chosen
@@ -98,7 +114,7 @@ enum class rate_basis {
   scrambled_net,    // Owen's rates for a scrambled (t, m, s)-net (docs/theory.md#scrambled-nets)
   broken_net,       // a net's points without the net property: `note` says why
   low_discrepancy,  // Koksma–Hlawka with the set's star discrepancy: `note`, `source`
-  shifted_lattice,  // a randomly shifted rank-1 lattice; `baker`: periodized by the tent map
+  shifted_lattice,  // a randomly shifted rank-1 lattice, periodized as `periodization` says
   unproven,         // no rate proven: `note`, `source`
   // An order-α digital net by interlacing (`interlacing` = α ≥ 2), Owen-scrambled before
   // interlacing (`scrambled`) or deterministic/digitally shifted (docs/theory.md#interlaced-nets)
@@ -108,7 +124,14 @@ struct point_set_theory {
   rate_basis basis = rate_basis::unproven;
   std::string note;  // scrambled_net, shifted_lattice: a prefix to the block's own note, if any
   std::string_view source;
-  bool baker = false;
+  // shifted_lattice (docs/theory.md#lattice-periodizations): how the integrand is made periodic
+  // — the periodization's name; the order k to which the integrand the rule sees has periodic
+  // derivatives (−1: not periodic; 0 for the baker's map and c0, m − 1 for a Jacobian vanishing
+  // to order m); and whether it is a weighted change of variables (c0 … c3sin) rather than a
+  // map of the points.
+  std::string_view periodization = "none";
+  int periodic_order = -1;
+  bool weighted = false;
   // The basis holds for s ≤ 2 only: a set padded across pairs of dimensions, whose pairs are
   // associated at random, has plain Monte Carlo's rate beyond (docs/theory.md#padded-jittered).
   bool padded = false;
@@ -295,8 +318,10 @@ struct named_option {
 };
 // The options `given` configure, every key and choice checked against the set's own: a key the
 // set lacks (given with any value) is invalid_argument naming the sets that have it, a choice it
-// lacks one naming the choices it has. Keys are checked before values. `parameter` is the name
-// an error gives a key (the command's --allow-any-n, the module's allow_any_n).
+// lacks one naming the choices it has, and a weighted choice (the lattice's c0 … c3sin: no
+// equal-weight points to give) one saying why and naming the choices its points take. Keys are
+// checked before values. `parameter` is the name an error gives a key (the command's --allow-any-n,
+// the module's allow_any_n).
 point_set_options checked_options(const point_set_entry& set, std::span<const named_option> given,
                                   std::string (*parameter)(std::string_view key));
 
