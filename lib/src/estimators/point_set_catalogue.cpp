@@ -125,7 +125,6 @@ constexpr auto sobol_randomization_names = names_of(sobol_randomizations);
 constexpr auto padded_sobol_randomization_names = names_of(padded_sobol_randomizations);
 constexpr auto halton_randomization_names = names_of(halton_randomizations);
 constexpr auto lattice_randomization_names = names_of(lattice_randomizations);
-constexpr std::array<std::string_view, 2> periodization_names{"none", "baker"};
 // Sobol's interlacing factors α, as the decimal texts of the integer key (point_set_option).
 constexpr std::array<std::string_view, max_interlacing> interlacing_names{"1", "2", "3"};
 // The randomizations an interlaced net (α > 1) has: those whose theory carries over to the

@@ -124,6 +124,10 @@ class point_set_method final : public method {
   theoretical_rate theory(const integrand_class& f) const override { return theory_(f); }
 
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
+  bool shares_chunks_at(cell_control control) const override {
+    return control == cell_control::tolerance ? stopping_shares_chunks(stopping_, *set_)
+                                              : shares_chunks();
+  }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     if (cell.control == cell_control::tolerance) {

@@ -153,6 +153,10 @@ class qmc_method final : public method {
   }
 
   bool shares_chunks() const override { return sample_mean_shares_chunks; }
+  bool shares_chunks_at(cell_control control) const override {
+    return control == cell_control::tolerance ? stopping_shares_chunks(*options_.stopping, *set_)
+                                              : shares_chunks();
+  }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {
     if (cell.control == cell_control::tolerance) {

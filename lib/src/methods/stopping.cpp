@@ -1,6 +1,8 @@
 // The `stopping` key of the sample-mean methods and a cell run by its rule (stopping.hpp).
 #include "stopping.hpp"
 
+#include "families.hpp"
+
 #include "quadmc/core/rng.hpp"
 
 #include <fmt/format.h>
@@ -29,6 +31,16 @@ bool is_random(const point_set_entry& set, const point_set_options& o) {
   return !r || *r != randomization::none;
 }
 
+// The doubling rules draw the lattice's points in radical-inverse order themselves; the weighted
+// periodizations (docs/theory.md#lattice-periodizations) are a change of variables of the
+// fixed-size sample mean that they do not apply.
+std::string weighted_problem(const point_set_options& o) {
+  return fmt::format(
+      "periodization = \"{}\" weights each point by ∏φ', which the doubling rules do not apply "
+      "to the lattice they extend: use periodization = \"none\" or \"baker\"",
+      to_string(o.periodic));
+}
+
 // Why `rule` cannot run on the set with these options; empty when it can.
 std::string rule_problem(stopping_rule rule, const point_set_entry& set,
                          const point_set_options& o) {
@@ -42,6 +54,7 @@ std::string rule_problem(stopping_rule rule, const point_set_entry& set,
             set.name);
       }
       if (!is_random(set, o)) return "randomization = \"none\" leaves nothing to replicate";
+      if (is_weighted(o.periodic)) return weighted_problem(o);
       return {};
     case stopping_rule::guaranteed:
       if (set.coefficients == coefficient_transform::walsh) {
@@ -61,6 +74,7 @@ std::string rule_problem(stopping_rule rule, const point_set_entry& set,
       }
       if (set.coefficients == coefficient_transform::fourier) {
         if (!is_random(set, o)) return "the guaranteed lattice rule needs the random shift";
+        if (is_weighted(o.periodic)) return weighted_problem(o);
         return {};
       }
       if (own && set.extensible()) return {};  // independent points: Berry–Esseen
@@ -256,9 +270,15 @@ sizing stopping_sizing(const stopping_choice& c, const point_set_entry& set,
   return {cell_size{budget, 0, 0, 0}, {}};
 }
 
+bool stopping_shares_chunks(const stopping_choice& c, const point_set_entry& set) {
+  return c.rule && *c.rule != stopping_rule::replicates && !net_rule(c, set) &&
+         sample_mean_shares_chunks;
+}
+
 repetition_result run_stopping(const stopping_choice& c, const point_set_entry& set,
                                const point_set_options& o, const method_cell& cell,
                                const run_context& context) {
+  if (!c.rule) throw invalid_argument("control", "tolerance", c.why_none);
   const std::uint64_t budget = cell.size.evaluations;
   const std::size_t s = cell.function.dimension();
   stopped_estimate e;

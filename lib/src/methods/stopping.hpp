@@ -78,6 +78,11 @@ stopping_choice read_stopping(option_reader& r, const point_set_entry& set,
 sizing stopping_sizing(const stopping_choice& c, const point_set_entry& set,
                        const point_set_options& options, std::uint64_t budget, std::size_t s);
 
+// Whether a cell to a tolerance shares its chunks between the processes of a split cell: the
+// two-stage rules run the set's sample mean, which does; the doubling rules keep every value
+// (sample_values.hpp), computed whole on every process.
+bool stopping_shares_chunks(const stopping_choice& c, const point_set_entry& set);
+
 // One repetition of a cell to cell.tolerance: value, evaluations spent, and the claim as its
 // error estimate.
 repetition_result run_stopping(const stopping_choice& c, const point_set_entry& set,

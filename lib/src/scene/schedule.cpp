@@ -47,7 +47,8 @@ std::string cells_csv(const plan& p, std::span<const cell_placement> placement) 
 bool cell_shares_chunks(const plan& p, std::size_t index) {
   require(index < p.cells.size(), "cell index", index,
           fmt::format("a cell of the plan (it has {})", p.cells.size()));
-  return p.source.methods[p.cells[index].method].configured->shares_chunks();
+  const plan_cell& cell = p.cells[index];
+  return p.source.methods[cell.method].configured->shares_chunks_at(cell.control);
 }
 
 cost_probes choose_cost_probes(const plan& p) {

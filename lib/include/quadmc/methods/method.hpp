@@ -170,6 +170,10 @@ class method {
   // tests/methods/method_test.cpp runs every registered method under a two-process exchange and
   // counts each process's evaluations, so a declaration that disagrees with its kernel fails there.
   virtual bool shares_chunks() const { return false; }
+  // The same for its cells under `control`: by default shares_chunks(). A cell run to a
+  // tolerance by a rule that keeps every value (estimators/sample_values.hpp) computes them all
+  // on every process, whatever the method's fixed-size kernel does.
+  virtual bool shares_chunks_at(cell_control) const { return shares_chunks(); }
 
   // Checks, before any work, every input a cell of this size in s dimensions would read over
   // its repetitions (the point files of methods/external.cpp); throws invalid_argument naming
