@@ -20,37 +20,58 @@
 
 namespace quadmc {
 
+// f's box as the estimators use it: checked against the points' dimension (finite, upper >
+// lower on every axis), its volume, and the map of unit-cube points onto it, skipped for the
+// unit cube itself (0 + 1·u = u exactly). One definition for every estimator of f's values
+// (monte_carlo, periodized_monte_carlo.hpp, sample_values.hpp), so they map alike.
+class box_map {
+ public:
+  box_map(const integrand_info& info, std::size_t s, std::size_t point_dimension)
+      : s_(s), lower_(info.domain.lower), width_(s) {
+    require(point_dimension == s, "point set dimension", point_dimension,
+            "the integrand's dimension " + std::to_string(s));
+    const box& domain = info.domain;
+    require(domain.dimension() == s, "integrand domain dimension", domain.dimension(),
+            "the integrand's dimension " + std::to_string(s));
+    for (std::size_t j = 0; j < s; ++j) {
+      width_[j] = domain.upper[j] - domain.lower[j];
+      require(std::isfinite(width_[j]) && width_[j] > 0.0, "integrand domain width", width_[j],
+              "a finite box with upper > lower on every axis");
+      unit_ &= lower_[j] == 0.0 && width_[j] == 1.0;
+    }
+    volume_ = domain.volume();
+  }
+
+  double volume() const noexcept { return volume_; }
+  // x (row-major points of the unit cube) onto the box, in place.
+  void apply(std::span<double> x) const noexcept {
+    if (unit_) return;
+    for (std::size_t i = 0; i < x.size() / s_; ++i) {
+      for (std::size_t j = 0; j < s_; ++j) x[i * s_ + j] = lower_[j] + width_[j] * x[i * s_ + j];
+    }
+  }
+
+ private:
+  std::size_t s_;
+  std::vector<double> lower_;
+  std::vector<double> width_;
+  double volume_ = 1.0;
+  bool unit_ = true;
+};
+
 template <integrand F, point_set P>
 estimate monte_carlo(const F& f, const P& points, unsigned threads = 1) {
   const integrand_info info = f.info();
   const std::size_t s = f.dimension();
-  require(points.dimension() == s, "point set dimension", points.dimension(),
-          "the integrand's dimension " + std::to_string(s));
-  const box& domain = info.domain;
-  require(domain.dimension() == s, "integrand domain dimension", domain.dimension(),
-          "the integrand's dimension " + std::to_string(s));
-  std::vector<double> lower = domain.lower;
-  std::vector<double> width(s);
-  for (std::size_t j = 0; j < s; ++j) {
-    width[j] = domain.upper[j] - domain.lower[j];
-    require(std::isfinite(width[j]) && width[j] > 0.0, "integrand domain width", width[j],
-            "a finite box with upper > lower on every axis");
-  }
-  const double volume = domain.volume();
-  // The unit cube needs no map (0 + 1·u = u exactly), so its points go straight to f.
-  bool unit_box = true;
-  for (std::size_t j = 0; j < s; ++j) unit_box &= lower[j] == 0.0 && width[j] == 1.0;
+  const box_map to_box(info, s, points.dimension());
   const auto values = [&](std::uint64_t, std::span<double> x, std::span<double> y) {
-    if (!unit_box) {
-      for (std::size_t i = 0; i < y.size(); ++i) {
-        for (std::size_t j = 0; j < s; ++j) x[i * s + j] = lower[j] + width[j] * x[i * s + j];
-      }
-    }
+    to_box.apply(x);
     f.evaluate(std::span<const double>(x), y);
     check_finite_batch(info.name, x, y, s);
   };
   estimate e = sample_mean(points, threads, values, info.evaluation_block);
   // F = vol·mean(f): the volume scales the estimate once instead of every sample.
+  const double volume = to_box.volume();
   e.value *= volume;
   e.std_error *= volume;
   e.variance *= volume * volume;

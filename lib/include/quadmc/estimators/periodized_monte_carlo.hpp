@@ -16,6 +16,7 @@
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/estimators/estimate.hpp"
+#include "quadmc/estimators/monte_carlo.hpp"
 #include "quadmc/estimators/sample_mean.hpp"
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/sampling/periodizing_transforms.hpp"
@@ -32,21 +33,8 @@ template <periodizing_transform T, integrand F, point_set P>
 estimate periodized_monte_carlo(const F& f, const P& points, unsigned threads = 1) {
   const integrand_info info = f.info();
   const std::size_t s = f.dimension();
-  require(points.dimension() == s, "point set dimension", points.dimension(),
-          "the integrand's dimension " + std::to_string(s));
-  const box& domain = info.domain;
-  require(domain.dimension() == s, "integrand domain dimension", domain.dimension(),
-          "the integrand's dimension " + std::to_string(s));
-  std::vector<double> lower = domain.lower;
-  std::vector<double> width(s);
-  for (std::size_t j = 0; j < s; ++j) {
-    width[j] = domain.upper[j] - domain.lower[j];
-    require(std::isfinite(width[j]) && width[j] > 0.0, "integrand domain width", width[j],
-            "a finite box with upper > lower on every axis");
-  }
-  const double volume = domain.volume();
-  bool unit_box = true;
-  for (std::size_t j = 0; j < s; ++j) unit_box &= lower[j] == 0.0 && width[j] == 1.0;
+  const box_map to_box(info, s, points.dimension());
+  const double volume = to_box.volume();
   const auto values = [&](std::uint64_t, std::span<double> x, std::span<double> y) {
     // The weights of one batch on the stack; an integrand that asks for blocks of several
     // batches per call (integrand_info::evaluation_block, a call that costs microseconds) gets
@@ -59,11 +47,7 @@ estimate periodized_monte_carlo(const F& f, const P& points, unsigned threads = 
       weight = on_heap;
     }
     periodize_points<T>(x, s, weight);
-    if (!unit_box) {
-      for (std::size_t i = 0; i < y.size(); ++i) {
-        for (std::size_t j = 0; j < s; ++j) x[i * s + j] = lower[j] + width[j] * x[i * s + j];
-      }
-    }
+    to_box.apply(x);
     f.evaluate(std::span<const double>(x), y);
     check_finite_batch(info.name, x, y, s);
     for (std::size_t i = 0; i < y.size(); ++i) y[i] *= weight[i];

@@ -17,6 +17,7 @@
 #include "quadmc/core/chunk_exchange.hpp"
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/parallel_reduce.hpp"
+#include "quadmc/estimators/monte_carlo.hpp"
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/sampling/point_set.hpp"
 
@@ -35,18 +36,8 @@ void sample_values(const F& f, const P& points, std::uint64_t first, std::span<d
                    unsigned threads, bool gray_to_natural = false) {
   const integrand_info info = f.info();
   const std::size_t s = f.dimension();
-  require(points.dimension() == s, "point set dimension", points.dimension(),
-          "the integrand's dimension " + std::to_string(s));
-  const box& domain = info.domain;
-  const double volume = domain.volume();
-  std::vector<double> width(s);
-  bool unit_box = true;
-  for (std::size_t j = 0; j < s; ++j) {
-    width[j] = domain.upper[j] - domain.lower[j];
-    require(std::isfinite(width[j]) && width[j] > 0.0, "integrand domain width", width[j],
-            "a finite box with upper > lower on every axis");
-    unit_box &= domain.lower[j] == 0.0 && width[j] == 1.0;
-  }
+  const box_map to_box(info, s, points.dimension());
+  const double volume = to_box.volume();
   if (gray_to_natural) {
     const std::uint64_t n = y.size();
     require(std::has_single_bit(n) && (first == 0 || first == n), "run of points",
@@ -62,13 +53,7 @@ void sample_values(const F& f, const P& points, std::uint64_t first, std::span<d
         for_each_batch(layout, c, [&](std::uint64_t offset, std::size_t count) {
           const std::span<double> batch(x.data(), count * s);
           points.generate(first + offset, batch);
-          if (!unit_box) {
-            for (std::size_t i = 0; i < count; ++i) {
-              for (std::size_t j = 0; j < s; ++j) {
-                batch[i * s + j] = domain.lower[j] + width[j] * batch[i * s + j];
-              }
-            }
-          }
+          to_box.apply(batch);
           const std::span<double> values(v.data(), count);
           f.evaluate(std::span<const double>(batch), values);
           check_finite_batch(info.name, batch, values, s);
