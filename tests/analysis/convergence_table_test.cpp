@@ -177,6 +177,39 @@ TEST(ConvergenceTable, MonteCarloSeriesUsesRmseAndCoverage) {
   }
 }
 
+// Four repetitions per N with errors ±e(N) (two each sign): RMSE = e(N) exactly.
+convergence_series scrambled_net_series(std::size_t s, double (*error)(double)) {
+  convergence_series series = series_of("genz_gaussian", s, "sobol", smoothness::analytic, 1.0,
+                                        scrambled_net_rate({smoothness::analytic, s}));
+  for (int k = 10; k <= 20; k += 2) {
+    const double n = std::ldexp(1.0, k);
+    convergence_cell cell = cell_at(static_cast<std::uint64_t>(n), {});
+    for (double sign : {1.0, -1.0, 1.0, -1.0}) {
+      cell.repetitions.push_back(
+          repetition(1.0 + sign * error(n), nan, static_cast<std::uint64_t>(n), 1e-6));
+    }
+    series.cells.push_back(cell);
+  }
+  return series;
+}
+
+TEST(ConvergenceTable, AScrambledNetsLogFactorIsAComputedReason) {
+  // s = 16: the bound N^−3/2·(log N)^7.5 falls with the local slope
+  // −1.5 + 7.5·ln(20/10)/(10·ln 2) = −0.75 over N = 2^10 … 2^20. A ladder that follows the bound
+  // fits that slope, not −1.5: pre_asymptotic, with the local slope in the reason.
+  const auto bound = [](double n) { return 1e-2 * std::pow(n, -1.5) * std::pow(std::log(n), 7.5); };
+  const convergence_table table = analyse_convergence(scrambled_net_series(16, bound));
+  EXPECT_NEAR(table.fit.slope, -0.75, 0.02);
+  EXPECT_EQ(table.verdict, slope_verdict::pre_asymptotic) << table.verdict_reason;
+  EXPECT_NE(table.verdict_reason.find("local slope -0.750"), std::string::npos)
+      << table.verdict_reason;
+  // N^−1/2 is no log factor's doing: it stays a finding.
+  const auto root_n = [](double n) { return 1e-2 / std::sqrt(n); };
+  const convergence_table slow = analyse_convergence(scrambled_net_series(16, root_n));
+  EXPECT_EQ(slow.verdict, slope_verdict::shallower) << slow.verdict_reason;
+  EXPECT_NE(slow.verdict_reason.find("finding"), std::string::npos);
+}
+
 TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
   convergence_series series = midpoint_series();
   series.cells.resize(2);  // N = 2^28 and 2^27: both at the floor, nothing to fit

@@ -282,6 +282,28 @@ void judge_series(convergence_table& table, const convergence_series& series,
         100.0 * options.verdict_tolerance, from_text, asymptotic_text, slope_text(table.fit));
     return;
   }
+  // A bound with a log factor, N^p·(log N)^q, falls over the fitted range N₁ … N₂ with the
+  // local slope p + q·(ln ln N₂ − ln ln N₁)/(ln N₂ − ln N₁): a finite ladder measures that, not p
+  // (docs/theory.md#pre-asymptotic-ladders). The fitted slope agreeing with it is a computed
+  // reason; one that does not stays a finding.
+  if (!prediction && table.theory.log_power > 0.0 && fit_n.size() >= 2 &&
+      *std::min_element(fit_n.begin(), fit_n.end()) > 1.0) {
+    const double n1 = *std::min_element(fit_n.begin(), fit_n.end());
+    const double n2 = *std::max_element(fit_n.begin(), fit_n.end());
+    const double local = *theory + table.theory.log_power *
+                                       (std::log(std::log(n2)) - std::log(std::log(n1))) /
+                                       (std::log(n2) - std::log(n1));
+    if (judge_slope(table.fit, local, options.verdict_tolerance) == slope_verdict::agrees) {
+      table.verdict = slope_verdict::pre_asymptotic;
+      table.verdict_reason = fmt::format(
+          "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the fitted "
+          "N = {:.0f} … {:.0f}, and the slope {} agrees with it within max(CI half-width, "
+          "{:.0f}%): its log factor, not another rate",
+          *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit),
+          100.0 * options.verdict_tolerance);
+      return;
+    }
+  }
   table.verdict = slope;
   std::string why;
   if (!prediction) {

@@ -143,7 +143,7 @@ theoretical_rate scrambled_net_rate(const integrand_class& f) {
     case smoothness::smooth:
       return {-1.5,
               fmt::format("scrambled (t,m,s)-net, N = 2^m: N^-3/2 up to (log N)^{}", (s - 1) / 2),
-              "docs/theory.md#scrambled-nets; [Owen 1997b]"};
+              "docs/theory.md#scrambled-nets; [Owen 1997b]", (s - 1) / 2};
     case smoothness::c0:
       // In 1D a scrambled (0, m, 1)-net is one uniform point per interval of 2^−m: jittered.
       if (f.s == 1) {

@@ -30,7 +30,9 @@
 //   pre_asymptotic   the predicted curve agrees with the measured points, its local slope
 //                    approaches the asymptotic one only from some N on, and the slope fitted
 //                    from there agrees (or the ladder ends before it): the whole-ladder slope
-//                    measured the regime before the leading term takes over;
+//                    measured the regime before the leading term takes over; or the proven
+//                    bound has a log factor (theoretical_rate::log_power) and the slope agrees
+//                    with the bound's local slope over the fitted range;
 //   at_floor         the ladder reached its rounding floor (the precision f is evaluated in and
 //                    the method's accumulator: rounding_floor.hpp) before three points could be
 //                    fitted.

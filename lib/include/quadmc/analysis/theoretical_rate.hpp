@@ -31,6 +31,10 @@ struct theoretical_rate {
   std::optional<double> slope;  // empty: no finite algebraic slope (exponential) or no entry
   std::string note;             // the assumption or why there is no slope
   std::string source;           // where the rate comes from
+  // q of a proven bound N^slope·(log N)^q (a scrambled net's (s − 1)/2); 0: none stated. Over a
+  // finite ladder such a bound falls with the local slope slope + q·Δln ln N/Δln N, which the
+  // verdict takes as a computed reason (docs/theory.md#pre-asymptotic-ladders).
+  double log_power = 0.0;
 };
 
 // What a rate depends on besides the method.
