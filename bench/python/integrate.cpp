@@ -281,6 +281,11 @@ py::dict integrate(const py::object& f, const std::string& method, const py::obj
   const std::size_t dimension = integrand.dimension();
   // Every check before the first evaluation: what the method cannot run here, then f, then n.
   const quadmc::cell_control control = control_of(*m);
+  // Keys of another control (a stopping rule's, which only a scene's control = "tolerance"
+  // reads) would otherwise be accepted and ignored.
+  if (const auto no = m->refuses(control)) {
+    throw quadmc::invalid_argument(fmt::format("invalid {}: {}", no->key, no->message));
+  }
   refuse_rendering_only(*m, dimension);
   const quadmc::integrand_traits traits{integrand.info().name, dimension, false};
   if (const auto why = m->incompatibility(traits)) {

@@ -184,6 +184,18 @@ def test_an_irradiance_method_is_refused_by_name_before_any_work(method, kind):
         assert f.calls == 0
 
 
+def test_a_stopping_rules_key_is_refused_without_a_tolerance():
+    # quadmc.integrate runs a method at n; `stopping` and its parameters belong to a scene's
+    # control = "tolerance", so they are refused by name instead of being ignored.
+    f = Counting()
+    with pytest.raises(ValueError) as raised:
+        quadmc.integrate(f, "sobol", 1024, s=2, stopping="replicates")
+    message = str(raised.value)
+    assert message.startswith("invalid stopping: expected only with control = \"tolerance\""), \
+        message
+    assert f.calls == 0
+
+
 @pytest.mark.parametrize("method", [m["name"] for m in quadmc.methods()])
 def test_every_method_runs_or_is_refused_before_any_work(method):
     # With its default options on a callable in s = 2 at N = 1024: a method either runs, or raises
