@@ -46,6 +46,17 @@ inline constexpr std::uint64_t max_lattice_points = std::uint64_t{1} << 20;
 // The generating vector z_1 … z_3600 (z_1 = 1), from QuantLib's LatticeRule::getRule(D).
 std::span<const std::uint32_t> lattice_generating_vector();
 
+// The sizes the generating vector serves, for the lattice and its radical-inverse sequence alike:
+// s ≤ 3600 and N = 2^m ≤ 2^20. Returns s.
+inline std::size_t require_lattice_size(std::size_t s, std::uint64_t n) {
+  require_point_set_size(s, n);
+  require(s <= max_lattice_dimension, "dimension s", s,
+          "s ≤ 3600 (the dimensions of the Cools–Kuo–Nuyens generating vector)");
+  require(std::has_single_bit(n) && n <= max_lattice_points, "number of points N", n,
+          "a power of two N = 2^m ≤ 2^20 (the embedded lattice rules of the generating vector)");
+  return s;
+}
+
 // The lattice coordinate itself.
 struct no_periodization {
   static constexpr detail::lattice_periodization kind = detail::lattice_periodization::none;
@@ -66,7 +77,7 @@ class rank1_lattice_points {
  public:
   rank1_lattice_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
                        std::uint64_t stream, bool shifted = true)
-      : s_(checked_dimension(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
+      : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j] & (n_ - 1);
     if (shifted) philox_stream(seed, stream).fill_uniform(0, shift_);
@@ -115,15 +126,6 @@ class rank1_lattice_points {
         k = (k + z) & mask;
       }
     }
-  }
-
-  static std::size_t checked_dimension(std::size_t s, std::uint64_t n) {
-    require_point_set_size(s, n);
-    require(s <= max_lattice_dimension, "dimension s", s,
-            "s ≤ 3600 (the dimensions of the Cools–Kuo–Nuyens generating vector)");
-    require(std::has_single_bit(n) && n <= max_lattice_points, "number of points N", n,
-            "a power of two N = 2^m ≤ 2^20 (the embedded lattice rules of the generating vector)");
-    return s;
   }
 
   std::size_t s_;

@@ -43,12 +43,7 @@ class rank1_lattice_sequence {
   // n: the points it may be asked for (a power of two ≤ 2^20, the generating vector's range).
   rank1_lattice_sequence(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
                          std::uint64_t stream, bool shifted = true)
-      : s_(dimension), n_(n), shift_(dimension, 0.0), z_(dimension) {
-    require_point_set_size(dimension, n);
-    require(dimension <= max_lattice_dimension, "dimension s", dimension,
-            "s ≤ 3600 (the dimensions of the Cools–Kuo–Nuyens generating vector)");
-    require(std::has_single_bit(n) && n <= max_lattice_points, "number of points N", n,
-            "a power of two N = 2^m ≤ 2^20 (the embedded lattice rules of the generating vector)");
+      : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j];
     if (shifted) philox_stream(seed, stream).fill_uniform(0, shift_);
