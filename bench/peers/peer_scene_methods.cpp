@@ -231,13 +231,14 @@ class gsl_method final : public method {
         return root_n_rate(f, "GSL plain Monte Carlo: sigma/sqrt(N)",
                            "docs/theory.md#plain-monte-carlo");
       case gsl_kind::miser:
-        return root_n_rate(f, "GSL MISER: recursive stratification lowers sigma, not the rate",
-                           "docs/theory.md#plain-monte-carlo; [Press & Farrar 1990]");
+        return adaptive_monte_carlo_rate(
+            f, "GSL MISER: recursive stratification lowers sigma, not the rate",
+            "docs/theory.md#plain-monte-carlo; [Press & Farrar 1990]");
       case gsl_kind::vegas:
         break;
     }
-    return root_n_rate(f, "GSL VEGAS: sigma/sqrt(N) with the adapted density's sigma",
-                       "docs/theory.md#vegas; [Lepage 1978]");
+    return adaptive_monte_carlo_rate(f, "GSL VEGAS: sigma/sqrt(N) with the adapted density's sigma",
+                                     "docs/theory.md#vegas; [Lepage 1978]");
   }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {

@@ -210,6 +210,52 @@ TEST(ConvergenceTable, AScrambledNetsLogFactorIsAComputedReason) {
   EXPECT_NE(slow.verdict_reason.find("finding"), std::string::npos);
 }
 
+// An adaptive method's ladder: four repetitions per N with errors ±e(N) (RMSE = e(N) exactly),
+// each reporting the error estimate claim(N).
+convergence_series adaptive_series(double (*error)(double), double (*claim)(double)) {
+  convergence_series series = series_of(
+      "genz_corner_peak", 2, "vegas", smoothness::analytic, 1.0,
+      adaptive_monte_carlo_rate({smoothness::analytic, 2}, "σ/√N", "docs/theory.md#vegas"));
+  for (int k = 10; k <= 20; k += 2) {
+    const double n = std::ldexp(1.0, k);
+    convergence_cell cell = cell_at(static_cast<std::uint64_t>(n), {});
+    for (double sign : {1.0, -1.0, 1.0, -1.0}) {
+      repetition_result r =
+          repetition(1.0 + sign * error(n), claim(n), static_cast<std::uint64_t>(n), 1e-6);
+      r.error_estimate = claim(n);
+      cell.repetitions.push_back(r);
+    }
+    series.cells.push_back(cell);
+  }
+  return series;
+}
+
+TEST(ConvergenceTable, AnAdaptiveMethodsReportedVarianceIsAComputedReason) {
+  // σ_N = N^(−0.4) while it adapts: the error falls as N^(−0.9), and so does the σ̂/√N it
+  // reports. Steeper than −1/2, explained by its own variance: pre_asymptotic, with the
+  // reported slope and σ̂ at both ends in the reason.
+  const auto adapting = [](double n) { return std::pow(n, -0.9); };
+  const convergence_table table = analyse_convergence(adaptive_series(adapting, adapting));
+  EXPECT_NEAR(table.fit.slope, -0.9, 1e-9);
+  EXPECT_EQ(table.verdict, slope_verdict::pre_asymptotic) << table.verdict_reason;
+  EXPECT_NE(table.verdict_reason.find("adapting: the error σ̂/√N it reports falls with slope "
+                                      "-0.900 over the fitted N = 1024 … 1048576"),
+            std::string::npos)
+      << table.verdict_reason;
+  EXPECT_NE(table.verdict_reason.find("from 0.0625 to 0.00391"), std::string::npos)
+      << table.verdict_reason;  // σ̂ = N^(−0.4) at N = 2^10 and 2^20
+  // The same error with a claim that stays at σ/√N: its variance does not explain the slope, a
+  // finding.
+  const auto root_n = [](double n) { return 1.0 / std::sqrt(n); };
+  const convergence_table unexplained = analyse_convergence(adaptive_series(adapting, root_n));
+  EXPECT_EQ(unexplained.verdict, slope_verdict::steeper) << unexplained.verdict_reason;
+  EXPECT_NE(unexplained.verdict_reason.find("finding"), std::string::npos);
+  // A method not marked adaptive gets no such reason from the same numbers.
+  convergence_series plain = adaptive_series(adapting, adapting);
+  plain.theory = root_n_rate({smoothness::analytic, 2}, "σ/√N", "docs/theory.md#plain-monte-carlo");
+  EXPECT_EQ(analyse_convergence(plain).verdict, slope_verdict::steeper);
+}
+
 TEST(ConvergenceTable, ShortLadderGivesNoFitNotAnError) {
   convergence_series series = midpoint_series();
   series.cells.resize(2);  // N = 2^28 and 2^27: both at the floor, nothing to fit

@@ -72,6 +72,13 @@ TEST(MonteCarloRates, RootNUnlessTheVarianceIsInfinite) {
   EXPECT_EQ(plain.note, "note");
   EXPECT_EQ(plain.source, "source");
   EXPECT_FALSE(root_n_rate(of(smoothness::singular, 1, -1.0), "n", "s").slope);
+  EXPECT_FALSE(plain.adaptive);
+  // An adaptive method's rate is the same −1/2, marked adaptive; with infinite variance it has
+  // no slope, and nothing to adapt towards.
+  const theoretical_rate adaptive = adaptive_monte_carlo_rate(of(smoothness::c0, 7), "n", "s");
+  EXPECT_EQ(*adaptive.slope, -0.5);
+  EXPECT_TRUE(adaptive.adaptive);
+  EXPECT_FALSE(adaptive_monte_carlo_rate(of(smoothness::singular, 1, -1.0), "n", "s").adaptive);
 }
 
 TEST(OnePointPerStratumRate, JitteredRates) {

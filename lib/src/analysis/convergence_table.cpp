@@ -128,7 +128,7 @@ std::optional<std::uint64_t> asymptotic_start(const convergence_table& table,
 // The slope verdict and its reason, with the prediction where one is confirmed.
 void judge_series(convergence_table& table, const convergence_series& series,
                   const analysis_options& options, const std::vector<double>& fit_n,
-                  const std::vector<double>& fit_error) {
+                  const std::vector<double>& fit_error, const std::vector<double>& fit_estimate) {
   const std::string where =
       fmt::format("{} / s = {} / {}", series.integrand, series.s, series.method);
   const std::optional<double> class_slope = series.theory.slope;
@@ -304,6 +304,31 @@ void judge_series(convergence_table& table, const convergence_series& series,
       return;
     }
   }
+  // An adaptive Monte Carlo method (VEGAS, MISER) reports σ̂_N/√N with the σ̂ of the density or
+  // strata it has adapted so far, and that σ̂ falls while it adapts: over a finite ladder its
+  // error falls faster (or, while a grid is still wrong, slower) than N^(−1/2), which holds only
+  // once σ̂ has settled (docs/theory.md#adaptive-monte-carlo-ladders). The slope of the estimate it
+  // reports, fitted over the same N, is then the computed reason; a measured slope that does not
+  // agree with it stays a finding.
+  if (table.theory.adaptive && fit_estimate.size() == fit_n.size() &&
+      std::all_of(fit_estimate.begin(), fit_estimate.end(),
+                  [](double e) { return std::isfinite(e) && e > 0.0; })) {
+    const power_law_fit reported = fit_power_law(fit_n, fit_estimate, options.confidence);
+    if (reported.ok() && judge_slope(table.fit, reported.slope, options.verdict_tolerance) ==
+                             slope_verdict::agrees) {
+      const double first_sigma = fit_estimate.front() * std::sqrt(fit_n.front());
+      const double last_sigma = fit_estimate.back() * std::sqrt(fit_n.back());
+      table.verdict = slope_verdict::pre_asymptotic;
+      table.verdict_reason = fmt::format(
+          "adapting: the error σ̂/√N it reports falls with slope {:.3f} over the fitted N = {:.0f} "
+          "… {:.0f} (its per-evaluation σ̂ from {:.3g} to {:.3g}), and the slope {} agrees with "
+          "it within max(CI half-width, {:.0f}%): its variance changes while it adapts, not "
+          "another rate",
+          reported.slope, fit_n.front(), fit_n.back(), first_sigma, last_sigma,
+          slope_text(table.fit), 100.0 * options.verdict_tolerance);
+      return;
+    }
+  }
   table.verdict = slope;
   std::string why;
   if (!prediction) {
@@ -451,7 +476,7 @@ convergence_table analyse_convergence(const convergence_series& series,
 
   // A row shares the floor flag of the ladder point that spent its evaluations; the table's
   // floor is then stated per row, like everything else in it.
-  std::vector<double> fit_n, fit_error;
+  std::vector<double> fit_n, fit_error, fit_estimate;  // fit_estimate: the method's own claims
   std::vector<bool> row_flags(table.rows.size(), false);
   for (std::size_t p = 0; p < ladder.size(); ++p) {
     const std::size_t end = p + 1 < ladder.size() ? ladder[p + 1] : table.rows.size();
@@ -468,6 +493,7 @@ convergence_table analyse_convergence(const convergence_series& series,
     if (!table.floor.flags[p]) {
       fit_n.push_back(evaluations[p]);
       fit_error.push_back(errors[p]);
+      fit_estimate.push_back(table.rows[ladder[p]].stats.error_estimate);
     }
   }
   if (table.floor.first) table.floor.first = ladder[*table.floor.first];
@@ -506,7 +532,7 @@ convergence_table analyse_convergence(const convergence_series& series,
                   table.envelope_ratio)
             : std::string("no point to judge against the envelope");
   } else {
-    judge_series(table, series, options, fit_n, fit_error);
+    judge_series(table, series, options, fit_n, fit_error, fit_estimate);
   }
   table.work_precision =
       in_series([&] { return work_precision(seconds, errors, options.error_targets); });

@@ -91,6 +91,13 @@ theoretical_rate root_n_rate(const integrand_class& f, std::string note, std::st
   return {-0.5, std::move(note), std::move(source)};
 }
 
+theoretical_rate adaptive_monte_carlo_rate(const integrand_class& f, std::string note,
+                                           std::string source) {
+  theoretical_rate rate = root_n_rate(f, std::move(note), std::move(source));
+  rate.adaptive = rate.slope.has_value();
+  return rate;
+}
+
 theoretical_rate sparse_grid_rate(const integrand_class& f) {
   (void)dimension_of(f);
   constexpr const char* source = "docs/theory.md#sparse-grid-rates; [Novak & Ritter 1996]";

@@ -33,14 +33,15 @@ class vegas_method final : public method {
     return {cell_size{N, 0, 0, 0}, {}};
   }
 
-  // The σ of an adapted density still falls as N^(−1/2) once the grid has converged; the
-  // adaptive stratification can make it fall faster in low s (one more reason the verdict may
-  // read "steeper").
+  // The σ of an adapted density still falls as N^(−1/2) once the grid has converged; while it
+  // adapts, and through the adaptive stratification in low s, it falls faster: the σ̂ it reports
+  // per cell is the verdict's computed reason then (theoretical_rate::adaptive).
   theoretical_rate theory(const integrand_class& f) const override {
-    return root_n_rate(f,
-                       "σ/√N with the adapted density's σ; adaptive stratification can be steeper "
-                       "in low s",
-                       "docs/theory.md#vegas; [Lepage 1978]; [Lepage 2021]");
+    return adaptive_monte_carlo_rate(
+        f,
+        "σ/√N with the adapted density's σ; adaptive stratification can be steeper "
+        "in low s",
+        "docs/theory.md#vegas; [Lepage 1978]; [Lepage 2021]");
   }
 
   repetition_result run(const method_cell& cell, const run_context& context) const override {

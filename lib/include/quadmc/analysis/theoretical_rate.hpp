@@ -35,6 +35,10 @@ struct theoretical_rate {
   // finite ladder such a bound falls with the local slope slope + q·Δln ln N/Δln N, which the
   // verdict takes as a computed reason (docs/theory.md#pre-asymptotic-ladders).
   double log_power = 0.0;
+  // An adaptive Monte Carlo method (VEGAS, MISER): N^(−1/2) holds once the variance of what it
+  // adapts has settled, and until then the error estimate it reports per cell predicts the slope,
+  // which the verdict takes as a computed reason (docs/theory.md#adaptive-monte-carlo-ladders).
+  bool adaptive = false;
 };
 
 // What a rate depends on besides the method.
@@ -62,6 +66,10 @@ std::optional<theoretical_rate> infinite_variance_rate(const integrand_class& f)
 // σ/√N: −1/2 for a Monte Carlo method of finite variance, with the method's note and source
 // (infinite variance first gives no slope).
 theoretical_rate root_n_rate(const integrand_class& f, std::string note, std::string source);
+
+// root_n_rate of an adaptive Monte Carlo method (theoretical_rate::adaptive).
+theoretical_rate adaptive_monte_carlo_rate(const integrand_class& f, std::string note,
+                                           std::string source);
 
 // A Smolyak sparse grid on nested rules (docs/theory.md#sparse-grid-rates): for bounded mixed
 // derivatives of order r the error is O(N^−r·(log N)^((s−1)(r+1))) [Novak & Ritter 1996], so the
