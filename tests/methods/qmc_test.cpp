@@ -6,6 +6,8 @@
 #include "method_error.hpp"
 #include "quadmc/analysis/power_law_fit.hpp"
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/rng.hpp"
+#include "quadmc/estimators/replicate_estimator.hpp"
 #include "quadmc/functions/catalogue.hpp"
 #include "quadmc/methods/registry.hpp"
 
@@ -412,6 +414,69 @@ TEST(QmcTheory, RatesOfTheTable) {
       make_method("sobol", {{"interlacing", 2}, {"randomization", "shift"}})
           ->theory(integrand_class{smoothness::smooth, 2});
   EXPECT_NE(shift.source.find("[Dick 2008]"), std::string::npos) << shift.source;
+}
+
+// replicate_estimator: N is spent on k randomizations of n = N/k points (n the largest 2^m the
+// set holds), the label says which, the error bars are the estimate's own, and the keys are
+// refused where they mean nothing, naming them.
+TEST(QmcReplicateEstimator, SizesLabelsAndRefusals) {
+  const auto median = make_method("sobol", {{"replicate_estimator", "median"}});
+  // 100000/11 = 9090 → n = 8192, 11·8192 evaluations.
+  EXPECT_EQ(median->size_for(100000, 2).size->evaluations, 11u * 8192u);
+  EXPECT_FALSE(median->size_for(10, 2).size) << "fewer evaluations than randomizations";
+  EXPECT_EQ(median->label_suffix(), "_median");
+  EXPECT_EQ(median->error_bars(), error_bars::own);
+  EXPECT_EQ(median->kind(), method_kind::randomized);
+  EXPECT_FALSE(median->shares_chunks()) << "k runs computed whole on every process";
+  const auto mean = make_method(
+      "halton", {{"replicate_estimator", "mean"}, {"replicate_count", 4.0}, {"points", 1000.0}});
+  EXPECT_EQ(mean->label_suffix(), "_mean4");
+  EXPECT_EQ(mean->explicit_sizes(3)[0].size->evaluations, 4000u) << "points: n of one of them";
+  EXPECT_EQ(make_method("sobol")->label_suffix(), "") << "absent: one randomization, as before";
+
+  const std::string even =
+      error_of("sobol", {{"replicate_estimator", "median"}, {"replicate_count", 10.0}});
+  EXPECT_NE(even.find("replicate_count"), std::string::npos) << even;
+  EXPECT_NE(even.find("odd k ≥ 3"), std::string::npos) << even;
+  const std::string alone = error_of("sobol", {{"replicate_count", 5.0}});
+  EXPECT_NE(alone.find("expected only with replicate_estimator"), std::string::npos) << alone;
+  const std::string fixed =
+      error_of("sobol", {{"replicate_estimator", "mean"}, {"randomization", "none"}});
+  EXPECT_NE(fixed.find("nothing to combine"), std::string::npos) << fixed;
+  EXPECT_NE(error_of("lattice", {{"replicate_estimator", "mode"}}).find("mean, median"),
+            std::string::npos);
+  const auto refusal = median->refuses(cell_control::tolerance);
+  ASSERT_TRUE(refusal);
+  EXPECT_EQ(refusal->key, "replicate_estimator");
+  EXPECT_FALSE(median->refuses(cell_control::fixed_size));
+}
+
+// One combined estimate is the median (or mean) of the k single runs of n points on the streams
+// stream_id({cell stream, r}) — the same values bit for bit — on any thread count, with its error
+// bar from replicate_estimator.hpp.
+TEST(QmcReplicateEstimator, CombinesTheSingleRunsOfItsStreams) {
+  const integrand_params p = gaussian_params(2);
+  const any_integrand f = make_integrand("genz_gaussian", p);
+  const auto one = make_method("sobol", {{"randomization", "lms_shift"}});
+  for (const char* how : {"mean", "median"}) {
+    const auto combined = make_method(
+        "sobol",
+        {{"randomization", "lms_shift"}, {"replicate_estimator", how}, {"replicate_count", 5.0}});
+    std::vector<double> singles;
+    for (std::uint64_t r = 0; r < 5; ++r) {
+      singles.push_back(run_once(*one, f, p, 1024, stream_id({7, r})).value);
+    }
+    const combined_replicates expected =
+        combine_replicates(singles, std::string(how) == "mean" ? replicate_estimator::mean
+                                                               : replicate_estimator::median);
+    for (unsigned threads : {1u, 3u}) {
+      const repetition_result got = run_once(*combined, f, p, 5 * 1024, 7, threads);
+      EXPECT_EQ(got.evaluations, 5u * 1024u) << how;
+      EXPECT_EQ(std::memcmp(&got.value, &expected.value, sizeof(double)), 0) << how << threads;
+      EXPECT_EQ(got.error_estimate, expected.error_estimate) << how;
+      EXPECT_GT(got.error_estimate, 0.0) << how;
+    }
+  }
 }
 
 }  // namespace

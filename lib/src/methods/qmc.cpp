@@ -18,11 +18,18 @@
 // independent randomization (its own Philox stream) and the cell's error estimate and coverage
 // come from their spread (error_bars::replicates, analysis/cell_statistics.hpp;
 // docs/theory.md#replicate-error-bars). A point set's σ̂²/N is never reported for these points.
+// With `replicate_estimator = "mean" | "median"` one estimate is instead the mean or the median
+// of `replicate_count` = k independent randomizations of n = N/k points each (n the largest
+// count the set holds there), with the error bar of estimators/replicate_estimator.hpp
+// (error_bars::own; docs/theory.md#replicate-estimators): N stays the evaluations spent, so a
+// ladder compares the combined estimate with one randomization of all N points.
 // Beside the error, cells of N ≤ 1024 carry the L2 discrepancies of their points
 // (sampling/discrepancy.hpp), computed outside the timed run (measure_points).
 #include "families.hpp"
 #include "stopping.hpp"
 
+#include "quadmc/core/rng.hpp"
+#include "quadmc/estimators/replicate_estimator.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
 
 #include <fmt/format.h>
@@ -45,11 +52,18 @@ namespace {
 constexpr std::uint64_t discrepancy_max_points = 1024;
 constexpr std::uint64_t discrepancy_max_pair_coordinates = std::uint64_t{1} << 24;
 
+// k of replicate_estimator when replicate_count is not given: odd, for the median's middle value.
+// [Pan & Owen 2023] let k grow like m = log2 n for their rate; 11 covers the ladders up to
+// n = 2^11 in that sense, and a user with a longer ladder sets replicate_count.
+constexpr std::uint64_t default_replicate_count = 11;
+
 struct qmc_options {
   point_set_options set;
   std::string label_suffix;  // the set's options given, in its order (point_set_option)
   std::vector<std::uint64_t> points;
-  std::optional<stopping_choice> stopping;  // the sets that may run to a tolerance
+  std::optional<stopping_choice> stopping;     // the sets that may run to a tolerance
+  std::optional<replicate_estimator> combine;  // one estimate from k randomizations
+  std::uint64_t replicate_count = default_replicate_count;
 };
 
 // A building block's rate with the set's own words before its note.
@@ -69,14 +83,29 @@ class qmc_method final : public method {
   }
 
   quadmc::error_bars error_bars() const override {
+    // A combined estimate carries its own error bar (replicate_estimator.hpp).
+    if (options_.combine) return quadmc::error_bars::own;
     return error_bars_of(set_->errors_with(options_.set));
   }
 
   std::string label_suffix() const override {
-    return options_.label_suffix + (options_.stopping ? options_.stopping->label_suffix() : "");
+    std::string combined;
+    if (options_.combine) {
+      combined = options_.replicate_count == default_replicate_count
+                     ? fmt::format("_{}", to_string(*options_.combine))
+                     : fmt::format("_{}{}", to_string(*options_.combine), options_.replicate_count);
+    }
+    return options_.label_suffix + combined +
+           (options_.stopping ? options_.stopping->label_suffix() : "");
   }
 
   std::optional<control_refusal> refuses(cell_control control) const override {
+    if (options_.combine && control == cell_control::tolerance) {
+      return control_refusal{
+          "replicate_estimator",
+          "expected only at fixed N (the stopping rules combine their randomizations "
+          "themselves), got it with control = \"tolerance\""};
+    }
     return options_.stopping ? options_.stopping->refuses(control) : std::nullopt;
   }
 
@@ -108,24 +137,49 @@ class qmc_method final : public method {
       return {std::nullopt, fmt::format("s = {} is above the {} points' {} dimensions", s,
                                         set_->name, set_->max_dimension)};
     }
+    // A combined estimate spends N on k randomizations of N/k points each.
+    const std::uint64_t k = combined_count();
+    if (N < k) {
+      return {std::nullopt, fmt::format("N = {} is below replicate_count = {} randomizations of "
+                                        "one point",
+                                        N, k)};
+    }
     const point_count counts = options_.set.allow_any_n ? point_count::any : set_->counts;
-    const std::uint64_t n = largest_point_count(counts, N, s).points;
+    const std::uint64_t n = largest_point_count(counts, N / k, s).points;
     const std::uint64_t most = max_point_count(*set_, options_.set);
     if (n > most) {
-      return {std::nullopt,
-              fmt::format("N = {} is above the largest {} set, {} points", N, set_->name, most)};
+      return {std::nullopt, fmt::format("N = {} is above the largest {} set, {} points", N / k,
+                                        set_->name, most)};
     }
-    return {cell_size{n, 0, 0, 0}, {}};
+    return {cell_size{k * n, 0, 0, 0}, {}};
+  }
+
+  // The randomizations one estimate spends its N on: k with replicate_estimator, else one.
+  std::uint64_t combined_count() const noexcept {
+    return options_.combine ? options_.replicate_count : 1;
   }
 
   std::vector<sizing> explicit_sizes(std::size_t) const override {
     std::vector<sizing> out;
-    for (const std::uint64_t n : options_.points) out.push_back({cell_size{n, 0, 0, 0}, {}});
+    // With replicate_estimator each point count is n of one randomization; the cell spends k·n.
+    for (const std::uint64_t n : options_.points) {
+      out.push_back({cell_size{combined_count() * n, 0, 0, 0}, {}});
+    }
     return out;
   }
   std::string explicit_sizes_key() const override { return "points"; }
 
   theoretical_rate theory(const integrand_class& f) const override {
+    if (options_.combine == replicate_estimator::median) {
+      // Proven rates need k to grow with m ([Pan & Owen 2023]); at a fixed k none is.
+      return {std::nullopt,
+              fmt::format("median of k = {} randomizations: super-polynomial for analytic f in "
+                          "s = 1 under random linear scrambling as k grows like log2 n, no proven "
+                          "slope at a fixed k",
+                          options_.replicate_count),
+              "docs/theory.md#replicate-estimators; [Pan & Owen 2023]"};
+    }
+    // The mean of a fixed number k of randomizations of N/k points: the rate of one.
     const point_set_theory said = *set_->theory_of(options_.set);
     if (said.padded && f.s > 2) {
       return root_n_rate(f,
@@ -152,7 +206,8 @@ class qmc_method final : public method {
     return {std::nullopt, said.note, std::string(said.source)};
   }
 
-  bool shares_chunks() const override { return sample_mean_shares_chunks; }
+  // A combined estimate's k runs are computed whole on every process (process_local).
+  bool shares_chunks() const override { return !options_.combine && sample_mean_shares_chunks; }
   bool shares_chunks_at(cell_control control) const override {
     return control == cell_control::tolerance ? stopping_shares_chunks(*options_.stopping, *set_)
                                               : shares_chunks();
@@ -162,6 +217,7 @@ class qmc_method final : public method {
     if (cell.control == cell_control::tolerance) {
       return run_stopping(*options_.stopping, *set_, options_.set, cell, context);
     }
+    if (options_.combine) return run_combined(cell, context);
     const estimate e = set_->monte_carlo(cell.function, {context.seed, cell.stream},
                                          cell.size.evaluations, context.threads, options_.set);
     // No std_error nor error_estimate: one run of these points has none (e.std_error is NaN);
@@ -174,8 +230,9 @@ class qmc_method final : public method {
 
   void measure_points(const method_cell& cell, const run_context& context,
                       repetition_result& result) const override {
-    // A cell to a tolerance spends what its rule decides; its size is only the budget.
-    if (cell.control == cell_control::tolerance) return;
+    // A cell to a tolerance spends what its rule decides; its size is only the budget. A
+    // combined cell's points are k sets, none of them N points.
+    if (cell.control == cell_control::tolerance || options_.combine) return;
     const std::uint64_t n = cell.size.evaluations;
     const std::size_t s = cell.function.dimension();
     if (n > discrepancy_max_points || n * n * s > discrepancy_max_pair_coordinates) return;
@@ -198,9 +255,59 @@ class qmc_method final : public method {
   }
 
  private:
+  // k randomizations of n = N/k points, randomization r from the Philox stream
+  // stream_id({cell stream, r}), combined by replicate_estimator.hpp.
+  repetition_result run_combined(const method_cell& cell, const run_context& context) const {
+    const std::uint64_t k = options_.replicate_count;
+    const std::uint64_t n = cell.size.evaluations / k;
+    std::vector<double> values(k);
+    repetition_result out;
+    for (std::uint64_t r = 0; r < k; ++r) {
+      const estimate e =
+          set_->monte_carlo(cell.function, {context.seed, stream_id({cell.stream, r})}, n,
+                            context.threads, options_.set);
+      values[r] = e.value;
+      out.evaluations += e.evaluations;
+    }
+    const combined_replicates c = combine_replicates(values, *options_.combine);
+    out.value = c.value;
+    out.std_error = c.std_error;
+    out.error_estimate = c.error_estimate;
+    return out;
+  }
+
   const point_set_entry* set_;
   qmc_options options_;
 };
+
+// replicate_estimator and replicate_count: both on a randomized set only, the count odd for a
+// median.
+void read_replicate_estimator(option_reader& r, const point_set_entry& set, qmc_options& o) {
+  constexpr std::array<std::string_view, 2> estimators{"mean", "median"};
+  if (auto how = r.choice("replicate_estimator", estimators)) {
+    o.combine = *how == "median" ? replicate_estimator::median : replicate_estimator::mean;
+    if (set.randomization_of(o.set) == randomization::none) {
+      r.fail("replicate_estimator",
+             fmt::format("expected a randomized set (the {} points with randomization \"none\" "
+                         "are one deterministic set: nothing to combine), got replicate_estimator "
+                         "= \"{}\"",
+                         set.name, *how));
+    }
+  }
+  const auto k = r.count("replicate_count", 2, 1U << 16, "k, between 2 and 65536");
+  if (!k) return;
+  if (!o.combine) {
+    r.fail("replicate_count",
+           "expected only with replicate_estimator (the randomizations one estimate combines)");
+  }
+  if (*o.combine == replicate_estimator::median && (*k < 3 || *k % 2 == 0)) {
+    r.fail("replicate_count",
+           fmt::format("expected an odd k ≥ 3 for replicate_estimator = \"median\" (its middle "
+                       "value), got {}",
+                       *k));
+  }
+  o.replicate_count = *k;
+}
 
 // The `points` key: explicit N, increasing, each one the set can hold with these options.
 std::vector<std::uint64_t> read_points(option_reader& r, const point_set_entry& set,
@@ -279,6 +386,7 @@ std::unique_ptr<const method> create_qmc(const method_descriptor& d, option_read
                        to_string(*set.randomization_of(o.set)), o.set.interlacing, problem));
   }
   o.points = read_points(r, set, o.set);
+  read_replicate_estimator(r, set, o);
   if (d.supports(cell_control::tolerance)) o.stopping = read_stopping(r, set, o.set);
   return std::make_unique<qmc_method>(d, set, std::move(o));
 }
@@ -315,6 +423,14 @@ constexpr std::array<qmc_method_spec, 5> specs{{
      "budget.N",
      true},
 }};
+constexpr std::array<option_doc, 2> replicate_docs{{
+    {"replicate_estimator",
+     "\"mean\" | \"median\": one estimate from replicate_count randomizations of N/k points, "
+     "their mean (error bar s/sqrt(k)) or median (Pan & Owen; error bar from order statistics); "
+     "absent: one randomization of N points"},
+    {"replicate_count",
+     "k randomizations per estimate with replicate_estimator (default 11; odd for the median)"},
+}};
 constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
 constexpr std::array<cell_control, 2> fixed_or_tolerance{cell_control::fixed_size,
                                                          cell_control::tolerance};
@@ -332,6 +448,7 @@ struct qmc_descriptors {
         docs[i].push_back({o.key, o.meaning});
       }
       docs[i].push_back({"points", specs[i].points});
+      for (const option_doc& o : replicate_docs) docs[i].push_back(o);
       if (specs[i].to_tolerance) {
         for (const option_doc& o : stopping_docs) docs[i].push_back(o);
       }
