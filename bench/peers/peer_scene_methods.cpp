@@ -15,7 +15,11 @@
 // no batch form), which costs them one indirect call per point on top of their own.
 #include "peer_scene_methods.hpp"
 
+#include "python_peer_process.hpp"
+
+#include "quadmc/analysis/theoretical_rate.hpp"
 #include "quadmc/core/batching.hpp"
+#include "quadmc/core/errors.hpp"
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/integrand.hpp"
 #include "quadmc/methods/registry.hpp"
@@ -35,11 +39,15 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <span>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -364,6 +372,134 @@ class boost_method final : public method {
 };
 
 // ---------------------------------------------------------------------------------------------
+// scipy's qmc_quad (python3-scipy 1.10: scipy.integrate._quadrature._qmc_quad, public as
+// scipy.integrate.qmc_quad from 1.11): the mean of n_estimates = 8 estimates (its default), each
+// over n_points scrambled Sobol' points (scipy.stats.qmc.Sobol, random linear scramble and
+// digital shift), with its standard_error s/√8 as the 1σ claim the reliability table audits. It
+// runs in a Python process of its own (scipy_qmc_quad.py, python_peer_process.hpp) on the same
+// instance, rebuilt there by the quadmc module from the instance's parameters; the instance's
+// exact value is compared bit for bit so that a mismatch cannot pass unnoticed. Single-threaded,
+// seeded from the scene's seed and the repetition's stream: the same result for any --threads.
+
+constexpr std::uint64_t qmc_quad_estimates = 8;
+
+// A JSON string of a catalogue name or key: quotes and backslashes escaped (nothing else occurs).
+std::string json_string(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + '"';
+}
+
+std::string json_number(double v) {
+  require(std::isfinite(v), "integrand parameter", v, "a finite number (JSON has no other)");
+  return fmt::format("{:.17g}", v);
+}
+
+// The request line of scipy_qmc_quad.py for one repetition.
+std::string qmc_quad_request(const method_cell& cell, std::uint64_t n_points,
+                             std::uint64_t qrng_seed) {
+  const integrand_params& p = cell.params;
+  std::string scalars, vectors, strings;
+  for (const auto& [key, value] : p.scalars) {
+    scalars +=
+        fmt::format("{}{}: {}", scalars.empty() ? "" : ", ", json_string(key), json_number(value));
+  }
+  for (const auto& [key, values] : p.vectors) {
+    std::string list;
+    for (const double v : values) list += (list.empty() ? "" : ", ") + json_number(v);
+    vectors += fmt::format("{}{}: [{}]", vectors.empty() ? "" : ", ", json_string(key), list);
+  }
+  for (const auto& [key, value] : p.strings) {
+    strings +=
+        fmt::format("{}{}: {}", strings.empty() ? "" : ", ", json_string(key), json_string(value));
+  }
+  return fmt::format(
+      "{{\"family\": {}, \"s\": {}, \"seed\": {}, \"scalars\": {{{}}}, \"vectors\": {{{}}}, "
+      "\"strings\": {{{}}}, \"n_points\": {}, \"n_estimates\": {}, \"qrng_seed\": {}}}",
+      json_string(cell.function.info().name), cell.function.dimension(), p.seed, scalars, vectors,
+      strings, n_points, qmc_quad_estimates, qrng_seed);
+}
+
+class scipy_qmc_quad_method final : public method {
+ public:
+  explicit scipy_qmc_quad_method(const method_descriptor& d)
+      : method(d),
+        process_(std::make_unique<python_peer_process>(
+            std::vector<std::string>{QUADMC_PEERS_PYTHON, QUADMC_PEERS_QMC_QUAD_SCRIPT},
+            QUADMC_PEERS_PYTHON_MODULE_DIR)) {
+    // What a run would need, checked when the scene is planned (scipy itself is imported when
+    // the first cell runs, and a missing one is named then).
+    namespace fs = std::filesystem;
+    if (!fs::exists(QUADMC_PEERS_PYTHON)) {
+      throw invalid_argument("method", descriptor().name,
+                             fmt::format("{} to run scipy (install python3-scipy with ./run.sh "
+                                         "deps)",
+                                         QUADMC_PEERS_PYTHON));
+    }
+    if (!fs::exists(fs::path(QUADMC_PEERS_PYTHON_MODULE_DIR) / "quadmc")) {
+      throw invalid_argument("method", descriptor().name,
+                             fmt::format("the quadmc Python module in {} (a build with "
+                                         "QUADMC_PYTHON on builds it)",
+                                         QUADMC_PEERS_PYTHON_MODULE_DIR));
+    }
+  }
+
+  // n_points = 2^m ≤ N/8 per estimate (a Sobol' net, as scipy advises), at least 2.
+  sizing size_for(std::uint64_t N, std::size_t) const override {
+    if (N < 2 * qmc_quad_estimates) {
+      return {std::nullopt, fmt::format("N is below {} estimates of 2 points", qmc_quad_estimates)};
+    }
+    return {cell_size{qmc_quad_estimates * std::bit_floor(N / qmc_quad_estimates), 0, 0, 0}, {}};
+  }
+
+  theoretical_rate theory(const integrand_class& f) const override {
+    theoretical_rate rate = scrambled_net_rate(f);
+    rate.note = "scipy qmc_quad: the mean of 8 scrambled Sobol' estimates; " + rate.note;
+    return rate;
+  }
+
+  repetition_result run(const method_cell& cell, const run_context& context) const override {
+    const std::uint64_t n_points = cell.size.evaluations / qmc_quad_estimates;
+    const std::string answer =
+        process_->request(qmc_quad_request(cell, n_points, mixed_seed(context.seed, cell.stream)));
+    std::istringstream in(answer);
+    std::string status, integral, error, evaluations, exact;
+    in >> status >> integral >> error >> evaluations >> exact;
+    if (status != "ok") {
+      throw std::runtime_error(
+          fmt::format("{} on {}: {}", descriptor().name, cell.function.info().name, answer));
+    }
+    const double there = std::strtod(exact.c_str(), nullptr);
+    const double here = cell.function.info().exact;
+    if (!(there == here || (std::isnan(there) && std::isnan(here)))) {
+      throw std::runtime_error(
+          fmt::format("{}: the Python module built another {} (exact {} there, {} here)",
+                      descriptor().name, cell.function.info().name, exact, here));
+    }
+    repetition_result out;
+    out.value = std::strtod(integral.c_str(), nullptr);
+    out.std_error = std::strtod(error.c_str(), nullptr);
+    if (!std::isfinite(out.value) || !(out.std_error >= 0.0)) {
+      throw std::runtime_error(fmt::format("{} on {} answered {}", descriptor().name,
+                                           cell.function.info().name, answer));
+    }
+    out.error_estimate = out.std_error;
+    out.evaluations = std::strtoull(evaluations.c_str(), nullptr, 10);
+    return out;
+  }
+
+ private:
+  std::unique_ptr<python_peer_process> process_;  // const methods share it (it has a mutex)
+};
+
+std::unique_ptr<const method> create_scipy_qmc_quad(const method_descriptor& d, option_reader&) {
+  return std::make_unique<scipy_qmc_quad_method>(d);
+}
+
+// ---------------------------------------------------------------------------------------------
 
 constexpr std::array<cell_control, 2> adaptive_controls{cell_control::budget,
                                                         cell_control::tolerance};
@@ -375,7 +511,9 @@ std::unique_ptr<const method> create(const method_descriptor& d, option_reader&)
   return std::make_unique<M>(d, Kind);
 }
 
-const std::array<method_descriptor, 7> descriptors{{
+constexpr std::array<cell_control, 1> fixed_only{cell_control::fixed_size};
+
+const std::array<method_descriptor, 8> descriptors{{
     {peers::hcubature.name,
      "peer: cubature's hcubature (h-adaptive Genz-Malik, Gauss-Kronrod 7/15 in 1D), GPL",
      method_kind::deterministic,
@@ -418,6 +556,13 @@ const std::array<method_descriptor, 7> descriptors{{
      {},
      tolerance_only,
      create<boost_method, boost_kind::gauss_kronrod>},
+    {peers::scipy_qmc_quad.name,
+     "peer: scipy's qmc_quad (8 scrambled Sobol' estimates, their standard error), in a Python "
+     "process; BSD",
+     method_kind::randomized,
+     {},
+     fixed_only,
+     create_scipy_qmc_quad},
 }};
 
 // GSL's default error handler aborts the process; the adapters check every status instead.

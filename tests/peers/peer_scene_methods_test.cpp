@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -144,6 +145,9 @@ TEST(PeerSceneMethods, SizesBelowTheFirstRoundAreSkipsWithAReason) {
 TEST(PeerSceneMethods, ANonFiniteValueIsTheSuitesErrorNamingThePoint) {
   for (const known_peer& peer : peers::known) {
     const std::string name(peer.name);
+    // scipy's qmc_quad evaluates the catalogue's instance in its own process, never this test's
+    // integrand (ScipyQmcQuadRunsTheSameInstanceInPython).
+    if (name == peers::scipy_qmc_quad.name) continue;
     SCOPED_TRACE(name);
     const auto m = make_method(name);
     const bool one_d = std::string(name).find("boost") != std::string::npos;
@@ -173,6 +177,44 @@ TEST(PeerSceneMethods, ASeedAndStreamGiveTheSameResultAgain) {
     EXPECT_EQ(a.value, b.value) << name << ": threads must not matter";
     EXPECT_EQ(a.std_error, b.std_error) << name;
     EXPECT_NE(a.value, other.value) << name << ": another stream is another sample";
+  }
+}
+
+// scipy's qmc_quad in its Python process: N = 8·2^m, the instance rebuilt there from the cell's
+// parameters (a different one is refused), the integral within its standard error's reach, and the
+// same result for a seed and stream on any thread count.
+TEST(PeerSceneMethods, ScipyQmcQuadRunsTheSameInstanceInPython) {
+  const auto m = make_method("peer_scipy_qmc_quad");
+  EXPECT_EQ(m->size_for(100000, 3).size->evaluations, 8u * 8192u);
+  EXPECT_FALSE(m->size_for(15, 3).size);
+  EXPECT_EQ(*m->theory({smoothness::analytic, 3}).slope, -1.5);
+  const integrand_params params = gaussian_params(3);
+  const any_integrand f = make_integrand("genz_gaussian", params);
+  const cell_size size = *m->size_for(8192, 3).size;
+  const repetition_result a = m->run({f, params, size, cell_control::fixed_size, NAN, 3}, {11, 1});
+  // 8·1024 points, and the three qmc_quad evaluates to check the integrand (its centroid and its
+  // two corners), counted where they happen.
+  EXPECT_EQ(a.evaluations, 8192u + 3u);
+  EXPECT_GT(a.std_error, 0.0);
+  EXPECT_EQ(a.error_estimate, a.std_error);
+  // The mean of 8 independent estimates over its standard error is Student's t with 7 degrees of
+  // freedom: beyond 8 with probability 9e-5 (the false alarm).
+  EXPECT_LE(std::abs(a.value - f.info().exact), 8.0 * a.std_error)
+      << a.value << " ± " << a.std_error << " against " << f.info().exact;
+  const repetition_result b = m->run({f, params, size, cell_control::fixed_size, NAN, 3}, {11, 3});
+  EXPECT_EQ(a.value, b.value) << "threads must not matter";
+  const repetition_result other =
+      m->run({f, params, size, cell_control::fixed_size, NAN, 4}, {11, 1});
+  EXPECT_NE(a.value, other.value) << "another stream is another sample";
+  // Parameters that build another instance than the cell's are caught by its exact value.
+  integrand_params moved = params;
+  moved.vectors["u"][0] = 0.7;  // not 0.6: u and 1 − u give the Gaussian the same integral
+  try {
+    m->run({f, moved, size, cell_control::fixed_size, NAN, 3}, {11, 1});
+    ADD_FAILURE() << "another instance was not noticed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("built another genz_gaussian"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -70,9 +70,12 @@ inline constexpr known_peer gsl_vegas{"peer_gsl_vegas", "GSL's gsl_monte_vegas, 
 inline constexpr known_peer boost_tanh_sinh{"peer_boost_tanh_sinh", "Boost.Math's tanh_sinh"};
 inline constexpr known_peer boost_gauss_kronrod{"peer_boost_gauss_kronrod",
                                                 "Boost.Math's gauss_kronrod<double, 15>"};
+inline constexpr known_peer scipy_qmc_quad{"peer_scipy_qmc_quad",
+                                           "scipy's qmc_quad, python3-scipy"};
 // In listing order.
-inline constexpr std::array<known_peer, 7> known{
-    hcubature, pcubature, gsl_plain, gsl_miser, gsl_vegas, boost_tanh_sinh, boost_gauss_kronrod};
+inline constexpr std::array<known_peer, 8> known{
+    hcubature, pcubature,       gsl_plain,           gsl_miser,
+    gsl_vegas, boost_tanh_sinh, boost_gauss_kronrod, scipy_qmc_quad};
 }  // namespace peers
 
 // Why a scene cannot name `name` in this build although the suite knows it (a peer whose command
