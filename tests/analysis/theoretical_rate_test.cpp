@@ -81,6 +81,27 @@ TEST(MonteCarloRates, RootNUnlessTheVarianceIsInfinite) {
   EXPECT_FALSE(adaptive_monte_carlo_rate(of(smoothness::singular, 1, -1.0), "n", "s").adaptive);
 }
 
+// A scrambled net on a jump: He & Wang's −1/2 − 1/(4s − 2) for a curved or oblique boundary;
+// jumps on coordinate planes only (a product of piecewise-smooth factors, bounded Hardy–Krause
+// variation) give Koksma–Hlawka's N^−1 up to (log N)^(s−1) (docs/theory.md#scrambled-nets).
+TEST(ScrambledNetRate, JumpsOnCoordinatePlanesHaveBoundedVariation) {
+  const theoretical_rate curved = scrambled_net_rate(of(smoothness::discontinuous, 2));
+  EXPECT_NEAR(*curved.slope, -0.5 - 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(curved.log_power, 0.0);
+  integrand_class planes = of(smoothness::discontinuous, 4);
+  planes.separable_jumps = true;
+  const theoretical_rate separable = scrambled_net_rate(planes);
+  EXPECT_EQ(*separable.slope, -1.0);
+  EXPECT_EQ(separable.log_power, 3.0);
+  EXPECT_NE(separable.source.find("[Niederreiter 1992]"), std::string::npos);
+  // In s = 1 every jump is "on a coordinate plane", and the 1D net is jittered: He & Wang's
+  // formula gives that −1 itself, with no log factor.
+  integrand_class one_d = of(smoothness::discontinuous, 1);
+  one_d.separable_jumps = true;
+  EXPECT_EQ(*scrambled_net_rate(one_d).slope, -1.0);
+  EXPECT_EQ(scrambled_net_rate(one_d).log_power, 0.0);
+}
+
 TEST(OnePointPerStratumRate, JitteredRates) {
   // −1/2 − 1/s for Lipschitz f, −1/2 − 1/(2s) for an indicator (docs/theory.md#jittered).
   EXPECT_EQ(*one_point_per_stratum_rate(of(smoothness::smooth, 2)).slope, -1.0);

@@ -58,8 +58,8 @@ constexpr named_method expected_methods[] = {
     {"external_rule", random_kind},
 };
 constexpr std::string_view expected_peers[] = {
-    "peer_hcubature", "peer_pcubature",       "peer_gsl_plain",          "peer_gsl_miser",
-    "peer_gsl_vegas", "peer_boost_tanh_sinh", "peer_boost_gauss_kronrod"};
+    "peer_hcubature", "peer_pcubature",       "peer_gsl_plain",           "peer_gsl_miser",
+    "peer_gsl_vegas", "peer_boost_tanh_sinh", "peer_boost_gauss_kronrod", "peer_scipy_qmc_quad"};
 
 // Each with its kind: the deterministic methods are the rules.
 TEST(MethodRegistry, NamesEveryMethodOnceWithAKindAndAControl) {

@@ -160,6 +160,16 @@ theoretical_rate scrambled_net_rate(const integrand_class& f) {
       return {std::nullopt, "kinks in s >= 2: Owen's N^-3/2 needs smooth mixed derivatives",
               "docs/theory.md#scrambled-nets"};
     case smoothness::discontinuous:
+      // Jumps on coordinate planes only: f has bounded Hardy–Krause variation, and every
+      // randomization is still a (t, m, s)-net, whose star discrepancy is O((log N)^(s−1)/N), so
+      // Koksma–Hlawka bounds each error by V_HK(f)·D* (docs/theory.md#scrambled-nets).
+      if (f.separable_jumps && f.s >= 2) {
+        return {-1.0,
+                fmt::format("jumps on coordinate planes (bounded Hardy-Krause variation): "
+                            "Koksma-Hlawka with a net's D*, N^-1 up to (log N)^{}",
+                            s - 1),
+                "docs/theory.md#scrambled-nets; [Niederreiter 1992]", s - 1};
+      }
       return {-0.5 - 1.0 / (4.0 * s - 2.0), "indicator of a smooth-boundary region",
               "docs/theory.md#scrambled-nets; [He & Wang 2015]"};
     case smoothness::singular:

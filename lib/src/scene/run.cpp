@@ -199,8 +199,9 @@ void run_assembly::add(std::size_t index, cell_run run) {
     series.s = cell.dimension;
     series.method = mspec.label;
     series.regularity = info.regularity;
-    series.theory = mspec.configured->theory(
-        integrand_class{info.regularity, cell.dimension, info.singularity_exponent});
+    series.theory = mspec.configured->theory(integrand_class{
+        info.regularity, cell.dimension, info.singularity_exponent,
+        info.regularity == smoothness::discontinuous && !info.separable_factors.empty()});
     series.reference = p.mean_reference[cell.integrand];
     if (cell.integrand < p.references.size()) {
       series.reference_uncertainty = p.references[cell.integrand].uncertainty;

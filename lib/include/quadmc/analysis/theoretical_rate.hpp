@@ -47,6 +47,10 @@ struct integrand_class {
   std::size_t s = 1;
   // α for a singular f ~ x^α at an endpoint (α = 0 for log x); NaN = not given (√x assumed).
   double singularity_exponent = std::numeric_limits<double>::quiet_NaN();
+  // A discontinuous f that is a product of piecewise-smooth functions of one coordinate each
+  // (integrand_info::separable_factors: jumps only on coordinate planes, as Genz's discontinuous
+  // family): of bounded Hardy–Krause variation, which a curved or oblique jump is not.
+  bool separable_jumps = false;
 };
 
 // A composite rule of algebraic order r (error O(n^−r) on f ∈ C^r), as a tensor product in s
