@@ -203,6 +203,19 @@ TEST(ConvergenceTable, AScrambledNetsLogFactorIsAComputedReason) {
   EXPECT_EQ(table.verdict, slope_verdict::pre_asymptotic) << table.verdict_reason;
   EXPECT_NE(table.verdict_reason.find("local slope -0.750"), std::string::npos)
       << table.verdict_reason;
+  // A log factor of a lower power, (log N)^3, gives a slope between −1.5 and the bound's −0.75:
+  // −1.5 + 3·ln 2/(10 ln 2) = −1.2, within what the bound allows.
+  const auto milder = [](double n) {
+    return 1e-2 * std::pow(n, -1.5) * std::pow(std::log(n), 3.0);
+  };
+  const convergence_table between = analyse_convergence(scrambled_net_series(16, milder));
+  EXPECT_NEAR(between.fit.slope, -1.2, 0.02);
+  EXPECT_EQ(between.verdict, slope_verdict::pre_asymptotic) << between.verdict_reason;
+  EXPECT_NE(between.verdict_reason.find("lies between it and -1.5"), std::string::npos)
+      << between.verdict_reason;
+  // Steeper than −1.5 is no log factor's doing either: a finding.
+  const auto fast = [](double n) { return 1e-2 * std::pow(n, -2.0); };
+  EXPECT_EQ(analyse_convergence(scrambled_net_series(16, fast)).verdict, slope_verdict::steeper);
   // N^−1/2 is no log factor's doing: it stays a finding.
   const auto root_n = [](double n) { return 1e-2 / std::sqrt(n); };
   const convergence_table slow = analyse_convergence(scrambled_net_series(16, root_n));

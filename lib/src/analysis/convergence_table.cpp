@@ -284,8 +284,10 @@ void judge_series(convergence_table& table, const convergence_series& series,
   }
   // A bound with a log factor, N^p·(log N)^q, falls over the fitted range N₁ … N₂ with the
   // local slope p + q·(ln ln N₂ − ln ln N₁)/(ln N₂ − ln N₁): a finite ladder measures that, not p
-  // (docs/theory.md#pre-asymptotic-ladders). The fitted slope agreeing with it is a computed
-  // reason; one that does not stays a finding.
+  // (docs/theory.md#pre-asymptotic-ladders). The bound caps the log factor's power at q, so an
+  // error under it falls with a local slope between p (no log factor) and the bound's: a fitted
+  // slope that agrees with the bound's local slope, or lies between it and p, is a computed
+  // reason; one steeper than p or shallower than the bound's local slope stays a finding.
   if (!prediction && table.theory.log_power > 0.0 && fit_n.size() >= 2 &&
       *std::min_element(fit_n.begin(), fit_n.end()) > 1.0) {
     const double n1 = *std::min_element(fit_n.begin(), fit_n.end());
@@ -293,14 +295,25 @@ void judge_series(convergence_table& table, const convergence_series& series,
     const double local = *theory + table.theory.log_power *
                                        (std::log(std::log(n2)) - std::log(std::log(n1))) /
                                        (std::log(n2) - std::log(n1));
-    if (judge_slope(table.fit, local, options.verdict_tolerance) == slope_verdict::agrees) {
+    const bool at_bound =
+        judge_slope(table.fit, local, options.verdict_tolerance) == slope_verdict::agrees;
+    const bool between = table.fit.slope >= *theory && table.fit.slope <= local;
+    if (at_bound || between) {
       table.verdict = slope_verdict::pre_asymptotic;
-      table.verdict_reason = fmt::format(
-          "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the fitted "
-          "N = {:.0f} … {:.0f}, and the slope {} agrees with it within max(CI half-width, "
-          "{:.0f}%): its log factor, not another rate",
-          *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit),
-          100.0 * options.verdict_tolerance);
+      table.verdict_reason =
+          at_bound
+              ? fmt::format(
+                    "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the "
+                    "fitted N = {:.0f} … {:.0f}, and the slope {} agrees with it within max(CI "
+                    "half-width, {:.0f}%): its log factor, not another rate",
+                    *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit),
+                    100.0 * options.verdict_tolerance)
+              : fmt::format(
+                    "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the "
+                    "fitted N = {:.0f} … {:.0f}, and the slope {} lies between it and {:.3g}: a "
+                    "log factor of power at most {:.3g}, as the bound allows, not another rate",
+                    *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit), *theory,
+                    table.theory.log_power);
       return;
     }
   }

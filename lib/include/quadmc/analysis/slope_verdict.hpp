@@ -32,7 +32,8 @@
 //                    from there agrees (or the ladder ends before it): the whole-ladder slope
 //                    measured the regime before the leading term takes over; or the proven
 //                    bound has a log factor (theoretical_rate::log_power) and the slope agrees
-//                    with the bound's local slope over the fitted range; or an adaptive Monte
+//                    with the bound's local slope over the fitted range, or lies between it
+//                    and the bound's rate; or an adaptive Monte
 //                    Carlo method's slope agrees with that of the error estimates it reported
 //                    (theoretical_rate::adaptive: its variance changed while it adapted);
 //   at_floor         the ladder reached its rounding floor (the precision f is evaluated in and
