@@ -172,7 +172,8 @@ std::string time_to_error_markdown(std::span<const convergence_table> tables) {
       "smallest N whose RMSE is at most the target, in that cell's time. quadmc's best is its "
       "fastest method that reaches it, the best peer the fastest `peer_*` method; ratio = "
       "quadmc's best / best peer (below 1: quadmc faster). — where a method did not run the "
-      "cell.\n\n";
+      "cell. Tables a method builds once per process (the sparse grids' 1D rules) are built when "
+      "the scene is planned, outside every timed call.\n\n";
   out += "| family | s | tolerance | target | smoothness |";
   for (const std::string& m : methods) out += fmt::format(" {} |", m);
   out += " quadmc's best | best peer | ratio |\n|---|---:|---:|---:|---|";
