@@ -1,6 +1,7 @@
 #include "quadmc/estimators/replicate_estimator.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/summation.hpp"
 
 #include <fmt/format.h>
 
@@ -15,6 +16,15 @@ namespace quadmc {
 
 std::string_view to_string(replicate_estimator e) noexcept {
   return e == replicate_estimator::median ? "median" : "mean";
+}
+
+mean_and_deviation replicate_mean_and_sd(std::span<const double> values) {
+  const std::size_t k = values.size();
+  require(k >= 2, "replicate_count", k, "k ≥ 2 randomizations for a mean and its error bar");
+  const double mean = pairwise_sum(values) / static_cast<double>(k);
+  double m2 = 0.0;
+  for (const double x : values) m2 += (x - mean) * (x - mean);
+  return {mean, std::sqrt(m2 / static_cast<double>(k - 1))};
 }
 
 double median_interval_coverage(std::size_t k, std::size_t l) {
@@ -41,14 +51,9 @@ combined_replicates combine_replicates(std::span<const double> values, replicate
   const std::size_t k = values.size();
   combined_replicates out;
   if (how == replicate_estimator::mean) {
-    require(k >= 2, "replicate_count", k, "k ≥ 2 randomizations for a mean and its error bar");
-    // Two passes: the mean, then the squared deviations from it (no cancellation).
-    double sum = 0.0;
-    for (const double v : values) sum += v;
-    out.value = sum / static_cast<double>(k);
-    double squares = 0.0;
-    for (const double v : values) squares += (v - out.value) * (v - out.value);
-    out.std_error = std::sqrt(squares / static_cast<double>(k - 1) / static_cast<double>(k));
+    const mean_and_deviation spread = replicate_mean_and_sd(values);
+    out.value = spread.mean;
+    out.std_error = spread.sd / std::sqrt(static_cast<double>(k));
     out.error_estimate = out.std_error;
     return out;
   }

@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/core/normal_quantile.hpp"
 #include "quadmc/core/summation.hpp"
+#include "quadmc/estimators/replicate_estimator.hpp"
 
 #include <boost/math/distributions/students_t.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
@@ -24,14 +25,6 @@ namespace {
 
 void require_power_of_two(std::uint64_t n, const char* name, const std::string& expected) {
   require(std::has_single_bit(n), name, n, expected);
-}
-
-// The mean and the standard deviation (divisor R − 1) of the replicate means, in two passes.
-std::pair<double, double> mean_and_sd(std::span<const double> v) {
-  const double mean = pairwise_sum(v) / static_cast<double>(v.size());
-  double m2 = 0.0;
-  for (const double x : v) m2 += (x - mean) * (x - mean);
-  return {mean, std::sqrt(m2 / static_cast<double>(v.size() - 1))};
 }
 
 }  // namespace
@@ -63,7 +56,7 @@ stopped_estimate replicate_stopping(extension_values values, const replicate_sto
       sums[r].add(pairwise_sum(y));
       means[r] = sums[r].value() / static_cast<double>(hi);
     }
-    const auto [mean, sd] = mean_and_sd(means);
+    const auto [mean, sd] = replicate_mean_and_sd(means);
     const double half_width = t * o.inflate * sd / std::sqrt(static_cast<double>(R));
     stopped_estimate out{mean, half_width, hi * R, hi, half_width <= o.tolerance};
     if (out.met || hi * 2 > o.n_max) return out;

@@ -26,6 +26,16 @@ enum class replicate_estimator { mean, median };
 
 std::string_view to_string(replicate_estimator e) noexcept;
 
+// The mean and the standard deviation (divisor k − 1) of k ≥ 2 independent estimates, in two
+// passes (the mean pairwise, core/summation.hpp, then the squared deviations from it): the
+// spread of randomizations that the mean's error bar here and the replicate stopping rule
+// (stopping_rules.hpp) both stand on. Throws invalid_argument for k < 2.
+struct mean_and_deviation {
+  double mean = 0.0;
+  double sd = 0.0;
+};
+mean_and_deviation replicate_mean_and_sd(std::span<const double> values);
+
 struct combined_replicates {
   double value = 0.0;
   double std_error = 0.0;       // NaN for the median
