@@ -27,6 +27,7 @@
 
 #include <cubature.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_monte.h>
 #include <gsl/gsl_monte_miser.h>
@@ -398,29 +399,30 @@ std::string json_number(double v) {
   return fmt::format("{:.17g}", v);
 }
 
+// A JSON object of one kind of integrand_params keys, each value written by `write`.
+template <class Map, class Write>
+std::string json_object(const Map& keys, Write write) {
+  std::vector<std::string> members;
+  for (const auto& [key, value] : keys) members.push_back(json_string(key) + ": " + write(value));
+  return fmt::format("{{{}}}", fmt::join(members, ", "));
+}
+
 // The request line of scipy_qmc_quad.py for one repetition.
 std::string qmc_quad_request(const method_cell& cell, std::uint64_t n_points,
                              std::uint64_t qrng_seed) {
   const integrand_params& p = cell.params;
-  std::string scalars, vectors, strings;
-  for (const auto& [key, value] : p.scalars) {
-    scalars +=
-        fmt::format("{}{}: {}", scalars.empty() ? "" : ", ", json_string(key), json_number(value));
-  }
-  for (const auto& [key, values] : p.vectors) {
-    std::string list;
-    for (const double v : values) list += (list.empty() ? "" : ", ") + json_number(v);
-    vectors += fmt::format("{}{}: [{}]", vectors.empty() ? "" : ", ", json_string(key), list);
-  }
-  for (const auto& [key, value] : p.strings) {
-    strings +=
-        fmt::format("{}{}: {}", strings.empty() ? "" : ", ", json_string(key), json_string(value));
-  }
+  const auto list = [](const std::vector<double>& values) {
+    std::vector<std::string> numbers;
+    for (const double v : values) numbers.push_back(json_number(v));
+    return fmt::format("[{}]", fmt::join(numbers, ", "));
+  };
   return fmt::format(
-      "{{\"family\": {}, \"s\": {}, \"seed\": {}, \"scalars\": {{{}}}, \"vectors\": {{{}}}, "
-      "\"strings\": {{{}}}, \"n_points\": {}, \"n_estimates\": {}, \"qrng_seed\": {}}}",
-      json_string(cell.function.info().name), cell.function.dimension(), p.seed, scalars, vectors,
-      strings, n_points, qmc_quad_estimates, qrng_seed);
+      "{{\"family\": {}, \"s\": {}, \"seed\": {}, \"scalars\": {}, \"vectors\": {}, "
+      "\"strings\": {}, \"n_points\": {}, \"n_estimates\": {}, \"qrng_seed\": {}}}",
+      json_string(cell.function.info().name), cell.function.dimension(), p.seed,
+      json_object(p.scalars, json_number), json_object(p.vectors, list),
+      json_object(p.strings, [](const std::string& v) { return json_string(v); }), n_points,
+      qmc_quad_estimates, qrng_seed);
 }
 
 class scipy_qmc_quad_method final : public method {

@@ -301,19 +301,16 @@ void judge_series(convergence_table& table, const convergence_series& series,
     if (at_bound || between) {
       table.verdict = slope_verdict::pre_asymptotic;
       table.verdict_reason =
-          at_bound
-              ? fmt::format(
-                    "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the "
-                    "fitted N = {:.0f} … {:.0f}, and the slope {} agrees with it within max(CI "
-                    "half-width, {:.0f}%): its log factor, not another rate",
-                    *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit),
-                    100.0 * options.verdict_tolerance)
-              : fmt::format(
-                    "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the "
-                    "fitted N = {:.0f} … {:.0f}, and the slope {} lies between it and {:.3g}: a "
-                    "log factor of power at most {:.3g}, as the bound allows, not another rate",
-                    *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit), *theory,
-                    table.theory.log_power);
+          fmt::format(
+              "the bound N^{:.3g}·(log N)^{:.3g} falls with the local slope {:.3f} over the "
+              "fitted N = {:.0f} … {:.0f}, and the slope {} ",
+              *theory, table.theory.log_power, local, n1, n2, slope_text(table.fit)) +
+          (at_bound ? fmt::format("agrees with it within max(CI half-width, {:.0f}%): its log "
+                                  "factor, not another rate",
+                                  100.0 * options.verdict_tolerance)
+                    : fmt::format("lies between it and {:.3g}: a log factor of power at most "
+                                  "{:.3g}, as the bound allows, not another rate",
+                                  *theory, table.theory.log_power));
       return;
     }
   }
