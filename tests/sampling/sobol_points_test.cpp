@@ -1,7 +1,8 @@
 // Tests of sobol_points.hpp: the generator matrices against Boost's sobol_engine bit for bit, the
 // (t, m, s)-net property of the points (unrandomized and after every randomization that keeps
-// it), uniformity and unbiasedness of each randomization, independence of replicates, and
-// bitwise reproducibility for any batch order.
+// it), uniformity and unbiasedness of each randomization, that Owen's scramble is nested and its
+// flips independent fair coins, independence of replicates, and bitwise reproducibility for any
+// batch order.
 #include "quadmc/sampling/sobol_points.hpp"
 
 #include "quadmc/core/simd_level.hpp"
@@ -349,6 +350,85 @@ TEST(SobolPoints, VectorKernelEqualsTheScalarWalkBitwise) {
   expect_kernel_equals_reference_for_all_sizes<linear_matrix_scramble>();
   expect_kernel_equals_reference_for_all_sizes<fast_owen_scramble>();
   expect_kernel_equals_reference_for_all_sizes<owen_scramble>();
+}
+
+// Owen's scramble is nested: the flip of digit b (0-based) is a function of the digits before it
+// alone, so two inputs that share their first b digits are flipped alike in digits 0 … b, for
+// every b, whatever their later digits (here depth 32, the tree's six-level hashes on every
+// level and the tail below).
+TEST(OwenScramble, FlipOfADigitDependsOnlyOnTheDigitsBeforeIt) {
+  const owen_scramble scramble(1, 32, philox_stream(11, 3));
+  std::uint64_t state = 2026;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const std::uint64_t v = mix64(state++) << 32;
+    for (unsigned b = 0; b < 32; ++b) {
+      // Keep digits 0 … b − 1, replace digits b … 31 by others.
+      const std::uint64_t keep = b == 0 ? 0 : ~std::uint64_t{0} << (64 - b);
+      const std::uint64_t w = (v & keep) | ((mix64(state++) << 32) & ~keep);
+      const std::uint64_t flips_v = scramble(v, 0) ^ v;
+      const std::uint64_t flips_w = scramble(w, 0) ^ w;
+      const std::uint64_t through_b = ~std::uint64_t{0} << (63 - b);
+      ASSERT_EQ(flips_v & through_b, flips_w & through_b) << "digit " << b;
+    }
+  }
+}
+
+// Nested *uniform*: the flips of the tree's nodes are independent fair coins. Over R = 20000
+// seeds (the keys sobol_points draws), each of 59 nodes on levels 0 … 13 flips with frequency
+// 1/2, and each of the 362 pairs of nodes on one level or adjacent levels (parent and child in
+// one six-level hash, siblings, the two sides of a hash boundary, nodes of different subtrees,
+// the prefix table's last level and the first hashed one) has x ⊕ y with frequency 1/2, which
+// for fair coins is their independence. Each count is Binomial(R, 1/2) under the claim;
+// |count − R/2| ≤ 5.3·√R/2 fails with probability 1.2e-7 per count, 4.9e-5 for the 421 counts.
+TEST(OwenScramble, NodeFlipsAreIndependentFairCoins) {
+  constexpr int R = 20000;
+  // A node: a prefix of `length` digits (as the top digits of a word), flipping digit `length`.
+  struct node {
+    std::uint64_t digits;
+    unsigned length;
+  };
+  const auto flip = [](std::uint64_t seed, node n) {
+    const std::uint64_t v = n.length == 0 ? 0 : n.digits << (64 - n.length);
+    return (owen_scramble::flips(seed, v, 0, n.length + 1) >> (63 - n.length)) & 1;
+  };
+  std::vector<node> nodes;
+  for (unsigned length = 0; length <= 13; ++length) {
+    for (const std::uint64_t digits : {0ull, 1ull, 5ull, 0x2aull, 0x1555ull}) {
+      const std::uint64_t d = length == 0 ? 0 : digits & ((std::uint64_t{1} << length) - 1);
+      const bool seen = std::any_of(nodes.begin(), nodes.end(), [&](const node& n) {
+        return n.length == length && n.digits == d;
+      });
+      if (!seen) nodes.push_back({d, length});
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    for (std::size_t b = a + 1; b < nodes.size(); ++b) {
+      const int gap = static_cast<int>(nodes[b].length) - static_cast<int>(nodes[a].length);
+      if (gap >= 0 && gap <= 1) pairs.emplace_back(a, b);  // same or adjacent levels
+    }
+  }
+  ASSERT_EQ(nodes.size(), 59u);  // the counts the false-alarm bound above is stated for
+  ASSERT_EQ(pairs.size(), 362u);
+  std::vector<int> ones(nodes.size(), 0), differ(pairs.size(), 0);
+  std::vector<std::uint64_t> x(nodes.size());
+  for (int r = 0; r < R; ++r) {
+    const std::uint64_t seed =
+        owen_scramble(1, 14, philox_stream(31, static_cast<std::uint64_t>(r))).key(0);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      ones[i] += static_cast<int>(x[i] = flip(seed, nodes[i]));
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      differ[p] += static_cast<int>(x[pairs[p].first] ^ x[pairs[p].second]);
+    }
+  }
+  const double bound = 5.3 * std::sqrt(static_cast<double>(R)) / 2.0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    EXPECT_LE(std::abs(ones[i] - R / 2), bound) << "level " << nodes[i].length;
+  }
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    EXPECT_LE(std::abs(differ[p] - R / 2), bound)
+        << "levels " << nodes[pairs[p].first].length << " and " << nodes[pairs[p].second].length;
+  }
 }
 
 TEST(SobolPoints, RejectsWhatTheTableCannotGive) {

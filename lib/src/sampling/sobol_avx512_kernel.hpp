@@ -65,45 +65,99 @@ namespace {
     x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, constant));
   }
   const __m512i high = reverse32(x);
-  const __m512i low =
-      _mm512_srli_epi64(mix64(_mm512_xor_si512(_mm512_srli_epi64(seed, 32), mix64(high))), 32);
-  return _mm512_or_si512(_mm512_slli_epi64(high, 32), low);
+  // fast_owen_scramble::low_digits: the 32-bit finaliser of the high digits ⊕ the seed's top half.
+  __m512i h = _mm512_xor_si512(high, _mm512_srli_epi64(seed, 32));
+  h = _mm512_mullo_epi32(_mm512_xor_si512(h, _mm512_srli_epi32(h, 16)),
+                         _mm512_set1_epi64(0x85ebca6bLL));
+  h = _mm512_mullo_epi32(_mm512_xor_si512(h, _mm512_srli_epi32(h, 13)),
+                         _mm512_set1_epi64(0xc2b2ae35LL));
+  h = _mm512_xor_si512(h, _mm512_srli_epi32(h, 16));
+  return _mm512_or_si512(_mm512_slli_epi64(high, 32), h);
 }
 
-// owen_scramble::operator() on 8 lanes (depth ≤ 64): the first table_digits flips by one gather
-// from the prefix table (sobol_blocks.hpp), the others hashed as the scalar code does.
-[[gnu::always_inline]] inline __m512i owen(__m512i v, __m512i seed, __m512i base,
-                                           const sobol_block_tables& t) noexcept {
+// owen_scramble::operator() on U registers of 8 lanes in lockstep (depth ≤ 32): the first
+// table_digits flips by one gather from the prefix table (sobol_blocks.hpp), the others from one
+// hash per six levels of the tree as owen_scramble::flips draws them, then the tail. Lockstep,
+// because one register's chain (gather, hash, bit picks, hash) is latency bound: U independent
+// chains interleaved keep the multiplier and the load ports busy.
+template <int U>
+[[gnu::always_inline]] inline void owen(__m512i (&w)[U], const __m512i (&seed)[U],
+                                        const __m512i (&base)[U],
+                                        const sobol_block_tables& t) noexcept {
+  const auto shift = [](unsigned count) { return _mm_cvtsi32_si128(static_cast<int>(count)); };
+  const auto word = [](std::uint64_t x) { return _mm512_set1_epi64(static_cast<long long>(x)); };
+  const auto prefix = [&](__m512i v, unsigned b) {  // owen_scramble::prefix(v, b)
+    const __m512i length = word(std::uint64_t{1} << b);
+    return b == 0 ? length : _mm512_or_si512(_mm512_srl_epi64(v, shift(64 - b)), length);
+  };
   const unsigned depth = t.depth;
   const unsigned k = t.table_digits;
-  __m512i out = v;
+  __m512i out[U];
+  for (int u = 0; u < U; ++u) out[u] = w[u];
   if (k > 0) {
-    const __m512i index =
-        _mm512_add_epi64(base, _mm512_srl_epi64(v, _mm_cvtsi32_si128(static_cast<int>(64 - k))));
-    out = _mm512_xor_si512(out, _mm512_i64gather_epi64(index, t.flips.data(), 8));
+    for (int u = 0; u < U; ++u) {
+      const __m512i index = _mm512_add_epi64(base[u], _mm512_srl_epi64(w[u], shift(64 - k)));
+      out[u] = _mm512_xor_si512(out[u], _mm512_i64gather_epi64(index, t.flips.data(), 8));
+    }
   }
-  const __m512i top = _mm512_set1_epi64(static_cast<long long>(std::uint64_t{1} << 63));
+#if defined(__AVX512VBMI__) && defined(__AVX512BITALG__)
+  // A subtree's six flips at once. Digit b0 + d flips by bit node_d = 2^d − 1 + (digits b0 …
+  // b0 + d − 1) of the subtree's hash: vpmultishiftqb puts 8 digits ending at digit b0 + d − 1
+  // into byte d (rotating the word right by 64 − b0 − d), the mask keeps d of them and 2^d − 1
+  // is added; vpshufbitqmb picks bit node_d of the hash into mask bit d; the flips of the
+  // digits in [k, depth) become bits 7 − d of a byte each, summed into one byte per lane
+  // (vpsadbw; distinct bits, so the sum is their OR) and shifted to bits 63 − b0 − d.
+  for (unsigned b0 = k - k % owen_levels_per_hash; b0 < depth; b0 += owen_levels_per_hash) {
+    std::uint64_t control = 0, keep = 0, place = 0;
+    for (unsigned d = 0; d < owen_levels_per_hash; ++d) {
+      control |= static_cast<std::uint64_t>((64 - b0 - d) & 63) << (8 * d);
+      keep |= ((std::uint64_t{1} << d) - 1) << (8 * d);
+      if (b0 + d >= k && b0 + d < depth) place |= std::uint64_t{0x80} >> d << (8 * d);
+    }
+    for (int u = 0; u < U; ++u) {
+      const __m512i tree = mix64(_mm512_xor_si512(seed[u], prefix(w[u], b0)));
+      const __m512i digits = _mm512_multishift_epi64_epi8(word(control), w[u]);
+      const __m512i node = _mm512_add_epi8(_mm512_and_si512(digits, word(keep)), word(keep));
+      const __mmask64 flips = _mm512_bitshuffle_epi64_mask(tree, node);
+      const __m512i bits =
+          _mm512_sad_epu8(_mm512_maskz_mov_epi8(flips, word(place)), _mm512_setzero_si512());
+      out[u] = _mm512_xor_si512(out[u], _mm512_sll_epi64(bits, shift(56 - b0)));
+    }
+  }
+#else
+  // Digit b = b0 + d (d < 6) flips by bit node = 2^d − 1 + (digits b0 … b − 1) of the subtree's
+  // hash, moved to bit 63 − b by one rotation: left by (63 − b − node) mod 64, which vprolvq
+  // takes from the low 6 bits of its count, so the count is K − (digits b0 … b − 1) with
+  // K = 63 − b − 2^d + 1, unreduced.
+  __m512i tree[U], digits[U];
   for (unsigned b = k; b < depth; ++b) {
-    const __m512i length = _mm512_set1_epi64(static_cast<long long>(std::uint64_t{1} << b));
-    const __m512i prefix =
-        b == 0 ? length : _mm512_or_si512(_mm512_srl_epi64(v, _mm_cvtsi32_si128(64 - b)), length);
-    const __m512i flip = _mm512_and_si512(mix64(_mm512_xor_si512(seed, prefix)), top);
-    out = _mm512_xor_si512(out, _mm512_srl_epi64(flip, _mm_cvtsi32_si128(static_cast<int>(b))));
+    const unsigned d = b % owen_levels_per_hash;
+    const unsigned b0 = b - d;
+    if (d == 0 || b == k) {
+      for (int u = 0; u < U; ++u) {
+        tree[u] = mix64(_mm512_xor_si512(seed[u], prefix(w[u], b0)));
+        // The subtree's six digits b0 … b0 + 5 as an integer, the first one highest.
+        digits[u] = _mm512_and_si512(_mm512_srl_epi64(w[u], shift(58 - b0)), word(63));
+      }
+    }
+    const __m512i at = word(std::uint64_t{1} << (63 - b));
+    const std::uint64_t count = (63 - b) - ((std::uint64_t{1} << d) - 1);
+    for (int u = 0; u < U; ++u) {
+      const __m512i above = _mm512_srl_epi64(digits[u], shift(6 - d));
+      const __m512i flip = _mm512_rolv_epi64(tree[u], _mm512_sub_epi64(word(count), above));
+      out[u] = _mm512_ternarylogic_epi64(out[u], flip, at, 0x78);  // out ^ (flip & at)
+    }
   }
+#endif
   if (depth < 64) {
-    const __m512i length = _mm512_set1_epi64(static_cast<long long>(std::uint64_t{1} << depth));
-    const __m512i prefix =
-        depth == 0
-            ? length
-            : _mm512_or_si512(_mm512_srl_epi64(v, _mm_cvtsi32_si128(static_cast<int>(64 - depth))),
-                              length);
-    const __m512i tail = mix64(_mm512_xor_si512(
-        seed, mix64(_mm512_xor_si512(
-                  prefix, _mm512_set1_epi64(static_cast<long long>(0xa0761d6478bd642fULL))))));
-    const __m512i low = _mm512_set1_epi64(static_cast<long long>(~std::uint64_t{0} >> depth));
-    out = _mm512_ternarylogic_epi64(tail, out, low, 0xe4);  // low ? tail : out
+    const __m512i low = word(~std::uint64_t{0} >> depth);
+    for (int u = 0; u < U; ++u) {
+      const __m512i tail = mix64(_mm512_xor_si512(_mm512_xor_si512(seed[u], prefix(w[u], depth)),
+                                                  word(0xa0761d6478bd642fULL)));
+      out[u] = _mm512_ternarylogic_epi64(tail, out[u], low, 0xe4);  // low ? tail : out
+    }
   }
-  return out;
+  for (int u = 0; u < U; ++u) w[u] = out[u];
 }
 
 // Lanes [w0, w0 + 8·V) of `blocks` blocks from block q on; the last register keeps only the
@@ -134,26 +188,49 @@ void run(const sobol_block_tables& t, std::size_t w0, __mmask8 tail, std::uint64
   }
   // From block q to q + 1: one step row (sobol_blocks.hpp); with B = 1 it is a column.
   const std::uint64_t* steps = (t.log2_block > 0 ? t.steps.data() : t.rows.data()) + w0;
-  const __m512d scale = _mm512_set1_pd(0x1.0p-53);
-  for (std::uint64_t b = 0;; ++b) {
-    for (int v = 0; v < V; ++v) {
-      __m512i w = _mm512_xor_si512(y[v], offset[v]);
-      if constexpr (S == sobol_scramble::fast_owen) w = fast_owen(w, key[v]);
-      if constexpr (S == sobol_scramble::owen) w = owen(w, key[v], base[v], t);
-      const __m512d x = _mm512_mul_pd(_mm512_cvtepu64_pd(_mm512_srli_epi64(w, 11)), scale);
-      if (v + 1 == V) {
-        _mm512_mask_storeu_pd(out + 8 * v, tail, x);
-      } else {
-        _mm512_storeu_pd(out + 8 * v, x);
-      }
-    }
-    if (b + 1 == blocks) break;
-    out += words;
+  const auto advance = [&](std::uint64_t b) {  // y: block q + b → q + b + 1
     const std::uint64_t* row = steps + std::countr_zero(q + b + 1) * words;
     for (int v = 0; v < V; ++v) {
       const __mmask8 m = v + 1 == V ? tail : __mmask8{0xff};
       y[v] = _mm512_xor_si512(y[v], _mm512_maskz_loadu_epi64(m, row + 8 * v));
     }
+  };
+  const auto store = [&](double* to, int v, __m512i w) {
+    const __m512d x =
+        _mm512_mul_pd(_mm512_cvtepu64_pd(_mm512_srli_epi64(w, 11)), _mm512_set1_pd(0x1.0p-53));
+    if (v + 1 == V) {
+      _mm512_mask_storeu_pd(to + 8 * v, tail, x);
+    } else {
+      _mm512_storeu_pd(to + 8 * v, x);
+    }
+  };
+  std::uint64_t b = 0;
+  if constexpr (S == sobol_scramble::owen && V == 1) {
+    // One register a block (s = 1, 2, 4, 8): four consecutive blocks in lockstep.
+    const __m512i seed[4] = {key[0], key[0], key[0], key[0]};
+    const __m512i bases[4] = {base[0], base[0], base[0], base[0]};
+    for (; b + 4 <= blocks; b += 4) {
+      __m512i w[4];
+      for (int u = 0; u < 4; ++u) {
+        w[u] = _mm512_xor_si512(y[0], offset[0]);
+        if (b + u + 1 < blocks) advance(b + u);
+      }
+      owen<4>(w, seed, bases, t);
+      for (int u = 0; u < 4; ++u) store(out + u * words, 0, w[u]);
+      out += 4 * words;
+    }
+  }
+  for (; b < blocks; ++b) {
+    __m512i w[V];
+    for (int v = 0; v < V; ++v) {
+      w[v] = _mm512_xor_si512(y[v], offset[v]);
+      if constexpr (S == sobol_scramble::fast_owen) w[v] = fast_owen(w[v], key[v]);
+    }
+    if constexpr (S == sobol_scramble::owen) owen<V>(w, key, base, t);
+    for (int v = 0; v < V; ++v) store(out, v, w[v]);
+    if (b + 1 == blocks) break;
+    out += words;
+    advance(b);
   }
 }
 

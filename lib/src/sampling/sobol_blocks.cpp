@@ -3,8 +3,8 @@
 // only the speed (tests/sampling/sobol_points_test.cpp compares them bitwise).
 #include "quadmc/sampling/sobol_blocks.hpp"
 
-#include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
+#include "quadmc/sampling/sobol_points.hpp"
 #include "sobol_kernels.hpp"
 
 #include <atomic>
@@ -39,20 +39,16 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
     }
   }
   if (scramble == sobol_scramble::owen) {
-    // Built from owen_scramble's definition directly: 2^k·k hashes per dimension, no more than the
-    // points themselves cost when k = depth ≤ log2 N.
+    // owen_scramble's own flips of the first k digits: 2^k·⌈k/6⌉ hashes per dimension, no more
+    // than the points themselves cost when k = depth ≤ log2 N.
     unsigned k = depth < 12 ? depth : 12;
     while (k > 0 && (s << k) > (std::size_t{1} << 17)) --k;
     t.table_digits = k;
     t.flips.resize(s << k);
     for (std::size_t j = 0; j < s; ++j) {
       for (std::uint64_t p = 0; p < (std::uint64_t{1} << k); ++p) {
-        std::uint64_t mask = 0;
-        for (unsigned b = 0; b < k; ++b) {
-          const std::uint64_t prefix = b == 0 ? 1 : ((p >> (k - b)) | (std::uint64_t{1} << b));
-          mask ^= (mix64(keys[j] ^ prefix) >> 63) << (63 - b);
-        }
-        t.flips[(j << k) + p] = mask;
+        // k ≥ 1 here, so p << (64 − k) is defined: the prefix p as the top k digits.
+        t.flips[(j << k) + p] = owen_scramble::flips(keys[j], p << (64 - k), 0, k);
       }
     }
     t.flip_base.resize(t.words);
@@ -83,7 +79,11 @@ bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t bl
 #if defined(__x86_64__)
   // vpmullq and vcvtuqq2pd are AVX-512DQ, which the avx512 level (AVX512F) does not imply.
   static const bool has_avx512dq = __builtin_cpu_supports("avx512dq");
-  static const bool has_gfni = __builtin_cpu_supports("gfni") && __builtin_cpu_supports("avx512bw");
+  // The GFNI build also takes owen's tree six levels at a time with AVX512_VBMI and _BITALG, which
+  // every CPU with GFNI and AVX-512 so far also has (Ice Lake, Zen 4).
+  static const bool has_gfni =
+      __builtin_cpu_supports("gfni") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx512bitalg");
   if (active_simd_level() == simd_level::avx512 && has_avx512dq) {
     if (has_gfni && gfni_allowed.load(std::memory_order_relaxed)) {
       sobol_blocks_avx512_gfni(t, q, blocks, out);

@@ -70,19 +70,29 @@ namespace {
     x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, constant));
   }
   const __m256i high = reverse32(x);
-  const __m256i low =
-      _mm256_srli_epi64(mix64(_mm256_xor_si256(_mm256_srli_epi64(seed, 32), mix64(high))), 32);
-  return _mm256_or_si256(_mm256_slli_epi64(high, 32), low);
+  // fast_owen_scramble::low_digits: the 32-bit finaliser of the high digits ⊕ the seed's top half.
+  __m256i h = _mm256_xor_si256(high, _mm256_srli_epi64(seed, 32));
+  h = _mm256_mullo_epi32(_mm256_xor_si256(h, _mm256_srli_epi32(h, 16)),
+                         _mm256_set1_epi64x(0x85ebca6bLL));
+  h = _mm256_mullo_epi32(_mm256_xor_si256(h, _mm256_srli_epi32(h, 13)),
+                         _mm256_set1_epi64x(0xc2b2ae35LL));
+  h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 16));
+  return _mm256_or_si256(_mm256_slli_epi64(high, 32), h);
 }
 
 [[gnu::always_inline]] inline __m256i shift_right(__m256i v, unsigned count) noexcept {
   return _mm256_srl_epi64(v, _mm_cvtsi32_si128(static_cast<int>(count)));
 }
 
-// owen_scramble::operator() on 4 lanes (depth ≤ 64): the first table_digits flips by one gather
-// from the prefix table (sobol_blocks.hpp), the others hashed as the scalar code does.
+// owen_scramble::operator() on 4 lanes (depth ≤ 32), as the AVX-512 kernel's owen(): the prefix
+// table, one hash per six levels of the tree (owen_scramble::flips), the tail.
 [[gnu::always_inline]] inline __m256i owen(__m256i v, __m256i seed, __m256i base,
                                            const sobol_block_tables& t) noexcept {
+  const auto word = [](std::uint64_t x) { return _mm256_set1_epi64x(static_cast<long long>(x)); };
+  const auto prefix = [&](unsigned b) {  // owen_scramble::prefix(v, b)
+    const __m256i length = word(std::uint64_t{1} << b);
+    return b == 0 ? length : _mm256_or_si256(shift_right(v, 64 - b), length);
+  };
   const unsigned depth = t.depth;
   const unsigned k = t.table_digits;
   __m256i out = v;
@@ -91,21 +101,28 @@ namespace {
     const auto* flips = reinterpret_cast<const long long*>(t.flips.data());
     out = _mm256_xor_si256(out, _mm256_i64gather_epi64(flips, index, 8));
   }
-  const __m256i top = _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{1} << 63));
+  // Digit b = b0 + d (d < 6) flips by bit node = 2^d − 1 + (digits b0 … b − 1) of the subtree's
+  // hash (owen_scramble::flips).
+  const __m256i one = word(1);
+  __m256i tree = _mm256_setzero_si256(), digits = _mm256_setzero_si256();
   for (unsigned b = k; b < depth; ++b) {
-    const __m256i length = _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{1} << b));
-    const __m256i prefix = b == 0 ? length : _mm256_or_si256(shift_right(v, 64 - b), length);
-    const __m256i flip = _mm256_and_si256(mix64(_mm256_xor_si256(seed, prefix)), top);
-    out = _mm256_xor_si256(out, shift_right(flip, b));
+    const unsigned d = b % owen_levels_per_hash;
+    const unsigned b0 = b - d;
+    if (d == 0 || b == k) {
+      tree = mix64(_mm256_xor_si256(seed, prefix(b0)));
+      // The subtree's six digits b0 … b0 + 5 as an integer, the first one highest.
+      digits = _mm256_and_si256(shift_right(v, 58 - b0), word(63));
+    }
+    const __m256i node =
+        _mm256_add_epi64(shift_right(digits, 6 - d), word((std::uint64_t{1} << d) - 1));
+    const __m256i flip = _mm256_and_si256(_mm256_srlv_epi64(tree, node), one);
+    out =
+        _mm256_xor_si256(out, _mm256_sll_epi64(flip, _mm_cvtsi32_si128(static_cast<int>(63 - b))));
   }
   if (depth < 64) {
-    const __m256i length = _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{1} << depth));
-    const __m256i prefix =
-        depth == 0 ? length : _mm256_or_si256(shift_right(v, 64 - depth), length);
-    const __m256i tail = mix64(_mm256_xor_si256(
-        seed, mix64(_mm256_xor_si256(
-                  prefix, _mm256_set1_epi64x(static_cast<long long>(0xa0761d6478bd642fULL))))));
-    const __m256i low = _mm256_set1_epi64x(static_cast<long long>(~std::uint64_t{0} >> depth));
+    const __m256i tail =
+        mix64(_mm256_xor_si256(_mm256_xor_si256(seed, prefix(depth)), word(0xa0761d6478bd642fULL)));
+    const __m256i low = word(~std::uint64_t{0} >> depth);
     out = _mm256_or_si256(_mm256_and_si256(low, tail), _mm256_andnot_si256(low, out));
   }
   return out;

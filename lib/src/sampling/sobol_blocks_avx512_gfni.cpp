@@ -1,6 +1,7 @@
-// The AVX-512 Sobol' kernel (sobol_avx512_kernel.hpp) with GFNI bit reversals, for CPUs
-// with AVX512F, AVX512DQ, AVX512BW and GFNI. Compiled with those four flags (lib/CMakeLists.txt);
-// called only when the CPU has all four (sobol_blocks.cpp).
+// The AVX-512 Sobol' kernel (sobol_avx512_kernel.hpp) with GFNI bit reversals and owen's tree
+// six levels at a time (AVX512_VBMI's vpmultishiftqb, AVX512_BITALG's vpshufbitqmb), for CPUs
+// with AVX512F, AVX512DQ, AVX512BW, AVX512_VBMI, AVX512_BITALG and GFNI. Compiled with those six
+// flags (lib/CMakeLists.txt); called only when the CPU has all six (sobol_blocks.cpp).
 #if defined(__x86_64__)
 #include "sobol_avx512_kernel.hpp"
 

@@ -27,6 +27,11 @@ namespace quadmc::detail {
 // per dimension.
 enum class sobol_scramble { xor_constant, fast_owen, owen };
 
+// Levels of owen_scramble's flip tree drawn from one 64-bit hash: 1 + 2 + … + 32 = 63 nodes.
+// Here rather than in sobol_points.hpp, which the kernels (built for other instruction sets)
+// must not include: its inline functions would be compiled with those sets.
+inline constexpr unsigned owen_levels_per_hash = 6;
+
 struct sobol_block_tables {
   std::size_t s = 0;
   unsigned log2_block = 0;  // B = 2^log2_block points per block
@@ -34,9 +39,10 @@ struct sobol_block_tables {
   sobol_scramble scramble = sobol_scramble::xor_constant;
   unsigned depth = 0;  // owen: digits drawn one by one (owen_scramble)
   // owen: the flips of the first `table_digits` digits for every prefix of that length, one table
-  // of 2^table_digits words per dimension (bit 63 − b = the flip of digit b, exactly the
-  // mix64(seed ⊕ prefix) bits of owen_scramble): one gather replaces table_digits hashes per
-  // coordinate. table_digits ≤ 12 and the tables ≤ 1 MiB together (s·2^table_digits ≤ 2^17).
+  // of 2^table_digits words per dimension (bit 63 − b = the flip of digit b, exactly
+  // owen_scramble::flips of the prefix): one gather replaces ⌈table_digits/6⌉ hashes and the
+  // tree's bit picks per coordinate. table_digits ≤ 12 and the tables ≤ 1 MiB together
+  // (s·2^table_digits ≤ 2^17).
   unsigned table_digits = 0;
   std::vector<std::uint64_t> flips;
   std::vector<std::uint64_t> flip_base;  // `words`: j·2^table_digits for the lane's dimension j
@@ -58,9 +64,10 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
 bool sobol_blocks(const sobol_block_tables& t, std::uint64_t q, std::uint64_t blocks,
                   double* out) noexcept;
 
-// Whether the AVX-512 kernel may take its GFNI build where the CPU has GFNI and AVX512BW (the
-// default, true). For tests: with false, a CPU with GFNI runs the plain AVX-512 build too, the
-// one a CPU without GFNI gets, so both are checked against the scalar walk on one machine.
+// Whether the AVX-512 kernel may take its GFNI build where the CPU has GFNI, AVX512BW,
+// AVX512_VBMI and AVX512_BITALG (the default, true). For tests: with false, a CPU with GFNI runs
+// the plain AVX-512 build too, the one a CPU without GFNI gets, so both are checked against the
+// scalar walk on one machine.
 void allow_sobol_gfni(bool allowed) noexcept;
 
 }  // namespace quadmc::detail

@@ -159,15 +159,23 @@ class linear_matrix_scramble {
 
 // Nested uniform scrambling in base 2 ([Owen 1995]), exact: digit b of the output is digit b of
 // the input flipped by a random bit that depends on (seed, dimension, the input's first b − 1
-// digits), as pbrt-v4's OwenScrambler does with a hash of the prefix. Flips are drawn for the
-// first `depth` digits only: past that depth every point of the set has its own prefix, so the
-// later flips of different points are independent, and the remaining digits are exactly as
-// random as one uniform word drawn per point from its depth-digit prefix (the same
-// distribution, one hash instead of 64 − depth). Unbiased, and a scrambled (t, m, s)-net stays a
-// (t, m, s)-net with probability 1; RMSE O(N^(−3/2)(log N)^((s−1)/2)) for smooth f ([Owen 1997b]).
+// digits). The flips are the nodes of a binary tree (the root flips digit 1, the node reached by
+// the first b digits flips digit b + 1), drawn six levels at a time: one keyed hash of the prefix
+// at a level 6g gives 64 random bits, and bit `node` of it is the flip of the node `node` of
+// the 63-node subtree below that prefix (nodes numbered level by level, 2^d − 1 + the d digits
+// below the prefix at level d < 6). Every node has its own bit of its own hash, so the flips are
+// independent as the hash's bits are (pbrt-v4's OwenScrambler hashes every prefix alone; six
+// levels per hash draw the same tree for a sixth of the hashes, docs/theory.md#scrambled-nets).
+// Flips are drawn for the first `depth` digits only: past that depth every point of the set has
+// its own prefix, so the later flips of different points are independent, and the remaining
+// digits are exactly as random as one uniform word drawn per point from its depth-digit prefix
+// (the same distribution, one hash instead of 64 − depth). Unbiased, and a scrambled (t, m, s)-net
+// stays a (t, m, s)-net with probability 1; RMSE O(N^(−3/2)(log N)^((s−1)/2)) for smooth f
+// ([Owen 1997b]).
 class owen_scramble {
  public:
   static constexpr bool random = true;
+  static constexpr unsigned levels_per_hash = detail::owen_levels_per_hash;  // 63 nodes a hash
   owen_scramble(std::size_t s, unsigned depth, const philox_stream& rng)
       : seed_(s), depth_(depth < 64 ? depth : 64) {
     for (std::size_t j = 0; j < s; ++j) seed_[j] = randomization_key(rng, j);
@@ -178,23 +186,37 @@ class owen_scramble {
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t j) const noexcept {
     const std::uint64_t seed = seed_[j];
-    std::uint64_t out = v;
-    for (unsigned b = 0; b < depth_; ++b) {
-      // The prefix of length b with a leading 1 marking its length, so that prefixes of
-      // different lengths are different keys; one keyed mix per digit, as pbrt-v4's
-      // OwenScrambler hashes (prefix ⊕ seed) once (mix64 is a bijection: distinct prefixes give
-      // distinct words, whose top bits are the flips).
-      const std::uint64_t prefix = b == 0 ? 1 : ((v >> (64 - b)) | (std::uint64_t{1} << b));
-      out ^= (mix64(seed ^ prefix) >> 63) << (63 - b);
-    }
+    std::uint64_t out = v ^ flips(seed, v, 0, depth_);
     if (depth_ < 64) {
-      const std::uint64_t prefix =
-          depth_ == 0 ? 1 : ((v >> (64 - depth_)) | (std::uint64_t{1} << depth_));
-      const std::uint64_t tail = mix64(seed ^ mix64(prefix ^ 0xa0761d6478bd642fULL));
+      // The tail's key has bit 63 set, which no subtree key (a prefix of ≤ 32 digits below
+      // its marker bit) has: a hash of its own.
+      const std::uint64_t tail = mix64(seed ^ prefix(v, depth_) ^ 0xa0761d6478bd642fULL);
       const std::uint64_t low = ~std::uint64_t{0} >> depth_;  // depth_ < 64
       out = (out & ~low) | (tail & low);
     }
     return out;
+  }
+
+  // The flips of digits first + 1 … last (0-based b in [first, last)) of v, at their bits 63 − b:
+  // the scramble's tree as the vector kernel's prefix table (sampling/sobol_blocks.hpp) reads it.
+  static std::uint64_t flips(std::uint64_t seed, std::uint64_t v, unsigned first,
+                             unsigned last) noexcept {
+    std::uint64_t out = 0;
+    std::uint64_t tree = 0;
+    for (unsigned b = first; b < last; ++b) {
+      const unsigned d = b % levels_per_hash;
+      if (d == 0 || b == first) tree = mix64(seed ^ prefix(v, b - d));
+      const std::uint64_t below = d == 0 ? 0 : (v >> (64 - b)) & ((std::uint64_t{1} << d) - 1);
+      const auto node = static_cast<unsigned>((std::uint64_t{1} << d) - 1 + below);
+      out |= ((tree >> node) & 1) << (63 - b);
+    }
+    return out;
+  }
+
+  // The first b digits of v with a leading 1 marking their count, so that prefixes of different
+  // lengths are different keys (mix64 is a bijection: distinct keys give distinct words).
+  static std::uint64_t prefix(std::uint64_t v, unsigned b) noexcept {
+    return b == 0 ? 1 : ((v >> (64 - b)) | (std::uint64_t{1} << b));
   }
 
  private:
@@ -209,7 +231,7 @@ class owen_scramble {
 // only on the digits before it, as in a nested scramble. It is NOT exactly nested uniform (the
 // flips of different prefixes are not independent), so Owen's variance results do not carry
 // over and no rate is claimed for it (docs/theory.md#scrambled-nets). Digits 33…64 come from a
-// hash of the point's scrambled 32 digits, distinct for every point of N ≤ 2^32.
+// keyed 32-bit hash of the point's scrambled 32 digits, distinct for every point of N ≤ 2^32.
 class fast_owen_scramble {
  public:
   static constexpr bool random = true;
@@ -229,8 +251,17 @@ class fast_owen_scramble {
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     const std::uint32_t high = reverse(x);
-    const std::uint64_t low = mix64((seed >> 32) ^ mix64(high)) >> 32;
-    return (static_cast<std::uint64_t>(high) << 32) | low;
+    return (static_cast<std::uint64_t>(high) << 32) | low_digits(high, seed);
+  }
+
+  // Digits 33…64: MurmurHash3's 32-bit finaliser [Appleby 2011], a bijection, of the scrambled
+  // digits keyed by the seed's other half: uniform for a uniform seed, distinct for every point,
+  // and 32-bit arithmetic throughout (a 64-bit mixer costs the vector kernels several times more).
+  static std::uint32_t low_digits(std::uint32_t high, std::uint64_t seed) noexcept {
+    std::uint32_t h = high ^ static_cast<std::uint32_t>(seed >> 32);
+    h = (h ^ (h >> 16)) * 0x85ebca6bu;
+    h = (h ^ (h >> 13)) * 0xc2b2ae35u;
+    return h ^ (h >> 16);
   }
 
  private:
