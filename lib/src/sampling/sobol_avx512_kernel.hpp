@@ -75,6 +75,39 @@ namespace {
   return _mm512_or_si512(_mm512_slli_epi64(high, 32), h);
 }
 
+// fast_owen on two registers at once: their 32-bit work (Burley's rounds, the finaliser) on the
+// 16 lanes of one, where fast_owen() leaves half of every register's lanes empty. `low` and
+// `high` hold the two halves of the seeds of a's 8 lanes, then b's (fast_owen_seeds).
+[[gnu::always_inline]] inline void fast_owen_pair(__m512i& a, __m512i& b, __m512i low,
+                                                  __m512i high) noexcept {
+  const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+  __m512i x = reverse32(_mm512_permutex2var_epi32(a, odd, b));  // digits 1…32, reversed
+  x = _mm512_add_epi32(x, low);
+  for (const unsigned c : {0x6c50b47cu, 0xb82f1e52u, 0xc7afe638u, 0x8d22f6e6u}) {
+    x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(static_cast<int>(c))));
+  }
+  const __m512i digits = reverse32(x);
+  __m512i h = _mm512_xor_si512(digits, high);
+  h = _mm512_mullo_epi32(_mm512_xor_si512(h, _mm512_srli_epi32(h, 16)),
+                         _mm512_set1_epi32(static_cast<int>(0x85ebca6bu)));
+  h = _mm512_mullo_epi32(_mm512_xor_si512(h, _mm512_srli_epi32(h, 13)),
+                         _mm512_set1_epi32(static_cast<int>(0xc2b2ae35u)));
+  h = _mm512_xor_si512(h, _mm512_srli_epi32(h, 16));
+  // Back to 64-bit words: the finaliser's word low, the scrambled digits high.
+  a = _mm512_permutex2var_epi32(
+      h, _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23), digits);
+  b = _mm512_permutex2var_epi32(
+      h, _mm512_setr_epi32(8, 24, 9, 25, 10, 26, 11, 27, 12, 28, 13, 29, 14, 30, 15, 31), digits);
+}
+
+// The seeds of fast_owen_pair(a, b) from the 8-lane keys of a and b: low halves, high halves.
+inline void fast_owen_seeds(__m512i key_a, __m512i key_b, __m512i& low, __m512i& high) noexcept {
+  low = _mm512_permutex2var_epi32(
+      key_a, _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30), key_b);
+  high = _mm512_permutex2var_epi32(
+      key_a, _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31), key_b);
+}
+
 // owen_scramble::operator() on U registers of 8 lanes in lockstep (depth ≤ 32): the first
 // table_digits flips by one gather from the prefix table (sobol_blocks.hpp), the others from one
 // hash per six levels of the tree as owen_scramble::flips draws them, then the tail. Lockstep,
@@ -160,6 +193,36 @@ template <int U>
   for (int u = 0; u < U; ++u) w[u] = out[u];
 }
 
+// The nonlinear scramble of R registers whose register i holds lanes of register i mod V of a
+// block (R = U·V: U blocks in lockstep), its seeds arranged once per run: fast_owen in pairs of
+// registers (fast_owen_pair), owen all R in lockstep.
+template <int R, int V, sobol_scramble S>
+class scrambler {
+ public:
+  scrambler(const __m512i (&key)[V], const __m512i (&base)[V], const sobol_block_tables& t) noexcept
+      : t_(t) {
+    for (int i = 0; i < R; ++i) {
+      key_[i] = key[i % V];
+      base_[i] = base[i % V];
+    }
+    for (int p = 0; p < R / 2; ++p)
+      fast_owen_seeds(key_[2 * p], key_[2 * p + 1], low_[p], high_[p]);
+  }
+  [[gnu::always_inline]] void operator()(__m512i (&w)[R]) const noexcept {
+    if constexpr (S == sobol_scramble::owen) {
+      owen<R>(w, key_, base_, t_);
+    } else {
+      for (int p = 0; p < R / 2; ++p) fast_owen_pair(w[2 * p], w[2 * p + 1], low_[p], high_[p]);
+      if constexpr (R % 2 == 1) w[R - 1] = fast_owen(w[R - 1], key_[R - 1]);
+    }
+  }
+
+ private:
+  const sobol_block_tables& t_;
+  __m512i key_[R], base_[R];
+  __m512i low_[R / 2 > 0 ? R / 2 : 1], high_[R / 2 > 0 ? R / 2 : 1];
+};
+
 // Lanes [w0, w0 + 8·V) of `blocks` blocks from block q on; the last register keeps only the
 // lanes of `tail`. out points at lane w0 of block q; consecutive blocks are t.words apart.
 template <int V, sobol_scramble S>
@@ -205,32 +268,41 @@ void run(const sobol_block_tables& t, std::size_t w0, __mmask8 tail, std::uint64
     }
   };
   std::uint64_t b = 0;
-  if constexpr (S == sobol_scramble::owen && V == 1) {
-    // One register a block (s = 1, 2, 4, 8): four consecutive blocks in lockstep.
-    const __m512i seed[4] = {key[0], key[0], key[0], key[0]};
-    const __m512i bases[4] = {base[0], base[0], base[0], base[0]};
-    for (; b + 4 <= blocks; b += 4) {
-      __m512i w[4];
-      for (int u = 0; u < 4; ++u) {
-        w[u] = _mm512_xor_si512(y[0], offset[0]);
+  if constexpr (S == sobol_scramble::xor_constant) {
+    for (;; ++b) {
+      for (int v = 0; v < V; ++v) store(out, v, _mm512_xor_si512(y[v], offset[v]));
+      if (b + 1 == blocks) break;
+      out += words;
+      advance(b);
+    }
+  } else {
+    // The scrambles run U blocks' registers in lockstep (four registers where a block has one or
+    // two: s ≤ 8 with 8 | s, s in 9…16), the blocks left over one at a time.
+    constexpr int U = V <= 2 ? 4 / V : 1;
+    const scrambler<U * V, V, S> lockstep(key, base, t);
+    for (; b + U <= blocks; b += U) {
+      __m512i w[U * V];
+      for (int u = 0; u < U; ++u) {
+        for (int v = 0; v < V; ++v) w[u * V + v] = _mm512_xor_si512(y[v], offset[v]);
         if (b + u + 1 < blocks) advance(b + u);
       }
-      owen<4>(w, seed, bases, t);
-      for (int u = 0; u < 4; ++u) store(out + u * words, 0, w[u]);
-      out += 4 * words;
+      lockstep(w);
+      for (int u = 0; u < U; ++u) {
+        for (int v = 0; v < V; ++v) store(out + u * words, v, w[u * V + v]);
+      }
+      out += U * words;
     }
-  }
-  for (; b < blocks; ++b) {
-    __m512i w[V];
-    for (int v = 0; v < V; ++v) {
-      w[v] = _mm512_xor_si512(y[v], offset[v]);
-      if constexpr (S == sobol_scramble::fast_owen) w[v] = fast_owen(w[v], key[v]);
+    if constexpr (U > 1) {
+      const scrambler<V, V, S> one(key, base, t);
+      for (; b < blocks; ++b) {
+        __m512i w[V];
+        for (int v = 0; v < V; ++v) w[v] = _mm512_xor_si512(y[v], offset[v]);
+        one(w);
+        for (int v = 0; v < V; ++v) store(out, v, w[v]);
+        out += words;
+        if (b + 1 < blocks) advance(b);
+      }
     }
-    if constexpr (S == sobol_scramble::owen) owen<V>(w, key, base, t);
-    for (int v = 0; v < V; ++v) store(out, v, w[v]);
-    if (b + 1 == blocks) break;
-    out += words;
-    advance(b);
   }
 }
 
