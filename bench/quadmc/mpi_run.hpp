@@ -17,6 +17,10 @@
 // gathers every cell's repetitions and files them in plan order (scene/run.hpp, run_assembly), and
 // every CSV column but the timing is what one process writes.
 //
+// After the cells: only rank 0 goes on (run_scene's analysis and paired timing, the results
+// folder); the others wait for it in finish(), which sleeps between polls, so that rank 0 times
+// the time-to-error pairs on cores nothing else is using (scene/cell_scheduler.hpp).
+//
 // Faults: a rank whose cell fails (bad input found late, a non-finite value) stops running
 // cells, and the failure reaches rank 0 with the gather; rank 0 then raises the error of the
 // failing cell with the lowest plan index, writes nothing, and every rank exits 1. A killed rank
@@ -54,7 +58,8 @@ using quadmc::split_policy;
 // MPI_Init when built with MPI and started by mpirun. Without the MPI build, a process started
 // by mpirun throws (one line: mpirun needs the MPI build). Call once, first thing in main.
 world start(int& argc, char**& argv);
-// MPI_Finalize (when started); safe to call when start() did nothing.
+// A barrier of every rank, polled with a millisecond's sleep, then MPI_Finalize (when started);
+// safe to call when start() did nothing.
 void finish() noexcept;
 // Whether this binary was built with MPI.
 bool built_with_mpi() noexcept;

@@ -165,6 +165,50 @@ TEST(MpiRun, TwoAndThreeRanksWriteWhatOneProcessWrites) {
   }
 }
 
+// A time-to-error scene under mpirun: rank 0 times the winners' pairs after the cells (the other
+// ranks wait for it), so the folder has time_to_error_pairs.csv with every round, and the page
+// says where they were timed. The "peer" is genz_malik under a `peer_` label, which makes it one
+// by name (the plain command has no real peers).
+TEST(MpiRun, RankZeroTimesTheTimeToErrorPairs) {
+  scratch_folder dir;
+  write_text(dir / "scene.toml", R"(name = "pairs"
+threads = 1
+[[integrand]]
+family = "genz_gaussian"
+dimensions = [2, 3]
+[[method]]
+name = "genz_malik"
+control = "tolerance"
+tolerance_kind = "relative"
+tolerances = [1e-3, 1e-6]
+[[method]]
+name = "genz_malik"
+label = "peer_twin"
+control = "tolerance"
+tolerance_kind = "relative"
+tolerances = [1e-3, 1e-6]
+[budget]
+N = [64]
+timing_min_seconds = 0.001
+[output]
+plots = false
+)");
+  const command_result r =
+      run_ranks(dir, 2, {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_status, 0) << describe(r);
+  EXPECT_TRUE(quadmc_lines(r.err).empty()) << describe(r);
+  const std::vector<std::string> rounds =
+      csv_column_text(dir / "out" / "time_to_error_pairs.csv", "rounds");
+  ASSERT_FALSE(rounds.empty()) << describe(r);
+  for (const std::string& k : rounds) EXPECT_EQ(k, "5");
+  const std::vector<std::string> peers =
+      csv_column_text(dir / "out" / "time_to_error_pairs.csv", "peer_method");
+  for (const std::string& p : peers) EXPECT_EQ(p, "peer_twin");
+  const std::string page = read_text(dir / "out" / "README.md");
+  EXPECT_NE(page.find("over 5 alternating runs)"), std::string::npos) << page;
+  EXPECT_NE(page.find("on MPI rank 0 while the other ranks waited idle"), std::string::npos);
+}
+
 // A rank killed in the middle of the run (rank 1 here, by a shell that starts it and sends
 // SIGKILL two seconds later): mpirun ends the others, rank 0 removes its staging folder, the run
 // exits non-zero and no results folder is written. (A cell that throws on one rank is tested in

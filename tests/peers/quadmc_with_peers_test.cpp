@@ -50,6 +50,19 @@ TEST(QuadmcWithPeers, RunsASceneNamingPeersBesideTheSuitesMethods) {
   EXPECT_EQ(hcubature, 2) << "one cell per tolerance";
   EXPECT_EQ(vegas, 2) << "one cell per N";
   EXPECT_EQ(genz_malik, 2);
+  // The page's time-to-error ratios are paired: quadmc's best and the best peer timed again
+  // alternately, 5 rounds (budget.paired_timing_rounds' default), every round in the CSV.
+  const fs::path pairs = dir / "out" / "time_to_error_pairs.csv";
+  ASSERT_TRUE(fs::exists(pairs)) << describe(r);
+  const std::vector<std::string> rounds = csv_column_text(pairs, "rounds");
+  ASSERT_FALSE(rounds.empty());
+  for (const std::string& k : rounds) EXPECT_EQ(k, "5");
+  for (const std::string& m : csv_column_text(pairs, "quadmc_method")) EXPECT_EQ(m, "genz_malik");
+  for (const std::string& ratios : csv_column_text(pairs, "ratios")) {
+    EXPECT_EQ(std::count(ratios.begin(), ratios.end(), ';'), 4) << ratios;
+  }
+  const std::string page = read_text(dir / "out" / "README.md");
+  EXPECT_NE(page.find("over 5 alternating runs) |"), std::string::npos) << page;
 }
 
 TEST(QuadmcWithPeers, ThePlainCommandRefusesTheSameSceneAtPlanTime) {

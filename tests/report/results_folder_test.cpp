@@ -2,6 +2,7 @@
 #include "quadmc/report/results_folder.hpp"
 
 #include "../analysis/series_builder.hpp"
+#include "../analysis/time_to_error_sample.hpp"
 
 #include "quadmc/report/csv.hpp"
 #include "quadmc/report/provenance.hpp"
@@ -71,6 +72,31 @@ TEST(ResultsFolder, WritesThreeAgreeingFiles) {
   EXPECT_EQ(slopes[0].verdict, "agrees");
   // One method per family: who_leads.csv is its header alone (no "Who leads" table).
   EXPECT_EQ(read_csv_file(folder / "who_leads.csv").rows.size(), 0u);
+  // No paired timing: no pairs file (a scene without peers writes what it always wrote).
+  EXPECT_FALSE(fs::exists(folder / "time_to_error_pairs.csv"));
+}
+
+// A run that paired time-to-error winners writes time_to_error_pairs.csv beside the other CSV
+// files, one row per pair, and the page shows the pair's median; without csv, no file.
+TEST(ResultsFolder, WritesThePairsOfAPairedTiming) {
+  const temporary_directory dir{"quadmc_results_folder"};
+  const std::vector<convergence_table> tables = test::time_to_error_sample_tables();
+  run_info info;
+  info.scene = "paired";
+  info.paired_timing.rounds = 5;
+  info.paired_timing.pairs.push_back(
+      test::sample_pair({3.0, 2.0, 4.0, 3.0, 3.0}, {2.0, 2.0, 2.0, 2.0, 2.0}));
+  write_results_folder(dir.path / "with", info, tables);
+  const csv_table pairs = read_csv_file(dir.path / "with" / "time_to_error_pairs.csv");
+  ASSERT_EQ(pairs.rows.size(), 1u);
+  EXPECT_EQ(pairs.rows[0][pairs.column("scene")], "paired");
+  EXPECT_EQ(pairs.rows[0][pairs.column("ratio_median")], "1.5");
+  std::ifstream readme(dir.path / "with" / "README.md");
+  const std::string page((std::istreambuf_iterator<char>(readme)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("| 1.5 (1–2 over 5 alternating runs) |"), std::string::npos) << page;
+  write_results_folder(dir.path / "without", info, tables, {.csv = false, .markdown = true});
+  EXPECT_FALSE(fs::exists(dir.path / "without" / "time_to_error_pairs.csv"));
 }
 
 // End to end from a series to the files: a rule on a jump whose flat ladder (slope 0 against the
@@ -134,9 +160,10 @@ TEST(ResultsFolder, PlotCommandLine) {
 }
 
 TEST(ResultsFolder, ResultsFileNamesAreWhatARunWrites) {
-  for (const char* name : {"convergence.csv", "slopes.csv", "meta.csv", "README.md",
-                           "error_exp_s=1.svg", "exp_s1.svg", "work_precision_gaussian_s3.svg",
-                           "who_leads.csv", "who_leads.png", "slope_against_theory.png"}) {
+  for (const char* name :
+       {"convergence.csv", "slopes.csv", "meta.csv", "README.md", "error_exp_s=1.svg", "exp_s1.svg",
+        "work_precision_gaussian_s3.svg", "who_leads.csv", "who_leads.png",
+        "slope_against_theory.png", "time_to_error_pairs.csv"}) {
     EXPECT_TRUE(is_results_file_name(name)) << name;
   }
   // Near misses: other cases, other files, a bare extension (a hidden file, not a plot).

@@ -1,11 +1,11 @@
-// Tests for time_to_error_table.hpp: what each method needs to reach a tolerance (true error, not
-// its own claim; the smallest ladder N by RMSE), quadmc's best against the best peer, the summary,
-// and no table for a scene without peers or tolerances.
+// Tests for time_to_error_table.hpp: the page's "Time to error" section and its summary, with and
+// without the paired timing's pairs; time_to_error_pairs.csv; no table for a scene without peers
+// or tolerances. Which cell wins is analysis/time_to_error_cells.hpp's, tested there.
 #include "quadmc/report/time_to_error_table.hpp"
 
-#include "../analysis/series_builder.hpp"
+#include "../analysis/time_to_error_sample.hpp"
+#include "quadmc/report/csv.hpp"
 #include "quadmc/report/markdown_report.hpp"
-#include "support/floating_point.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,106 +16,12 @@
 namespace quadmc {
 namespace {
 
-using test::cell_at;
-using test::monte_carlo_theory;
-using test::repetition;
-using test::rule_theory;
-using test::series_of;
+using test::sample_pair;
+using test::time_to_error_sample_tables;
 
-using test_support::nan;
-constexpr double reference = 2.0;  // relative tolerances 1e-3, 1e-6 are errors 2e-3, 2e-6
-
-cell_timing timed(double seconds) {
-  cell_timing t;
-  t.seconds_per_estimate = seconds;
-  t.spread = 0.1;
-  t.estimates = 100;
-  return t;
-}
-
-// A method run to the relative tolerances 1e-3 and 1e-6: its true error, evaluations and stable
-// time at each (its own estimate claims the tolerance every time).
-convergence_table to_tolerance(const std::string& method, double error3, double seconds3,
-                               double error6, double seconds6) {
-  convergence_series series = series_of("genz_x_s2", 2, method, smoothness::analytic, reference,
-                                        rule_theory(2, smoothness::analytic, 2));
-  series.relative_tolerance = true;
-  const double tolerances[] = {1e-3, 1e-6};
-  const double errors[] = {error3, error6};
-  const double seconds[] = {seconds3, seconds6};
-  const std::uint64_t evaluations[] = {100, 1000};
-  for (int k = 0; k < 2; ++k) {
-    repetition_result r = repetition(reference + errors[k], nan, evaluations[k], seconds[k]);
-    r.error_estimate = tolerances[k] * reference;
-    convergence_cell cell = cell_at(0, {r});
-    cell.tolerance = tolerances[k];
-    cell.timing = timed(seconds[k]);
-    series.cells.push_back(cell);
-  }
-  return analyse_convergence(series);
-}
-
-std::vector<convergence_table> time_to_error_sample_tables() {
-  std::vector<convergence_table> tables;
-  // Meets 1e-3 (error 1e-3 ≤ 2e-3) in 1e-5 s; misses 1e-6 (error 1e-5 > 2e-6).
-  tables.push_back(to_tolerance("genz_malik", 1e-3, 1e-5, 1e-5, 4e-5));
-  // Meets both: 2e-5 s and 1e-4 s.
-  tables.push_back(to_tolerance("peer_hcubature", 5e-4, 2e-5, 1e-6, 1e-4));
-  // A Monte Carlo ladder: RMSE 1e-2 at N = 64, 1.5e-3 at 256 (≤ 2e-3: reached there, in 3e-5 s),
-  // 1e-3 at 1024; never 2e-6.
-  convergence_series mc = series_of("genz_x_s2", 2, "plain_mc", smoothness::analytic, reference,
-                                    monte_carlo_theory(smoothness::analytic, 2));
-  const std::uint64_t ns[] = {64, 256, 1024};
-  const double rmse[] = {1e-2, 1.5e-3, 1e-3};
-  const double seconds[] = {1e-6, 3e-5, 9e-5};
-  for (int k = 0; k < 3; ++k) {
-    // Two repetitions ±e: RMSE e.
-    convergence_cell cell = cell_at(ns[k], {repetition(reference + rmse[k], rmse[k], ns[k], 1e-9),
-                                            repetition(reference - rmse[k], rmse[k], ns[k], 1e-9)});
-    cell.timing = timed(seconds[k]);
-    mc.cells.push_back(cell);
-  }
-  tables.push_back(analyse_convergence(mc));
-  return tables;
-}
-
-TEST(TimeToErrorTable, EachMethodsTimeAndEvaluationsToTheTarget) {
+TEST(TimeToErrorTable, SummaryOverTheCells) {
   const std::vector<convergence_table> tables = time_to_error_sample_tables();
   const std::vector<time_to_error_cell> cells = time_to_error_cells(tables);
-  ASSERT_EQ(cells.size(), 2u);
-  const time_to_error_cell& loose = cells[0];
-  EXPECT_EQ(loose.family, "genz_x");
-  EXPECT_EQ(loose.s, 2u);
-  EXPECT_EQ(loose.tolerance, 1e-3);
-  EXPECT_TRUE(loose.relative);
-  EXPECT_EQ(loose.target, 1e-3 * reference);
-  ASSERT_EQ(loose.methods.size(), 3u);
-  EXPECT_TRUE(loose.methods[0].reached);
-  EXPECT_EQ(loose.methods[0].seconds, 1e-5);
-  EXPECT_EQ(loose.methods[0].evaluations, 100u);
-  EXPECT_TRUE(loose.methods[1].peer);
-  EXPECT_FALSE(loose.methods[0].peer);
-  // The ladder: the smallest N whose RMSE meets 2e-3, with that cell's own time.
-  EXPECT_TRUE(loose.methods[2].reached);
-  EXPECT_EQ(loose.methods[2].evaluations, 256u);
-  EXPECT_EQ(loose.methods[2].seconds, 3e-5);
-  ASSERT_TRUE(loose.best_quadmc && loose.best_peer);
-  EXPECT_EQ(*loose.best_quadmc, 0u);  // genz_malik's 1e-5 s beats plain_mc's 3e-5 s
-  EXPECT_EQ(*loose.best_peer, 1u);
-  EXPECT_EQ(loose.ratio, 1e-5 / 2e-5);
-
-  // At 1e-6 genz_malik's estimate claimed the target but its true error 1e-5 is above 2e-6: not
-  // reached; the ladder never gets there; the peer does, so quadmc's ratio is infinite.
-  const time_to_error_cell& tight = cells[1];
-  EXPECT_EQ(tight.tolerance, 1e-6);
-  EXPECT_TRUE(tight.methods[0].ran);
-  EXPECT_FALSE(tight.methods[0].reached);
-  EXPECT_FALSE(tight.methods[2].reached);
-  EXPECT_FALSE(tight.best_quadmc.has_value());
-  ASSERT_TRUE(tight.best_peer.has_value());
-  EXPECT_EQ(tight.methods[*tight.best_peer].seconds, 1e-4);
-  EXPECT_TRUE(std::isinf(tight.ratio));
-
   const time_to_error_summary sum = summarise_time_to_error(cells);
   EXPECT_EQ(sum.analytic_cells, 2u);
   EXPECT_EQ(sum.analytic_met, 1u);
@@ -138,26 +44,137 @@ TEST(TimeToErrorTable, OnThePageWithItsSummary) {
   EXPECT_NE(page.find("peer reaches the target): 1 of 2 (50%)"), std::string::npos) << page;
   EXPECT_NE(page.find("worst ratio among the 2 cells a peer reaches: ∞"), std::string::npos)
       << page;
+  // Without a paired timing the page says its ratios are single timings.
+  EXPECT_NE(page.find("single stable timings"), std::string::npos) << page;
+  EXPECT_EQ(page.find("alternating runs"), std::string::npos) << page;
+}
+
+// With a pair, the 1e-3 cell's ratio is the median of its rounds with their min–max, the
+// explanation says how it was measured, and the summary counts by the median: here quadmc's
+// single timing was faster (0.5) but the paired median is 1.5, so the cell is not met and is the
+// worst finite ratio.
+TEST(TimeToErrorTable, PairedRatiosWithTheirSpreadAndTheSummaryByTheMedian) {
+  const std::vector<convergence_table> tables = time_to_error_sample_tables();
+  paired_timing_outcome paired;
+  paired.rounds = 5;
+  paired.seconds = 0.25;
+  paired.pairs.push_back(sample_pair({3.0, 2.0, 4.0, 3.0, 3.0}, {2.0, 2.0, 2.0, 2.0, 2.0}));
+  // Ratios 1.5, 1, 2, 1.5, 1.5: median 1.5, min 1, max 2.
+  const std::string text = time_to_error_markdown(tables, paired);
+  EXPECT_NE(text.find("genz_malik (1e-05 s) | peer_hcubature (2e-05 s) | 1.5 (1–2 over 5 "
+                      "alternating runs) |"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("alternately — quadmc, peer, quadmc, peer, … — 5 rounds"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("(every round in `time_to_error_pairs.csv`; the paired timing took 0.25 s)"),
+            std::string::npos)
+      << text;
+  // A folder without CSV files does not point at one.
+  const std::string no_csv = time_to_error_markdown(tables, paired, 1, false);
+  EXPECT_EQ(no_csv.find("time_to_error_pairs.csv"), std::string::npos) << no_csv;
+  EXPECT_NE(no_csv.find("(the paired timing took 0.25 s)"), std::string::npos) << no_csv;
+  EXPECT_NE(text.find("by the median of the alternating runs where paired: 0 of 2 (0%)"),
+            std::string::npos)
+      << text;
+  // The worst ratio stays the infinite one (quadmc does not reach 1e-6).
+  EXPECT_NE(text.find("worst ratio among the 2 cells a peer reaches: ∞ (quadmc not reached; "
+                      "genz_x, s = 2, tolerance 1e-06)\n"),
+            std::string::npos)
+      << text;
+  // Where genz_malik meets 1e-6 too (single ratio 4e-5 / 1e-4 = 0.4 there), the worst is the
+  // paired median of the 1e-3 cell, with its spread — though its single ratio was 0.5.
+  std::vector<convergence_table> both_met = tables;
+  both_met[0] = test::to_tolerance("genz_malik", 1e-3, 1e-5, 1e-6, 4e-5);
+  const std::string met = time_to_error_markdown(both_met, paired);
+  EXPECT_NE(met.find("worst ratio among the 2 cells a peer reaches: 1.5 (1–2 over 5 alternating "
+                     "runs; genz_x, s = 2, tolerance 0.001)\n"),
+            std::string::npos)
+      << met;
+  EXPECT_NE(met.find("where paired: 1 of 2 (50%)"), std::string::npos) << met;
+
+  // Over the paired cell alone the worst ratio is its median.
+  std::vector<time_to_error_cell> cells = time_to_error_cells(tables);
+  attach_pairs(cells, paired.pairs);
+  const time_to_error_summary sum = summarise_time_to_error(std::span(cells).first(1));
+  EXPECT_EQ(sum.worst_ratio, 1.5);
+  EXPECT_EQ(sum.analytic_met, 0u);
+
+  // A cell the pass could not pair is listed with its reason; under mpirun rank 0 is named.
+  paired.not_paired.push_back("genz_x, s = 2, tolerance 0.001·|I|: budget spent");
+  const std::string mpi = time_to_error_markdown(tables, paired, 2);
+  EXPECT_NE(mpi.find("- not paired, single timings: genz_x, s = 2, tolerance 0.001·|I|: budget "
+                     "spent\n"),
+            std::string::npos)
+      << mpi;
+  EXPECT_NE(mpi.find("on MPI rank 0 while the other ranks waited idle"), std::string::npos) << mpi;
+}
+
+TEST(TimeToErrorTable, PairsCsvHasOneRowPerPairWithEachRound) {
+  std::vector<time_to_error_pair> pairs = {
+      sample_pair({3.0, 2.0, 4.0, 3.0, 3.0}, {2.0, 2.0, 2.0, 2.0, 2.0})};
+  pairs.front().quadmc_n = 0;
+  pairs.front().peer_n = 0;
+  const csv_table csv =
+      parse_csv(time_to_error_pairs_csv_text("unit", pairs), "time_to_error_pairs.csv");
+  const std::vector<std::string> header = {"scene",
+                                           "family",
+                                           "integrand",
+                                           "s",
+                                           "tolerance",
+                                           "tolerance_kind",
+                                           "quadmc_method",
+                                           "quadmc_N",
+                                           "quadmc_evaluations",
+                                           "peer_method",
+                                           "peer_N",
+                                           "peer_evaluations",
+                                           "rounds",
+                                           "ratio_median",
+                                           "ratio_min",
+                                           "ratio_max",
+                                           "quadmc_seconds_median",
+                                           "peer_seconds_median",
+                                           "ratios",
+                                           "quadmc_seconds",
+                                           "peer_seconds"};
+  EXPECT_EQ(csv.header, header);
+  ASSERT_EQ(csv.rows.size(), 1u);
+  auto field = [&](std::string_view column) { return csv.rows[0][csv.column(column)]; };
+  EXPECT_EQ(field("scene"), "unit");
+  EXPECT_EQ(field("family"), "genz_x");
+  EXPECT_EQ(field("integrand"), "genz_x_s2");
+  EXPECT_EQ(field("s"), "2");
+  EXPECT_EQ(field("tolerance"), "0.001");
+  EXPECT_EQ(field("tolerance_kind"), "relative");
+  EXPECT_EQ(field("quadmc_method"), "genz_malik");
+  EXPECT_EQ(field("quadmc_N"), "0");
+  EXPECT_EQ(field("quadmc_evaluations"), "100");
+  EXPECT_EQ(field("peer_method"), "peer_hcubature");
+  EXPECT_EQ(field("rounds"), "5");
+  EXPECT_EQ(field("ratio_median"), "1.5");
+  EXPECT_EQ(field("ratio_min"), "1");
+  EXPECT_EQ(field("ratio_max"), "2");
+  EXPECT_EQ(field("quadmc_seconds_median"), "3");
+  EXPECT_EQ(field("peer_seconds_median"), "2");
+  // Per round, in the order timed.
+  EXPECT_EQ(field("ratios"), "1.5;1;2;1.5;1.5");
+  EXPECT_EQ(field("quadmc_seconds"), "3;2;4;3;3");
+  EXPECT_EQ(field("peer_seconds"), "2;2;2;2;2");
+  // No pairs: the header alone.
+  EXPECT_EQ(parse_csv(time_to_error_pairs_csv_text("unit", {}), "empty").rows.size(), 0u);
 }
 
 TEST(TimeToErrorTable, NoTableWithoutPeersOrWithoutTolerances) {
   std::vector<convergence_table> tables = time_to_error_sample_tables();
   // Without the peer: nothing to compare with.
   std::vector<convergence_table> own{tables[0], tables[2]};
-  EXPECT_TRUE(time_to_error_cells(own).empty());
   EXPECT_EQ(render_results_markdown(run_info{}, own).find("## Time to error"), std::string::npos);
   // Without a method run to a tolerance: no targets.
   std::vector<convergence_table> ladder_only{tables[2]};
   ladder_only[0].method = "peer_gsl_plain";
   ladder_only.push_back(tables[2]);
-  EXPECT_TRUE(time_to_error_cells(ladder_only).empty());
   EXPECT_TRUE(time_to_error_markdown(ladder_only).empty());
-}
-
-TEST(TimeToErrorTable, PeerMethodsAreNamedPeer) {
-  EXPECT_TRUE(is_peer_method("peer_hcubature"));
-  EXPECT_FALSE(is_peer_method("genz_malik"));
-  EXPECT_FALSE(is_peer_method("my_peer_hcubature"));
 }
 
 }  // namespace

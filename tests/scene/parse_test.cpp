@@ -97,6 +97,7 @@ TEST(ParseScene, MinimalSceneFileGivesTheExpectedStruct) {
   EXPECT_EQ(sc.budget.max_evaluations, 100'000'000u);
   EXPECT_FALSE(sc.budget.max_seconds.has_value());
   EXPECT_EQ(sc.budget.timing_min_seconds, 0.01);  // the default stable-timing minimum
+  EXPECT_EQ(sc.budget.paired_timing_rounds, 5u);  // the default paired timing
   EXPECT_TRUE(sc.output.csv && sc.output.markdown && sc.output.plots);
 }
 
@@ -249,6 +250,16 @@ timing_min_seconds = 0.25)"));
   EXPECT_EQ(sc.budget.timing_min_seconds, 0.25);
 }
 
+TEST(ParseScene, PairedTimingRoundsAreReadWithTheirLine) {
+  for (const std::uint64_t rounds : {0u, 5u, 9u, 1000u}) {
+    const std::string t = replace(valid, "N = [16, 64]",
+                                  fmt::format("N = [16, 64]\npaired_timing_rounds = {}", rounds));
+    const scene sc = parse(t);
+    EXPECT_EQ(sc.budget.paired_timing_rounds, rounds);
+    EXPECT_EQ(sc.budget.paired_timing_rounds_location.line, line_of(t, "paired_timing"));
+  }
+}
+
 // `accumulator` on a tensor rule: parsed into enum summation, and the default label gets the
 // accumulator's name so that the same rule with two accumulators gives two series.
 TEST(ParseScene, AccumulatorKeyMakesItsOwnSeries) {
@@ -399,6 +410,21 @@ TEST(SceneErrors, OutOfRangeValues) {
   expect_error(t, line_of(t, "timing_min"), "budget.timing_min_seconds");
   t = replace(valid, "dimension = 2", "dimension = 2\nensemble = 0");
   expect_error(t, line_of(t, "ensemble"), "integrand[1].ensemble");
+  // paired_timing_rounds: 0 (off) or 5…1000, a TOML integer; the message quotes the value and
+  // the range.
+  const std::pair<std::string_view, std::string_view> bad_rounds[] = {
+      {"1", "1"},   {"4", "4"},   {"1001", "1001"},
+      {"-1", "-1"}, {"5.0", "5"}, {"\"five\"", "\"five\""}};
+  for (const auto& [written, shown] : bad_rounds) {
+    t = replace(valid, "N = [16, 64]",
+                fmt::format("N = [16, 64]\npaired_timing_rounds = {}", written));
+    const std::string m =
+        expect_error(t, line_of(t, "paired_timing"), "budget.paired_timing_rounds");
+    EXPECT_NE(m.find(fmt::format(
+                  "expected 0 (off) or a whole number of rounds from 5 to 1000, got {}", shown)),
+              std::string::npos)
+        << m;
+  }
   t = replace(valid, "name = \"simpson\"", "name = \"gauss_legendre\"\nm = 6");  // no 6-point rule
   expect_error(t, line_of(t, "m = 6"), "method[1].m");
 }

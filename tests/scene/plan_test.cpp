@@ -770,6 +770,71 @@ N = [16, 64]
 
 // control = "tolerance": one cell per tolerance, spending at most the budget per repetition
 // (budget.max_evaluations, else plan_limits::default_tolerance_budget), each on its own stream.
+// budget.paired_timing_rounds of a scene built in C++ is checked by make_plan as the parser checks
+// a file's: 0 or 5…1000, refused naming the key, the value and the range, before any work.
+TEST(PlanChecks, PairedTimingRoundsOfASceneBuiltInCppAreChecked) {
+  scene sc = parse_scene(R"(name = "t"
+[[integrand]]
+family = "exp"
+[[method]]
+name = "midpoint"
+[budget]
+N = [16, 64]
+)",
+                         "scene.toml");
+  for (const std::uint64_t rounds : {1u, 4u, 1001u}) {
+    sc.budget.paired_timing_rounds = rounds;
+    try {
+      (void)make_plan(sc);
+      ADD_FAILURE() << "paired_timing_rounds = " << rounds << " was planned";
+    } catch (const scene_error& e) {
+      EXPECT_EQ(e.key(), "budget.paired_timing_rounds") << e.what();
+      EXPECT_NE(std::string(e.what()).find(fmt::format(
+                    "expected 0 (off) or a whole number of rounds from 5 to 1000, got {}", rounds)),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  for (const std::uint64_t rounds : {0u, 5u, 1000u}) {
+    sc.budget.paired_timing_rounds = rounds;
+    EXPECT_NO_THROW((void)make_plan(sc)) << rounds;
+  }
+}
+
+// A scene whose page can pair time-to-error winners (a tolerance method, a `peer_*` one and one
+// of quadmc's) says in its plan what the run will do after its cells; other scenes say nothing.
+TEST(PlanTolerance, APlanThatCanPairWinnersSaysSo) {
+  const std::string text = R"(name = "t"
+[[integrand]]
+family = "genz_gaussian"
+dimension = 2
+[[method]]
+name = "genz_malik"
+control = "tolerance"
+tolerances = [1e-3]
+[[method]]
+name = "genz_malik"
+label = "peer_twin"
+control = "tolerance"
+tolerances = [1e-3]
+[budget]
+N = [16, 64]
+)";
+  auto note_of = [](const plan& p) {
+    const auto it = std::find_if(p.notes.begin(), p.notes.end(), [](const std::string& n) {
+      return n.starts_with("time to error:");
+    });
+    return it == p.notes.end() ? std::string() : *it;
+  };
+  const std::string paired = note_of(plan_of(text));
+  EXPECT_NE(paired.find("budget.paired_timing_rounds = 5 rounds"), std::string::npos) << paired;
+  const std::string off =
+      note_of(plan_of(replace(text, "N = [16, 64]", "N = [16, 64]\npaired_timing_rounds = 0")));
+  EXPECT_NE(off.find("paired_timing_rounds = 0: the ratios"), std::string::npos) << off;
+  // Without the peer there is nothing to pair.
+  EXPECT_EQ(note_of(plan_of(replace(text, "label = \"peer_twin\"", "label = \"twin\""))), "");
+}
+
 TEST(PlanTolerance, OneCellPerToleranceWithinTheBudget) {
   const std::string text = R"(name = "t"
 [[integrand]]

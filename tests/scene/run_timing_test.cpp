@@ -83,6 +83,28 @@ TEST(RunTiming, WorkPrecisionOfDeterministicRulesIsMonotoneInN) {
   }
 }
 
+// A cell timed again after the run (time_cell_estimate, for scene/paired_timing.hpp) goes through
+// the same procedure: below the minimum, batches until it has passed; at 0, one call.
+TEST(RunTiming, ACellTimedAgainFollowsTheRunnersProcedure) {
+  const plan p = make_plan(parse_scene(ladder_scene, "timing.toml"));
+  const run_context context{p.source.seed, 1};
+  for (std::size_t index = 0; index < p.cells.size(); ++index) {
+    const cell_timing t = time_cell_estimate(p, index, context, 0.02);
+    ASSERT_TRUE(t.timed()) << "cell " << index;
+    EXPECT_GT(t.seconds_per_estimate, 0.0) << "cell " << index;
+    if (!t.timed_once()) {
+      EXPECT_GE(t.estimates, 2u) << "cell " << index;
+      EXPECT_GE(static_cast<double>(t.estimates) * t.seconds_per_estimate * (1.0 + t.spread), 0.02)
+          << "cell " << index;
+    }
+    const cell_timing once = time_cell_estimate(p, index, context, 0.0);
+    EXPECT_TRUE(once.timed_once()) << "cell " << index;
+    EXPECT_TRUE(std::isnan(once.spread)) << "cell " << index;
+  }
+  EXPECT_THROW((void)time_cell_estimate(p, p.cells.size(), context, 0.0), invalid_argument);
+  EXPECT_THROW((void)time_cell_estimate(p, 0, context, -1.0), invalid_argument);
+}
+
 TEST(RunTiming, ZeroMinimumTimesTheFirstCallOnce) {
   const plan p = make_plan(parse_scene(ladder_scene, "timing.toml"));
   run_options options;

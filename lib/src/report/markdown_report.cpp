@@ -537,7 +537,7 @@ std::string render_results_markdown(const run_info& info,
 
   // Scenes that run methods to tolerances beside peers: who gets there first
   // (time_to_error_table.hpp).
-  out += time_to_error_markdown(tables);
+  out += time_to_error_markdown(tables, info.paired_timing, info.ranks, info.csv);
 
   append_leaders(out, leaders);
 

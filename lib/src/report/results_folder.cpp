@@ -4,6 +4,7 @@
 #include "quadmc/core/errors.hpp"
 #include "quadmc/report/provenance.hpp"
 #include "quadmc/report/results_csv.hpp"
+#include "quadmc/report/time_to_error_table.hpp"
 #include "quadmc/report/who_leads.hpp"
 
 #include <fstream>
@@ -35,13 +36,20 @@ void write_results_folder(const std::filesystem::path& folder, const run_info& i
     write_text(folder / "slopes.csv", slopes_csv_text(info.scene, tables));
     // The "Who leads" tables of the page as data, for bench/plot.py's summary figure.
     write_text(folder / who_leads_csv_file, who_leads_csv_text(info.scene, who_leads(tables)));
+    // Only where the run paired time-to-error winners: a scene without peers writes what it
+    // wrote before the paired timing existed.
+    if (!info.paired_timing.pairs.empty()) {
+      write_text(folder / time_to_error_pairs_csv_file,
+                 time_to_error_pairs_csv_text(info.scene, info.paired_timing.pairs));
+    }
   }
   if (outputs.markdown) write_text(folder / "README.md", render_results_markdown(info, tables));
 }
 
 bool is_results_file_name(std::string_view name) {
   return name == "convergence.csv" || name == "slopes.csv" || name == meta_csv_file ||
-         name == who_leads_csv_file || name == "README.md" ||
+         name == who_leads_csv_file || name == time_to_error_pairs_csv_file ||
+         name == "README.md" ||
          (name.size() > 4 && (name.ends_with(".svg") || name.ends_with(".png")));
 }
 

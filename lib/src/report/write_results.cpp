@@ -6,7 +6,9 @@
 #include "quadmc/report/answer_first.hpp"
 #include "quadmc/report/markdown_report.hpp"
 #include "quadmc/report/results_folder.hpp"
+#include "quadmc/report/time_to_error_table.hpp"
 #include "quadmc/report/who_leads.hpp"
+#include "quadmc/scene/paired_timing.hpp"
 
 #include <fmt/format.h>
 
@@ -72,6 +74,7 @@ run_info info_of(const scene_results& results, const results_options& options) {
     }
     info.effective_dimensions.push_back(std::move(row));
   }
+  info.paired_timing = results.paired_timing;
   info.csv = p.source.output.csv;
   info.plots = draws_plots(p, options);
   return info;
@@ -89,6 +92,10 @@ std::vector<std::string> result_file_names(const plan& p, const results_options&
   const output_spec& output = p.source.output;
   if (output.csv) {
     files.insert(files.end(), {"convergence.csv", "slopes.csv", std::string(who_leads_csv_file)});
+    // Whether the run pairs any cell only the run tells; listed when it may.
+    if (may_pair_time_to_error(p.source) && p.source.budget.paired_timing_rounds > 0) {
+      files.emplace_back(time_to_error_pairs_csv_file);
+    }
   }
   if (output.markdown) files.emplace_back("README.md");
   if (draws_plots(p, options)) {

@@ -38,8 +38,8 @@ constexpr std::array<std::string_view, 7> integrand_keys{
 // The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
 constexpr std::array<std::string_view, 7> common_method_keys{
     "name", "label", "integrands", "repetitions", "control", "tolerances", "tolerance_kind"};
-constexpr std::array<std::string_view, 4> budget_keys{"N", "max_evaluations", "max_seconds",
-                                                      "timing_min_seconds"};
+constexpr std::array<std::string_view, 5> budget_keys{"N", "max_evaluations", "max_seconds",
+                                                      "timing_min_seconds", "paired_timing_rounds"};
 constexpr std::array<std::string_view, 3> range_keys{"from", "to", "factor"};
 constexpr std::array<std::string_view, 3> output_keys{"csv", "markdown", "plots"};
 constexpr std::array<scene_table_keys, 6> key_tables{{
@@ -575,6 +575,15 @@ budget_spec parse_budget(const scene_reader& r, const entry& e) {
     const double v = r.number(*s, "a number of seconds between 0 and 60");
     if (!(v >= 0.0 && v <= 60.0)) r.expected(*s, "a number of seconds between 0 and 60");
     b.timing_min_seconds = v;
+  }
+  if (const auto e = r.find(t, "paired_timing_rounds", "budget")) {
+    // A TOML integer: a count of rounds, not a number that happens to be whole. make_plan checks
+    // the same range for scenes built in C++.
+    const std::uint64_t rounds =
+        r.integer(*e, 0, max_paired_timing_rounds, paired_timing_rounds_expected);
+    if (!valid_paired_timing_rounds(rounds)) r.expected(*e, paired_timing_rounds_expected);
+    b.paired_timing_rounds = rounds;
+    b.paired_timing_rounds_location = r.at(*e);
   }
   return b;
 }

@@ -4,6 +4,7 @@
 #include "quadmc/core/integer_powers.hpp"
 #include "quadmc/core/rng.hpp"
 #include "quadmc/functions/catalogue.hpp"
+#include "quadmc/scene/paired_timing.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -545,6 +546,18 @@ void resolve_references(plan& p) {
   }
 }
 
+// budget.paired_timing_rounds of a scene built in C++ (the parser refuses the same values in a
+// file, at their line).
+void check_paired_timing_rounds(const scene& sc) {
+  const budget_spec& b = sc.budget;
+  if (valid_paired_timing_rounds(b.paired_timing_rounds)) return;
+  const source_location where =
+      b.paired_timing_rounds_location.line != 0 ? b.paired_timing_rounds_location : b.N_location;
+  throw scene_error(
+      where, "budget.paired_timing_rounds",
+      fmt::format("expected {}, got {}", paired_timing_rounds_expected, b.paired_timing_rounds));
+}
+
 }  // namespace
 
 std::string plan_reference::describe() const {
@@ -576,6 +589,7 @@ double plan::reference_of(const plan_instance& inst) const {
 }
 
 plan make_plan(const scene& input) {
+  check_paired_timing_rounds(input);
   plan p;
   p.source = input;
   const std::vector<name_set> restriction = restrictions_of(p.source);
@@ -657,6 +671,21 @@ plan make_plan(const scene& input) {
               : fmt::format("{} (no budget.max_evaluations)",
                             plan_limits::default_tolerance_budget)));
     }
+  }
+
+  // What a time-to-error scene costs after its cells (scene/paired_timing.hpp), said before the
+  // run: the progress bar is full while it runs.
+  if (may_pair_time_to_error(sc)) {
+    const std::uint64_t rounds = sc.budget.paired_timing_rounds;
+    p.notes.push_back(
+        rounds == 0
+            ? std::string("time to error: budget.paired_timing_rounds = 0: the ratios of quadmc's "
+                          "best to the best peer are of single stable timings, no paired timing")
+            : fmt::format("time to error: after the cells, quadmc's best and the best peer of "
+                          "each (integrand, tolerance) both reach are timed again alternately, "
+                          "budget.paired_timing_rounds = {} rounds of one stable timing each; "
+                          "the page's ratio is their median",
+                          rounds));
   }
 
   std::uint64_t repetitions = 0;

@@ -65,6 +65,34 @@ cell_timing time_cell(Call&& call, double first, double min_seconds) {
   return summarise_timing(samples, estimates);
 }
 
+// What repetition r of `cell` runs: its absolute target and its stream. A relative tolerance is
+// a fraction of this instance's |I|, exact or the reference that replaces it (the plan refused
+// I = 0 or a non-finite I for it).
+double absolute_tolerance(const plan& p, const plan_cell& cell, const plan_instance& inst) {
+  const method_spec& mspec = p.source.methods[cell.method];
+  return mspec.relative_tolerance ? cell.tolerance * std::abs(p.reference_of(inst))
+                                  : cell.tolerance;
+}
+
+std::uint64_t repetition_stream(const plan_cell& cell, std::uint64_t r) {
+  const auto& sp = cell.stream_parts;
+  return stream_id({sp[0], sp[1], sp[2], sp[3], r});
+}
+
+// Which cell failed, for every error a repetition can raise: the integrand (and its instance),
+// the method, N and the repetition; the cause after it names the point.
+std::string cell_description(const plan& p, const plan_cell& cell, std::uint64_t r) {
+  const integrand_spec& ispec = p.source.integrands[cell.integrand];
+  std::string name = ispec.name;
+  if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
+  const std::string target =
+      !std::isnan(cell.tolerance)
+          ? fmt::format("tolerance = {}", cell.tolerance)
+          : fmt::format("N = {} ({} evaluations)", cell.nominal_N, cell.evaluations);
+  return fmt::format("{} × {}, {}, repetition {} of {}", p.source.methods[cell.method].label, name,
+                     target, r + 1, cell.repetitions);
+}
+
 }  // namespace
 
 double resolved_timing_min_seconds(const plan& p, const run_options& options) {
@@ -97,28 +125,14 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
                            : 0.0;
   const bool to_tolerance = !std::isnan(cell.tolerance);
   const cell_size size = cell.size();
-  // The absolute target: a relative tolerance is a fraction of this instance's |I|, exact or the
-  // reference that replaces it (the plan refused I = 0 or a non-finite I for it).
-  const double tolerance =
-      mspec.relative_tolerance ? cell.tolerance * std::abs(p.reference_of(inst)) : cell.tolerance;
+  const double tolerance = absolute_tolerance(p, cell, inst);
 
   cell_run out;
   std::vector<repetition_result>& results = out.repetitions;
   results.reserve(last - first);
   for (std::uint64_t r = first; r < last; ++r) {
-    const auto& sp = cell.stream_parts;
-    const std::uint64_t stream = stream_id({sp[0], sp[1], sp[2], sp[3], r});
-    // Which cell failed, for every error a repetition can raise: the integrand (and its
-    // instance), the method, N and the repetition; the cause after it names the point.
-    auto where = [&] {
-      std::string name = ispec.name;
-      if (ispec.ensemble > 1) name += fmt::format(" instance {}", cell.instance + 1);
-      const std::string target =
-          to_tolerance ? fmt::format("tolerance = {}", cell.tolerance)
-                       : fmt::format("N = {} ({} evaluations)", cell.nominal_N, cell.evaluations);
-      return fmt::format("{} × {}, {}, repetition {} of {}", mspec.label, name, target, r + 1,
-                         cell.repetitions);
-    };
+    const std::uint64_t stream = repetition_stream(cell, r);
+    auto where = [&] { return cell_description(p, cell, r); };
     const auto t0 = clock::now();
     repetition_result result;
     try {
@@ -169,6 +183,36 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
     if (on_done) on_done(result);
   }
   return out;
+}
+
+cell_timing time_cell_estimate(const plan& p, std::size_t index, const run_context& context,
+                               double timing_min_seconds) {
+  require(index < p.cells.size(), "cell index", index,
+          fmt::format("a cell of the plan (it has {})", p.cells.size()));
+  require(std::isfinite(timing_min_seconds) && timing_min_seconds >= 0.0, "timing_min_seconds",
+          timing_min_seconds, "a finite number of seconds >= 0");
+  const plan_cell& cell = p.cells[index];
+  const plan_instance& inst = p.instance_of(cell);
+  const cell_size size = cell.size();
+  const method_spec& mspec = p.source.methods[cell.method];
+  // Repetition 1's work, as run_cell_repetitions times it: the first call stands for the
+  // repetition's own, which the runner's timing starts from.
+  const method_cell work{inst.function,
+                         inst.params,
+                         size,
+                         cell.control,
+                         absolute_tolerance(p, cell, inst),
+                         repetition_stream(cell, 0),
+                         0};
+  try {
+    const auto t0 = clock::now();
+    (void)mspec.configured->run(work, context);
+    const double first = seconds_since(t0);
+    return time_cell([&] { (void)mspec.configured->run(work, context); }, first,
+                     timing_min_seconds);
+  } catch (const std::exception& e) {
+    throw run_error(fmt::format("{}: {} (while timing)", cell_description(p, cell, 0), e.what()));
+  }
 }
 
 run_assembly::run_assembly(const plan& p) : plan_(&p) {}

@@ -41,6 +41,7 @@ scene_results run_scene(plan p, const run_options& options, cell_scheduler& sche
   for (const convergence_series& series : out.run.series) {
     out.tables.push_back(analyse_convergence(series));
   }
+  out.paired_timing = run_paired_timing(out.plan, out.tables, options, out.run.seconds);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/analysis/time_to_error_cells.hpp"
 #include "quadmc/functions/effective_dimension.hpp"
 #include "quadmc/functions/effective_dimension_estimate.hpp"
 #include "quadmc/report/provenance.hpp"
@@ -51,6 +52,9 @@ struct run_info {
   // One row per integrand of the scene (its first instance): its effective dimensions, exact
   // where f is a product of factors (functions/effective_dimension.hpp), else estimated.
   std::vector<effective_dimension_row> effective_dimensions;
+  // The time-to-error winners timed again alternately after the run (scene/paired_timing.hpp):
+  // the "Time to error" section's ratios and time_to_error_pairs.csv; empty: not run.
+  paired_timing_outcome paired_timing;
   // What else the folder holds ([output] of the scene): the page links only files that exist.
   bool csv = true;    // convergence.csv and slopes.csv
   bool plots = true;  // the error and work-precision plots

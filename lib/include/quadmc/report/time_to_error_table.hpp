@@ -1,33 +1,25 @@
 // The time-to-error table of a results page: per (integrand family, s, tolerance), the time and
 // evaluations each method needs to reach the tolerance, quadmc's best method against the best
-// peer (a method named `peer_*`, bench/peers), their ratio, and a summary over the cells.
+// peer (a method named `peer_*`, bench/peers), their ratio, and a summary over the cells; and
+// time_to_error_pairs.csv, the winners' paired timing.
 //
 // Use it for a scene that runs methods to tolerances beside peers (bench/scenes/
 // time_to_error.toml); a scene without tolerance cells or without a peer gets no table (empty
-// text). Not an extrapolation: a tolerance no cell reached is "not reached".
+// text) and no pairs file. Which method reaches a target, with which cell, and who wins are
+// analysis/time_to_error_cells.hpp's, shared with the paired timing of scene/paired_timing.hpp.
 //
-// Per cell, the target is the error the tolerance asks for: tolerance·|I| for a relative
-// tolerance (convergence_table::relative_tolerance), the tolerance itself for an absolute one.
-//   - A method run to the tolerance (its convergence_table has a row at that tolerance) reaches
-//     it when that row's true error — RMSE over its repetitions, |error| for one — is ≤ the
-//     target: its own estimate saying so is not enough. Its time is the row's seconds per
-//     estimate, the stable timing of the whole call to the tolerance (analysis/cell_timing.hpp).
-//   - A method on the N ladder reaches it at the smallest N whose RMSE is ≤ the target: RMSE,
-//     not "every repetition", because it is the error one run has on average over the seeds
-//     (docs/theory.md#conventions), the same measure a tolerance method is judged by; requiring
-//     every repetition would make a method's figure depend on how many repetitions it ran. Its
-//     time is that cell's seconds per estimate, no interpolation between ladder points: the N a
-//     user would have to pick.
-// quadmc's best is the fastest non-peer method that reaches the target, the best peer the
-// fastest peer; ratio = quadmc's best time / the best peer's (< 1: quadmc faster).
+// The ratio shown: where the run paired the two winners (paired_timing_outcome), the median of
+// their alternating rounds, "median (min–max over k alternating runs)"; elsewhere the ratio of
+// the two cells' own stable timings.
 //
 // Summary: over the analytic cells (smoothness::analytic) that some method reaches, the fraction
-// where quadmc's best reaches it in at most the best peer's time (counted met where no peer
-// reaches it); and the largest ratio over every cell a peer reaches (infinite where quadmc's
-// methods do not reach it).
+// where quadmc's best reaches it in at most the best peer's time, by the ratio shown (counted met
+// where no peer reaches it); and the largest ratio shown over every cell a peer reaches (infinite
+// where quadmc's methods do not reach it).
 #pragma once
 
 #include "quadmc/analysis/convergence_table.hpp"
+#include "quadmc/analysis/time_to_error_cells.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -35,34 +27,10 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc {
-
-struct time_to_error_entry {
-  std::string method;
-  bool peer = false;
-  bool ran = false;      // the method has a cell for this target (a ladder or this tolerance)
-  bool reached = false;  // … and one meets it
-  double seconds = std::numeric_limits<double>::quiet_NaN();  // per estimate, when reached
-  std::uint64_t evaluations = 0;                              // per estimate, when reached
-};
-
-struct time_to_error_cell {
-  std::string family;  // the integrand's name without the "_s<s>" of a dimensions list
-  std::string integrand;
-  std::size_t s = 0;
-  double tolerance = 0.0;
-  bool relative = false;
-  double target = 0.0;  // absolute
-  smoothness regularity = smoothness::analytic;
-  std::vector<time_to_error_entry> methods;  // in the tables' order
-  std::optional<std::size_t> best_quadmc;    // index into methods
-  std::optional<std::size_t> best_peer;
-  // best_quadmc's time / best_peer's; +inf when a peer reaches it and quadmc does not; NaN when
-  // no peer reaches it.
-  double ratio = std::numeric_limits<double>::quiet_NaN();
-};
 
 struct time_to_error_summary {
   std::size_t analytic_cells = 0;  // analytic cells that some method reaches
@@ -72,15 +40,28 @@ struct time_to_error_summary {
   std::optional<std::size_t> worst_cell;                          // index of the worst
 };
 
-// Whether a method is a peer: its name starts with "peer_" (bench/peers' methods).
-bool is_peer_method(std::string_view method);
-
-// The cells, grouped by (integrand, s) in order of first appearance, tolerances in the order of
-// the first table run to them. Empty when no table has tolerance rows or no method is a peer.
-std::vector<time_to_error_cell> time_to_error_cells(std::span<const convergence_table> tables);
+// By each cell's ratio (the paired median where attach_pairs gave it one).
 time_to_error_summary summarise_time_to_error(std::span<const time_to_error_cell> cells);
 
-// The page's section (heading, explanation, table, summary); empty when there are no cells.
-std::string time_to_error_markdown(std::span<const convergence_table> tables);
+// The page's section (heading, explanation, table, summary), with the paired timing's figures
+// where `paired` has them; empty when there are no cells. `ranks` > 1: the run was under mpirun,
+// whose rank 0 timed the pairs (said in the explanation); `csv`: the folder has the CSV files
+// (the explanation then names time_to_error_pairs.csv).
+std::string time_to_error_markdown(std::span<const convergence_table> tables,
+                                   const paired_timing_outcome& paired = {}, unsigned ranks = 1,
+                                   bool csv = true);
+
+// time_to_error_pairs.csv: one row per pair, in the order given (the paired timing gives them in
+// the table's order of cells) —
+//   scene, family, integrand, s, tolerance, tolerance_kind (absolute | relative),
+//   quadmc_method, quadmc_N, quadmc_evaluations, peer_method, peer_N, peer_evaluations (N = 0
+//   for a cell run to a tolerance; evaluations per estimate), rounds, ratio_median, ratio_min,
+//   ratio_max, quadmc_seconds_median, peer_seconds_median (seconds per estimate, the medians of
+//   each side's rounds), then per round in order, separated by ';': ratios, quadmc_seconds,
+//   peer_seconds.
+// Numbers in the shortest text that reads back to the same double. Header only for no pairs.
+inline constexpr std::string_view time_to_error_pairs_csv_file = "time_to_error_pairs.csv";
+std::string time_to_error_pairs_csv_text(std::string_view scene,
+                                         std::span<const time_to_error_pair> pairs);
 
 }  // namespace quadmc

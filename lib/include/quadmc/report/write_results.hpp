@@ -1,5 +1,6 @@
 // A scene's results written as its results folder: convergence.csv, slopes.csv, meta.csv,
-// README.md and, when asked, the SVG plots, by the staging, lock, interruption and replace rules
+// README.md (and time_to_error_pairs.csv where the run paired time-to-error winners) and, when
+// asked, the SVG plots, by the staging, lock, interruption and replace rules
 // of staged_output.hpp. What `quadmc run` writes, for any program that ran scene/run_scene.hpp.
 //
 // Use write_results(folder, results, options) for one call; stage_results before the run and

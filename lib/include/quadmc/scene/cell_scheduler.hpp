@@ -14,6 +14,12 @@
 // (docs/design.md#hot-path-contract), so a scheduler changes where and when cells run, never the
 // series: filed in plan order, they are bitwise what local_scheduler gives.
 //
+// After run_cells returns, run_scene may time cells again on the process that speaks for the run
+// (the paired timing of a time-to-error scene, scene/paired_timing.hpp), one call at a time as
+// the run did. A scheduler's other processes must then be idle, not computing nor polling the
+// cores those timings use: the MPI scheduler's ranks other than 0 wait for rank 0 in a barrier
+// that sleeps between polls (bench/quadmc/mpi_run.hpp).
+//
 // Not for per-sample work: one virtual call per run.
 #pragma once
 

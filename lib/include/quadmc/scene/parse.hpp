@@ -94,6 +94,12 @@
 //   timing_min_seconds = 0.01   stable timing per cell (analysis/cell_timing.hpp): the first
 //                         estimate is repeated until this much time has passed; 0 ≤ value ≤ 60,
 //                         0 = the first call timed once. Default 0.01.
+//   paired_timing_rounds = 5   paired timing (scene/paired_timing.hpp): where the page has a
+//                         time-to-error table (tolerance cells and `peer_*` methods), each cell's
+//                         quadmc best and best peer are timed again after the run, alternately
+//                         (quadmc, peer, quadmc, peer, …), this many rounds of one stable timing
+//                         each; the page's ratio is the median of the rounds' ratios, with their
+//                         min–max. An integer, 0 (off) or 5…1000. Default 5.
 //
 // [output]                optional; which files to write (each default true)
 //   csv = true, markdown = true, plots = true     plots are drawn from the CSV: plots = true

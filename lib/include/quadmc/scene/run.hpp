@@ -100,6 +100,14 @@ cell_run run_cell_repetitions(const plan& p, std::size_t index, std::uint64_t fi
                               double timing_min_seconds,
                               const std::function<void(const repetition_result&)>& on_done = {});
 
+// One more stable timing of cell `index`, apart from its run: repetition 1's call (same stream,
+// same work) timed once, then, below timing_min_seconds, repeated in batches as above — the
+// procedure run_cell_repetitions times a cell by, through the same code. For cells timed again
+// after the run (scene/paired_timing.hpp). Throws run_error naming the cell when the call fails,
+// invalid_argument for an index outside the plan or a minimum that is not finite and ≥ 0.
+cell_timing time_cell_estimate(const plan& p, std::size_t index, const run_context& context,
+                               double timing_min_seconds);
+
 // Files whole cells into series, in plan order (an index lower than the last one added, or a
 // cell without all its repetitions, is refused).
 class run_assembly {

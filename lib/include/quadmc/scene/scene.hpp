@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace quadmc {
@@ -84,8 +85,26 @@ struct budget_spec {
   // least this many seconds have passed; 0 = time the first call once. 10 ms: batches of ~1 ms,
   // a thousand times the clock's resolution and cost, and ≈ 11 s over the default scene's cells.
   double timing_min_seconds = 0.01;
+  // Paired timing (scene/paired_timing.hpp): after the run, each time-to-error cell's two winners,
+  // quadmc's best and the best peer, are timed again alternately this many rounds, one stable
+  // timing each per round, and the page's ratio is the median of the rounds' ratios. 0 = off;
+  // else at least min_paired_timing_rounds (valid_paired_timing_rounds). Only scenes whose page
+  // has a time-to-error table with both sides pay for it.
+  std::uint64_t paired_timing_rounds = 5;
   source_location N_location;
+  source_location paired_timing_rounds_location;  // where the file set it (line 0: not set)
 };
+
+// budget.paired_timing_rounds: 0 (off) or min…max rounds. Five at least: the median of fewer
+// alternating runs is moved by one disturbed round, which is what pairing is meant to outvote; at
+// most 1000 (each round is two stable timings of at least timing_min_seconds).
+inline constexpr std::uint64_t min_paired_timing_rounds = 5;
+inline constexpr std::uint64_t max_paired_timing_rounds = 1000;
+inline constexpr std::string_view paired_timing_rounds_expected =
+    "0 (off) or a whole number of rounds from 5 to 1000";
+constexpr bool valid_paired_timing_rounds(std::uint64_t rounds) noexcept {
+  return rounds == 0 || (rounds >= min_paired_timing_rounds && rounds <= max_paired_timing_rounds);
+}
 
 struct output_spec {
   bool csv = true;
