@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
+#include <thread>
 
 namespace {
 
@@ -106,6 +109,90 @@ TEST(AdaptiveCubature, IsBitwiseTheSameForAnyThreadCount) {
         EXPECT_EQ(one.evaluations, many.evaluations);
       }
     }
+  }
+}
+
+// An integrand that integrates another one by genz_malik_cubature on every batch (so a run nested
+// in a run, on the same thread) and returns the outer Gaussian's values; it records whether the
+// inner run gave the bits it should.
+class nesting_gaussian {
+ public:
+  nesting_gaussian(quadmc::genz_gaussian outer, quadmc::genz_gaussian inner,
+                   quadmc::adaptive_cubature_result expected_inner)
+      : outer_(std::move(outer)), inner_(std::move(inner)), expected_(expected_inner) {}
+  std::size_t dimension() const noexcept { return outer_.dimension(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    const auto r = quadmc::genz_malik_cubature(
+        inner_, {.max_evaluations = 100'000, .absolute_tolerance = 1e-6 * inner_.info().exact});
+    if (std::bit_cast<std::uint64_t>(r.value) != std::bit_cast<std::uint64_t>(expected_.value) ||
+        r.evaluations != expected_.evaluations) {
+      *inner_differs_ = true;
+    }
+    outer_.evaluate(x, y);
+  }
+  quadmc::integrand_info info() const { return outer_.info(); }
+  bool inner_differs() const noexcept { return *inner_differs_; }
+
+ private:
+  quadmc::genz_gaussian outer_, inner_;
+  quadmc::adaptive_cubature_result expected_;
+  std::shared_ptr<bool> inner_differs_ = std::make_shared<bool>(false);
+};
+
+// The Genz Gaussian until its `calls`-th batch, which holds a NaN: a run that throws midway.
+class failing_gaussian {
+ public:
+  failing_gaussian(quadmc::genz_gaussian f, int calls)
+      : f_(std::move(f)), left_(std::make_shared<int>(calls)) {}
+  std::size_t dimension() const noexcept { return f_.dimension(); }
+  void evaluate(std::span<const double> x, std::span<double> y) const {
+    f_.evaluate(x, y);
+    if (--*left_ == 0) y[0] = std::numeric_limits<double>::quiet_NaN();
+  }
+  quadmc::integrand_info info() const { return f_.info(); }
+
+ private:
+  quadmc::genz_gaussian f_;
+  std::shared_ptr<int> left_;
+};
+
+// A thread keeps the storage of its last run for the next (adaptive_cubature.hpp, Memory): a run
+// after larger and smaller runs, after a run that threw, and a run nested in another's integrand
+// give the bits of the same run on a new thread, which has nothing kept.
+TEST(AdaptiveCubature, IsBitwiseTheSameWhateverRanBeforeOnItsThread) {
+  using quadmc::genz_malik_cubature;
+  const auto same = [](const quadmc::adaptive_cubature_result& a,
+                       const quadmc::adaptive_cubature_result& b) {
+    return std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value) &&
+           std::bit_cast<std::uint64_t>(a.error_estimate) ==
+               std::bit_cast<std::uint64_t>(b.error_estimate) &&
+           a.evaluations == b.evaluations && a.regions == b.regions;
+  };
+  for (std::size_t s : {2u, 4u}) {
+    const quadmc::genz_gaussian f = gaussian(s, 21);
+    const quadmc::adaptive_cubature_options to_tolerance{
+        .max_evaluations = 1'000'000, .absolute_tolerance = 1e-6 * f.info().exact};
+    quadmc::adaptive_cubature_result fresh;
+    std::thread([&] { fresh = genz_malik_cubature(f, to_tolerance); }).join();
+
+    (void)genz_malik_cubature(gaussian(5, 2), {.max_evaluations = 200'000});
+    EXPECT_TRUE(same(genz_malik_cubature(f, to_tolerance), fresh)) << "after a larger run";
+    (void)genz_malik_cubature(gaussian(3, 2), {.max_evaluations = 100});
+    EXPECT_TRUE(same(genz_malik_cubature(f, to_tolerance), fresh)) << "after a smaller run";
+    // About 30 000 regions in s = 2: more than the 1 MiB a thread keeps.
+    (void)genz_malik_cubature(gaussian(2, 2), {.max_evaluations = 1'000'000});
+    EXPECT_TRUE(same(genz_malik_cubature(f, to_tolerance), fresh)) << "after a run beyond 1 MiB";
+    EXPECT_THROW((void)genz_malik_cubature(failing_gaussian(gaussian(s, 4), 5),
+                                           {.max_evaluations = 1'000'000}),
+                 quadmc::non_finite_value);
+    EXPECT_TRUE(same(genz_malik_cubature(f, to_tolerance), fresh)) << "after a run that threw";
+
+    const quadmc::genz_gaussian inner = gaussian(3, 5);
+    const auto inner_alone = genz_malik_cubature(
+        inner, {.max_evaluations = 100'000, .absolute_tolerance = 1e-6 * inner.info().exact});
+    const nesting_gaussian nesting(gaussian(s, 21), inner, inner_alone);
+    EXPECT_TRUE(same(genz_malik_cubature(nesting, to_tolerance), fresh)) << "nested, s = " << s;
+    EXPECT_FALSE(nesting.inner_differs()) << "the inner runs, s = " << s;
   }
 }
 

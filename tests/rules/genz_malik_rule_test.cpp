@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -193,6 +194,40 @@ TEST(GenzMalikRule, SplitsAlongTheAxisOfLargestFourthDifference) {
       const quadmc::genz_malik_estimate e = rule.combine(f, 1.0);
       EXPECT_EQ(e.split_axis, k) << "s = " << s;
       EXPECT_EQ(e.error, std::abs(e.value - rule.embedded_value(f, 1.0)));
+    }
+  }
+}
+
+// nodes() writes runs of nodes in bulk (rows repeated, vertices by aligned blocks, a kernel per
+// s ≤ 4); every run, wherever it starts and ends, must hold exactly node()'s doubles: a batch of
+// adaptive_cubature.hpp can cut a region anywhere, and the results are bitwise those of node().
+TEST(GenzMalikRule, NodesOfAnyRunAreBitwiseTheNodesOneByOne) {
+  for (std::size_t s : {2u, 3u, 4u, 5u, 6u, 8u, 11u}) {
+    const quadmc::genz_malik_rule rule(s);
+    const std::uint64_t points = rule.points();
+    const std::vector<double> centre = random_box_corner(s, 500 + s, -0.5);
+    std::vector<double> half = random_box_corner(s, 600 + s, 0.0);
+    for (double& h : half) h += 1e-3;
+    std::vector<double> expected(points * s);
+    for (std::uint64_t i = 0; i < points; ++i) {
+      rule.node(i, centre, half, std::span<double>(expected.data() + i * s, s));
+    }
+    for (std::uint64_t run : {1ul, 2ul, 3ul, 5ul, 7ul, 16ul, 17ul, 100ul, 256ul, points}) {
+      // Runs of `run` nodes from an offset, so that they start inside an axis's or a pair's four
+      // nodes and at unaligned vertices.
+      for (std::uint64_t offset : {0ul, 1ul, 2ul, 3ul}) {
+        std::vector<double> got(points * s, -7.0);
+        for (std::uint64_t first = 0; first < points;) {
+          const std::uint64_t count = std::min(first == 0 ? offset + 1 : run, points - first);
+          rule.nodes(first, static_cast<std::size_t>(count), centre, half, got.data() + first * s);
+          first += count;
+        }
+        for (std::uint64_t k = 0; k < points * s; ++k) {
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(got[k]), std::bit_cast<std::uint64_t>(expected[k]))
+              << "s = " << s << ", runs of " << run << " after " << offset + 1 << ", node " << k / s
+              << ", coordinate " << k % s;
+        }
+      }
     }
   }
 }
