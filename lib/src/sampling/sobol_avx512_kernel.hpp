@@ -112,7 +112,8 @@ inline void fast_owen_seeds(__m512i key_a, __m512i key_b, __m512i& low, __m512i&
 // table_digits flips by one gather from the prefix table (sobol_blocks.hpp), the others from one
 // hash per six levels of the tree as owen_scramble::flips draws them, then the tail. Lockstep,
 // because one register's chain (gather, hash, bit picks, hash) is latency bound: U independent
-// chains interleaved keep the multiplier and the load ports busy.
+// chains interleaved keep the multiplier and the load ports busy. The loops over the U registers
+// are unrolled by pragma: rolled, GCC kept the registers in memory and ran the chains in turn.
 template <int U>
 [[gnu::always_inline]] inline void owen(__m512i (&w)[U], const __m512i (&seed)[U],
                                         const __m512i (&base)[U],
@@ -126,8 +127,10 @@ template <int U>
   const unsigned depth = t.depth;
   const unsigned k = t.table_digits;
   __m512i out[U];
+#pragma GCC unroll 8
   for (int u = 0; u < U; ++u) out[u] = w[u];
   if (k > 0) {
+#pragma GCC unroll 8
     for (int u = 0; u < U; ++u) {
       const __m512i index = _mm512_add_epi64(base[u], _mm512_srl_epi64(w[u], shift(64 - k)));
       out[u] = _mm512_xor_si512(out[u], _mm512_i64gather_epi64(index, t.flips.data(), 8));
@@ -147,6 +150,7 @@ template <int U>
       keep |= ((std::uint64_t{1} << d) - 1) << (8 * d);
       if (b0 + d >= k && b0 + d < depth) place |= std::uint64_t{0x80} >> d << (8 * d);
     }
+#pragma GCC unroll 8
     for (int u = 0; u < U; ++u) {
       const __m512i tree = mix64(_mm512_xor_si512(seed[u], prefix(w[u], b0)));
       const __m512i digits = _mm512_multishift_epi64_epi8(word(control), w[u]);
@@ -167,6 +171,7 @@ template <int U>
     const unsigned d = b % owen_levels_per_hash;
     const unsigned b0 = b - d;
     if (d == 0 || b == k) {
+#pragma GCC unroll 8
       for (int u = 0; u < U; ++u) {
         tree[u] = mix64(_mm512_xor_si512(seed[u], prefix(w[u], b0)));
         // The subtree's six digits b0 … b0 + 5 as an integer, the first one highest.
@@ -175,6 +180,7 @@ template <int U>
     }
     const __m512i at = word(std::uint64_t{1} << (63 - b));
     const std::uint64_t count = (63 - b) - ((std::uint64_t{1} << d) - 1);
+#pragma GCC unroll 8
     for (int u = 0; u < U; ++u) {
       const __m512i above = _mm512_srl_epi64(digits[u], shift(6 - d));
       const __m512i flip = _mm512_rolv_epi64(tree[u], _mm512_sub_epi64(word(count), above));
@@ -184,12 +190,14 @@ template <int U>
 #endif
   if (depth < 64) {
     const __m512i low = word(~std::uint64_t{0} >> depth);
+#pragma GCC unroll 8
     for (int u = 0; u < U; ++u) {
       const __m512i tail = mix64(_mm512_xor_si512(_mm512_xor_si512(seed[u], prefix(w[u], depth)),
                                                   word(0xa0761d6478bd642fULL)));
       out[u] = _mm512_ternarylogic_epi64(tail, out[u], low, 0xe4);  // low ? tail : out
     }
   }
+#pragma GCC unroll 8
   for (int u = 0; u < U; ++u) w[u] = out[u];
 }
 
@@ -212,6 +220,7 @@ class scrambler {
     if constexpr (S == sobol_scramble::owen) {
       owen<R>(w, key_, base_, t_);
     } else {
+#pragma GCC unroll 8
       for (int p = 0; p < R / 2; ++p) fast_owen_pair(w[2 * p], w[2 * p + 1], low_[p], high_[p]);
       if constexpr (R % 2 == 1) w[R - 1] = fast_owen(w[R - 1], key_[R - 1]);
     }
@@ -282,11 +291,13 @@ void run(const sobol_block_tables& t, std::size_t w0, __mmask8 tail, std::uint64
     const scrambler<U * V, V, S> lockstep(key, base, t);
     for (; b + U <= blocks; b += U) {
       __m512i w[U * V];
+#pragma GCC unroll 8
       for (int u = 0; u < U; ++u) {
         for (int v = 0; v < V; ++v) w[u * V + v] = _mm512_xor_si512(y[v], offset[v]);
         if (b + u + 1 < blocks) advance(b + u);
       }
       lockstep(w);
+#pragma GCC unroll 8
       for (int u = 0; u < U; ++u) {
         for (int v = 0; v < V; ++v) store(out + u * words, v, w[u * V + v]);
       }
