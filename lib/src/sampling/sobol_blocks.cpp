@@ -47,8 +47,10 @@ sobol_block_tables make_sobol_block_tables(std::span<const std::uint64_t> column
     t.flips.resize(s << k);
     for (std::size_t j = 0; j < s; ++j) {
       for (std::uint64_t p = 0; p < (std::uint64_t{1} << k); ++p) {
-        // k ≥ 1 here, so p << (64 − k) is defined: the prefix p as the top k digits.
-        t.flips[(j << k) + p] = owen_scramble::flips(keys[j], p << (64 - k), 0, k);
+        // The prefix p as the top k digits (none for k = 0: one set, or many dimensions, whose
+        // table is a single word of no flips, which the kernels do not read).
+        const std::uint64_t digits = k == 0 ? 0 : p << (64 - k);
+        t.flips[(j << k) + p] = owen_scramble::flips(keys[j], digits, 0, k);
       }
     }
     t.flip_base.resize(t.words);
