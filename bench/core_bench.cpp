@@ -1,4 +1,4 @@
-// Throughput of the numeric core: uniform doubles per second from philox_stream::fill_uniform
+// Throughput of the numeric core: uniform doubles per second from random_stream::fill_uniform
 // and terms per second for naive, pairwise and Neumaier summation, and the fixed cost of one
 // parallel_reduce call (start-up and join of its threads, no real work).
 //
@@ -21,7 +21,7 @@ namespace {
 // fill_uniform over a batch of `range(0)` values; batch 256 is what the estimators use.
 void BM_fill_uniform(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  const quadmc::philox_stream rng(1, quadmc::stream_id({1}));
+  const quadmc::random_stream rng(1, quadmc::stream_id({1}));
   std::vector<double> out(n);
   std::uint64_t first = 0;
   for (auto _ : state) {
@@ -37,7 +37,7 @@ BENCHMARK(BM_fill_uniform)->Arg(256)->Arg(4096)->Arg(1 << 20);
 
 // uniform(i) one at a time: what a caller pays for not batching.
 void BM_uniform_one_at_a_time(benchmark::State& state) {
-  const quadmc::philox_stream rng(1, quadmc::stream_id({2}));
+  const quadmc::random_stream rng(1, quadmc::stream_id({2}));
   std::uint64_t i = 0;
   for (auto _ : state) {
     double s = 0;

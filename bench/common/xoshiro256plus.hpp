@@ -6,7 +6,7 @@
 // conversion below discards, as its authors advise). Not for the library: its state must be
 // advanced in order, so a sample cannot be regenerated alone and a parallel run would depend on
 // the schedule (docs/design.md#hot-path-contract asks for counter-based streams,
-// quadmc::philox_stream).
+// quadmc::random_stream).
 #pragma once
 
 #include <cstdint>

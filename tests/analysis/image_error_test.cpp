@@ -21,7 +21,7 @@ namespace quadmc {
 namespace {
 
 std::vector<double> noise(std::size_t pixels, std::uint64_t stream) {
-  const philox_stream rng(17, stream);
+  const random_stream rng(17, stream);
   std::vector<double> e(pixels);
   for (std::size_t p = 0; p < pixels; ++p) {
     // Box–Muller from two uniforms in (0, 1]: standard normal errors.

@@ -18,7 +18,7 @@ namespace {
 
 // A standard normal by Box–Muller from uniforms 2i and 2i + 1 of a Philox stream; 1 − u lies in
 // (0, 1], so the logarithm is finite.
-double standard_normal(const philox_stream& stream, std::uint64_t i) {
+double standard_normal(const random_stream& stream, std::uint64_t i) {
   const double u1 = 1.0 - stream.uniform(2 * i);
   const double u2 = stream.uniform(2 * i + 1);
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
@@ -26,7 +26,7 @@ double standard_normal(const philox_stream& stream, std::uint64_t i) {
 
 // error_k = C·N_k^slope·exp(σ·Z_k), N = 2^4 … 2^(3 + points): lognormal noise, the fit's model.
 void synthetic_ladder(double c, double slope, double sigma, std::size_t points,
-                      const philox_stream& stream, std::vector<double>& n,
+                      const random_stream& stream, std::vector<double>& n,
                       std::vector<double>& error) {
   n.clear();
   error.clear();
@@ -70,7 +70,7 @@ TEST(PowerLawFit, NoisyLadderSlopeAndStandardErrorFollowTheirDistributions) {
   constexpr double sigma = 0.3, alpha = 4e-5;
   constexpr std::size_t points = 12;
   std::vector<double> n, error;
-  synthetic_ladder(0.7, -0.5, sigma, points, philox_stream(20240611, 1), n, error);
+  synthetic_ladder(0.7, -0.5, sigma, points, random_stream(20240611, 1), n, error);
   const power_law_fit fit = fit_power_law(n, error);
   ASSERT_TRUE(fit.ok());
   double mean = 0.0, sxx = 0.0;
@@ -99,7 +99,7 @@ TEST(PowerLawFit, IntervalCoversInNinetyFivePercentOfLadders) {
   std::size_t covered = 0;
   std::vector<double> n, error;
   for (std::size_t m = 0; m < ladders; ++m) {
-    synthetic_ladder(2.0, -1.25, 0.5, 8, philox_stream(7, m), n, error);
+    synthetic_ladder(2.0, -1.25, 0.5, 8, random_stream(7, m), n, error);
     const power_law_fit fit = fit_power_law(n, error);
     ASSERT_TRUE(fit.ok()) << "ladder " << m;
     if (fit.ci_low <= -1.25 && -1.25 <= fit.ci_high) ++covered;

@@ -113,7 +113,7 @@ TEST(RoundingFloor, FlagsARandomFloorGrowingLikeSqrtN) {
   const std::vector<double> n = doubling_ladder(1, 30);
   std::size_t late = 0;
   for (std::uint64_t m = 0; m < ladders; ++m) {
-    const philox_stream stream(99, m);
+    const random_stream stream(99, m);
     std::vector<double> error;
     for (std::size_t k = 0; k < n.size(); ++k) {
       const double u1 = 1.0 - stream.uniform(2 * k), u2 = stream.uniform(2 * k + 1);

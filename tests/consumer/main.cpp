@@ -11,7 +11,7 @@
 
 int main() {
   // Mean of 10^5 Philox uniforms: 1/2 within 5 standard errors (σ = 1/√12), false-alarm ≈ 6e-7.
-  const quadmc::philox_stream stream(42, quadmc::stream_id({1, 2, 3}));
+  const quadmc::random_stream stream(42, quadmc::stream_id({1, 2, 3}));
   quadmc::welford w;
   for (std::uint64_t i = 0; i < 100000; ++i) w.add(stream.uniform(i));
   const double tolerance = 5.0 / std::sqrt(12.0 * 100000.0);

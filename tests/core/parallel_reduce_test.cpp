@@ -29,7 +29,7 @@ constexpr unsigned thread_counts[] = {1, 2, 3, 8, 0};  // 0 = hardware concurren
 // low bits in different fold orders. Sixteen values per chunk, pairwise-free plain sum, to give
 // the threads something to do.
 double chunk_value(std::size_t c) {
-  const quadmc::philox_stream rng(77, quadmc::stream_id({c}));
+  const quadmc::random_stream rng(77, quadmc::stream_id({c}));
   double s = 0;
   for (std::uint64_t i = 0; i < 16; ++i) {
     const double sign = rng.uniform(3 * i) < 0.5 ? -1.0 : 1.0;
@@ -104,7 +104,7 @@ TEST(ParallelReduce, MergesWelfordAccumulatorsReproducibly) {
   constexpr std::size_t chunks = 257;
   const auto chunk = [](std::size_t c) {
     quadmc::welford w;
-    const quadmc::philox_stream rng(5, quadmc::stream_id({c}));
+    const quadmc::random_stream rng(5, quadmc::stream_id({c}));
     for (std::uint64_t i = 0; i < 100 + c % 7; ++i) w.add(std::exp(4 * rng.uniform(i)));
     return w;
   };

@@ -1,5 +1,5 @@
 // Tests for lib/src/core/philox_blocks*.cpp: the vector Philox kernels behind
-// philox_stream::fill_uniform compute Random123's Philox4x32-10, bit for bit, at every
+// random_stream::fill_uniform compute Random123's Philox4x32-10, bit for bit, at every
 // instruction-set level this CPU has (core/simd_level.hpp), for any start and length.
 #include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
@@ -15,11 +15,11 @@
 
 namespace {
 
-using engine = quadmc::philox_stream::engine;
+using engine = r123::Philox4x32;
 
 // Uniform number `index` of (seed, stream), straight from Random123's engine and rng.hpp's
 // documented layout (key = seed, counter = (index/2 as two words, stream as two words), word
-// index%2, top 53 bits): an independent reference, not philox_stream itself.
+// index%2, top 53 bits): an independent reference, not random_stream itself.
 double reference_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t index) {
   const std::uint64_t block = index >> 1;
   const engine::ctr_type ctr = {
@@ -52,7 +52,7 @@ TEST(PhiloxBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
   const std::uint64_t stream = quadmc::stream_id({7, 11});
   for (const quadmc::simd_level level : quadmc::available_simd_levels()) {
     quadmc::set_simd_level(level);
-    const quadmc::philox_stream rng(seed, stream);
+    const quadmc::random_stream rng(seed, stream);
     for (const std::uint64_t first : starts) {
       for (const std::size_t length : lengths) {
         std::vector<double> out(length, -1.0);
@@ -70,7 +70,7 @@ TEST(PhiloxBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
 TEST(PhiloxBlocks, EveryLevelGivesTheSameBitsOnALongRun) {
   // 2¹⁶ + 3 values from an odd start: the kernels' main loops, not only their tails.
   const simd_level_guard guard;
-  const quadmc::philox_stream rng(42, quadmc::stream_id({3}));
+  const quadmc::random_stream rng(42, quadmc::stream_id({3}));
   quadmc::set_simd_level(quadmc::simd_level::scalar);
   std::vector<double> scalar((1u << 16) + 3);
   rng.fill_uniform(5, scalar);

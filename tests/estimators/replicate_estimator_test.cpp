@@ -100,7 +100,7 @@ TEST(ReplicateEstimator, MedianClaimCoversAtItsStatedProbabilityOnAContinuousLaw
   const boost::math::normal_distribution<double> normal;
   constexpr int trials = 20000;
   std::vector<double> u(11 * trials);
-  philox_stream(2026, 38).fill_uniform(0, u);
+  random_stream(2026, 38).fill_uniform(0, u);
   int covered = 0;
   std::vector<double> x(11);
   for (int t = 0; t < trials; ++t) {

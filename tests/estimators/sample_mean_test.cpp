@@ -139,7 +139,7 @@ TEST(SampleMean, StratumDifferencesUseTriplesInsideARow) {
 // 48 batch sums are added, an ulp of one batch is below an ulp of the total, and a different
 // order of addition would go unseen.
 TEST(SampleMean, StratumDifferencesEqualThePointAtATimeLoopBitForBit) {
-  philox_stream rng(3, 7);
+  random_stream rng(3, 7);
   std::vector<double> y(12288);
   for (std::size_t i = 0; i < y.size(); ++i) y[i] = rng.uniform(i) * 10.0 - 3.0;
   for (const std::uint64_t row : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 9u, 10u, 1024u}) {

@@ -29,7 +29,7 @@ namespace {
 
 std::vector<double> random_values(std::size_t n, std::uint64_t stream) {
   std::vector<double> y(n);
-  philox_stream(11, stream).fill_uniform(0, y);
+  random_stream(11, stream).fill_uniform(0, y);
   return y;
 }
 
@@ -322,7 +322,7 @@ TEST(StoppingRules, AConstantStopsAtOnceWithZeroClaim) {
 
 TEST(StoppingRules, ABudgetTooSmallForTheToleranceIsReportedUnmet) {
   const auto noise = [](std::uint64_t r, std::uint64_t first, std::span<double> y) {
-    philox_stream(5, r).fill_uniform(first, y);
+    random_stream(5, r).fill_uniform(first, y);
   };
   replicate_stopping_options o;
   o.tolerance = 1e-9;

@@ -58,7 +58,7 @@ TEST(Catalogue, EveryMemberBatchAgreesWithPointByPointAtEverySimdLevel) {
         const std::size_t s = f.dimension();
         const std::size_t n = 300;  // a full vector body and a padded tail at every level
         std::vector<double> x(n * s), y(n), y1(n);
-        const philox_stream rng(11, 0);
+        const random_stream rng(11, 0);
         rng.fill_uniform(0, x);
         for (std::size_t i = 0; i < n; ++i) {
           for (std::size_t j = 0; j < s; ++j) {

@@ -302,7 +302,7 @@ TEST(GeometricAsian, StandardPathIsTheDefinitionAndFacesAreZero) {
   const geometric_asian_parameters p = cases[0];
   const std::size_t s = 4;
   const geometric_asian f(s, p);
-  const philox_stream rng(3, 0);
+  const random_stream rng(3, 0);
   std::vector<double> x(s), z(s);
   for (std::uint64_t n = 0; n < 50; ++n) {
     rng.fill_uniform(n * s, x);
@@ -356,7 +356,7 @@ TEST(GeometricAsian, PlainMonteCarloMeanAndVarianceWithinStatisticalBounds) {
   constexpr std::size_t n = 1u << 16;
   constexpr double z = 4.9;
   for (std::size_t s : {16u, 64u}) {
-    const philox_stream rng(17, s);
+    const random_stream rng(17, s);
     std::vector<double> x(n * s), y(n);
     rng.fill_uniform(0, x);
     const geometric_asian_parameters p0 = cases[0];

@@ -163,7 +163,7 @@ TEST(Irradiance, IncidentRadianceAndVisibilityMatchTheIntegrands) {
     const irradiance_hemisphere h(setup);
     const irradiance_area a(setup);
     const orthonormal_basis frame(setup.n);
-    const philox_stream rng(7, 0);
+    const random_stream rng(7, 0);
     int lit = 0, blocked = 0;
     for (std::uint64_t i = 0; i < 2000; ++i) {
       const double u1 = rng.uniform(2 * i), u2 = rng.uniform(2 * i + 1);

@@ -41,7 +41,7 @@ TEST(OrthonormalBasis, IsOrthonormalForRandomAndExtremeNormals) {
   expect_orthonormal({0, 0, -1});  // Frisvad's version divides by zero here
   expect_orthonormal(normalize(vec3{1e-9, 0, -1}));
   expect_orthonormal({1, 0, 0});
-  const philox_stream u(1, 1);
+  const random_stream u(1, 1);
   for (std::uint64_t i = 0; i < 1000; ++i) {
     const double z = 2 * u.uniform(2 * i) - 1, phi = 2 * std::numbers::pi * u.uniform(2 * i + 1);
     const double r = std::sqrt(1 - z * z);

@@ -62,7 +62,7 @@ struct polynomial {
 // Every monomial of total degree exactly `degree` spread over random axes, plus lower ones, with
 // coefficients in [−1, 1): a polynomial of that degree.
 polynomial random_polynomial(std::size_t s, int degree, std::uint64_t seed) {
-  const quadmc::philox_stream rng(seed, 7);
+  const quadmc::random_stream rng(seed, 7);
   std::uint64_t index = 0;
   polynomial p;
   for (int d = 0; d <= degree; ++d) {
@@ -121,7 +121,7 @@ region_result integrate_on_box(const quadmc::genz_malik_rule& rule, const polyno
 }
 
 std::vector<double> random_box_corner(std::size_t s, std::uint64_t seed, double shift) {
-  const quadmc::philox_stream rng(seed, 11);
+  const quadmc::random_stream rng(seed, 11);
   std::vector<double> out(s);
   for (std::size_t j = 0; j < s; ++j) out[j] = shift + rng.uniform(j);
   return out;

@@ -12,7 +12,7 @@ using quadmc::independent_points;
 // The coordinates are the stream's uniforms in order: point i, coordinate j = uniform(i·s + j).
 TEST(IndependentPoints, CoordinateJOfPointIIsUniformNumberIsPlusJ) {
   const independent_points p(3, 100, 9, 4);
-  const quadmc::philox_stream rng(9, 4);
+  const quadmc::random_stream rng(9, 4);
   std::vector<double> x(300);
   p.generate(0, x);
   for (std::size_t k = 0; k < x.size(); ++k) ASSERT_EQ(x[k], rng.uniform(k));

@@ -55,7 +55,7 @@ TEST(JitteredPoints, RowKernelIsTheScalarFormulaAtEverySimdLevel) {
         if (!strata) continue;
         const std::uint64_t n = *strata;
         const jittered_points p(s, n, 9, k + 100 * s);
-        const philox_stream rng(9, k + 100 * s);
+        const random_stream rng(9, k + 100 * s);
         const double inv_k = 1.0 / static_cast<double>(k);
         for (const std::uint64_t first : {std::uint64_t{0}, n / 3, n > 300 ? n - 300 : 0}) {
           // 259 = 256 + 3: a whole batch of the kernel and a tail, or to the end of the set.

@@ -51,7 +51,7 @@ TEST(LatinHypercubePoints, FusedKernelIsThePerAxisFormulaAtEverySimdLevel) {
             std::uint64_t{100003}, std::uint64_t{1} << 31, (std::uint64_t{1} << 31) + 1,
             (std::uint64_t{1} << 33) + 5}) {
         const latin_hypercube_points p(s, n, 21, n + s);
-        const philox_stream rng(21, n + s);
+        const random_stream rng(21, n + s);
         std::vector<random_permutation> axes;
         for (std::size_t j = 0; j < s; ++j) {
           axes.emplace_back(n, rng.bits(std::numeric_limits<std::uint64_t>::max() - j));

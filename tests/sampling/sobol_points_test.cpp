@@ -357,7 +357,7 @@ TEST(SobolPoints, VectorKernelEqualsTheScalarWalkBitwise) {
 // every b, whatever their later digits (here depth 32, the tree's six-level hashes on every
 // level and the tail below).
 TEST(OwenScramble, FlipOfADigitDependsOnlyOnTheDigitsBeforeIt) {
-  const owen_scramble scramble(1, 32, philox_stream(11, 3));
+  const owen_scramble scramble(1, 32, random_stream(11, 3));
   std::uint64_t state = 2026;
   for (int trial = 0; trial < 2000; ++trial) {
     const std::uint64_t v = mix64(state++) << 32;
@@ -414,7 +414,7 @@ TEST(OwenScramble, NodeFlipsAreIndependentFairCoins) {
   std::vector<std::uint64_t> x(nodes.size());
   for (int r = 0; r < R; ++r) {
     const std::uint64_t seed =
-        owen_scramble(1, 14, philox_stream(31, static_cast<std::uint64_t>(r))).key(0);
+        owen_scramble(1, 14, random_stream(31, static_cast<std::uint64_t>(r))).key(0);
     for (std::size_t i = 0; i < nodes.size(); ++i)
       ones[i] += static_cast<int>(x[i] = flip(seed, nodes[i]));
     for (std::size_t p = 0; p < pairs.size(); ++p) {

@@ -24,7 +24,7 @@ TEST(UnjitteredPoints, AreTheStratumCentres) {
 // the shifted grid, hence every stratum of the unshifted one as well, holds exactly one point.
 TEST(UnjitteredPoints, ShiftedGridMovesEveryPointByTheSameDelta) {
   const unjittered_points p(2, 25, 7, 3);
-  const philox_stream rng(7, 3);
+  const random_stream rng(7, 3);
   std::vector<double> x(50);
   p.generate(0, x);
   std::vector<int> hits(25, 0);

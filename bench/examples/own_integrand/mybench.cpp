@@ -97,7 +97,7 @@ class antithetic_mc final : public quadmc::method {
   quadmc::repetition_result run(const quadmc::method_cell& cell,
                                 const quadmc::run_context& context) const override {
     const std::size_t s = cell.function.dimension();
-    const quadmc::philox_stream random(context.seed, cell.stream);
+    const quadmc::random_stream random(context.seed, cell.stream);
     constexpr std::size_t batch = 256;  // pairs per call of the integrand
     std::vector<double> x(2 * batch * s), y(2 * batch);
     quadmc::welford pairs;

@@ -1,4 +1,4 @@
-// philox_stream::fill_uniform's kernel: the scalar reference and the run-time choice among the
+// random_stream::fill_uniform's kernel: the scalar reference and the run-time choice among the
 // vector kernels (philox_lanes.hpp). The scalar path is Random123's own Philox4x32-10, so the
 // vector kernels are tested against it bit for bit (tests/core/philox_blocks_test.cpp).
 #include "philox_constants.hpp"
@@ -17,8 +17,8 @@ void philox_uniform_blocks_scalar(const philox_counter_key& k, std::uint64_t fir
                                              static_cast<std::uint32_t>(block >> 32), k.stream_lo,
                                              k.stream_hi}};
     const auto r = r123::Philox4x32{}(ctr, key);
-    out[2 * b] = philox_stream::to_unit((static_cast<std::uint64_t>(r.v[1]) << 32) | r.v[0]);
-    out[2 * b + 1] = philox_stream::to_unit((static_cast<std::uint64_t>(r.v[3]) << 32) | r.v[2]);
+    out[2 * b] = random_stream::to_unit((static_cast<std::uint64_t>(r.v[1]) << 32) | r.v[0]);
+    out[2 * b + 1] = random_stream::to_unit((static_cast<std::uint64_t>(r.v[3]) << 32) | r.v[2]);
   }
 }
 

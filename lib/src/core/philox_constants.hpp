@@ -1,6 +1,6 @@
 // The Philox4x32-10 constants (Random123's philox.h: PHILOX_M4x32_0/1, PHILOX_W32_0/1) and the
 // entry points of the batched kernels. Private to lib/src/core; the public face is
-// philox_stream::fill_uniform (core/rng.hpp).
+// random_stream::fill_uniform (core/rng.hpp).
 #pragma once
 
 #include <cstddef>

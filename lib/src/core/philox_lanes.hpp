@@ -1,5 +1,5 @@
 // Philox4x32-10 on several counters at once: the body of the SSE2, AVX2 and AVX-512 kernels
-// behind philox_stream::fill_uniform (core/rng.hpp). Private to lib/src/core.
+// behind random_stream::fill_uniform (core/rng.hpp). Private to lib/src/core.
 //
 // Why lanes of 64 bits holding 32-bit words: a Philox round is two 32×32→64-bit products per
 // block (Salmon et al., SC'11, §4.1: hi/lo = mulhilo(M, c)), and x86 multiplies exactly that in
@@ -24,7 +24,7 @@ namespace quadmc::detail {
 // Lanes must provide: reg; lanes; broadcast(u64); iota(u64 first) → first + 0, 1, …;
 // low32/high32 (u64 → its 32-bit halves, in the low half of the lane); mul32 (low 32 bits of each
 // lane, full 64-bit product); xor_; and to_unit(hi, lo) → double lanes hi·2⁻³² + (lo ≫ 11)·2⁻⁵³
-// (the top 53 bits of the word hi:lo, exactly; philox_stream::to_unit), stored with store_unit.
+// (the top 53 bits of the word hi:lo, exactly; random_stream::to_unit), stored with store_unit.
 template <class Lanes, int groups>
 inline void philox_uniform_tiles(const philox_counter_key& k, std::uint64_t first_block,
                                  std::size_t blocks, double* out) {
@@ -66,7 +66,7 @@ inline void philox_uniform_tiles(const philox_counter_key& k, std::uint64_t firs
     }
 #pragma GCC unroll 8
     for (int g = 0; g < groups; ++g) {
-      // Word 0 of a block is c1:c0, word 1 is c3:c2 (philox_stream::bits).
+      // Word 0 of a block is c1:c0, word 1 is c3:c2 (random_stream::bits).
       Lanes::store_unit(out + 2 * (b + static_cast<std::size_t>(g) * Lanes::lanes),
                         Lanes::to_unit(c1[g], c0[g]), Lanes::to_unit(c3[g], c2[g]));
     }

@@ -117,7 +117,7 @@ class pick_freeze {
 
   const any_integrand& f_;
   std::size_t s_;
-  philox_stream a_, b_;
+  random_stream a_, b_;
   std::vector<double> a_rows_, b_rows_, x_, y_;
   std::uint64_t evaluations_ = 0;
 };

@@ -20,8 +20,8 @@ namespace {
 
 // The stream of a family's draws for one instance seed: named after the family, so that two
 // families drawn from one seed are independent (core/rng.hpp, name_id).
-philox_stream draws_of(std::string_view family, std::uint64_t seed) {
-  return philox_stream(seed, stream_id({name_id(family)}));
+random_stream draws_of(std::string_view family, std::uint64_t seed) {
+  return random_stream(seed, stream_id({name_id(family)}));
 }
 
 // G(u) = ∫₀ᵘ √(r² − t²) dt = (u√(r² − u²) + r²·asin(u/r))/2 for |u| ≤ r.
@@ -71,7 +71,7 @@ void require_unit_square_point(std::span<const double> p, std::string_view key) 
 heaviside_parameters heaviside_random_parameters(std::size_t s, std::uint64_t seed) {
   require(s >= 1 && s <= half_space_indicator::max_dimension, "dimension", s,
           "1 ≤ s ≤ 20 (the half-space volume sums 2^s terms)");
-  const philox_stream rng = draws_of("heaviside_random", seed);
+  const random_stream rng = draws_of("heaviside_random", seed);
   heaviside_parameters out{std::vector<double>(s), std::vector<double>(s)};
   // A uniform direction: s standard normals, normalised (the normal density is a function of the
   // norm alone). Each normal is the quantile of (k + ½)/2^52, k from 52 random bits: strictly
@@ -91,12 +91,12 @@ heaviside_parameters heaviside_random_parameters(std::size_t s, std::uint64_t se
 }
 
 disk_parameters disk_random_parameters(std::uint64_t seed) {
-  const philox_stream rng = draws_of("disk_random", seed);
+  const random_stream rng = draws_of("disk_random", seed);
   return {{rng.uniform(0), rng.uniform(1)}, 0.1 + 0.3 * rng.uniform(2)};
 }
 
 gaussian_2d_parameters gaussian_random_parameters(std::uint64_t seed) {
-  const philox_stream rng = draws_of("gaussian_random", seed);
+  const random_stream rng = draws_of("gaussian_random", seed);
   // σ log-uniform in [0.05, 0.5): a factor 10 of widths, from a narrow bump to a gentle slope.
   const auto scale = [&](std::uint64_t i) { return 0.05 * std::pow(10.0, rng.uniform(i)); };
   return {

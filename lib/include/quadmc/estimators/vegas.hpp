@@ -204,7 +204,7 @@ class vegas_state {
       : s_(s), options_(options), grid_(s, 1) {}
 
   template <integrand F>
-  vegas_iteration iterate(const F& f, const integrand_info& info, const philox_stream& rng,
+  vegas_iteration iterate(const F& f, const integrand_info& info, const random_stream& rng,
                           std::uint64_t n) {
     const std::size_t s = s_;
     // Increments: n/10 up to the maximum; a finer grid keeps the map (every old increment holds
@@ -524,7 +524,7 @@ vegas_result vegas(const F& f, const vegas_options& options, std::uint64_t seed,
   require(options.training_iterations < options.iterations || tolerance > 0.0,
           "training_iterations", options.training_iterations,
           "fewer than `iterations` under budget control (some must be combined)");
-  const philox_stream rng(seed, stream);
+  const random_stream rng(seed, stream);
   detail::vegas_state state(s, options);
   detail::vegas_combination combined;
   vegas_result out;

@@ -29,7 +29,7 @@
 //
 // Difficulty normalisation ([Genz 1987], used in many comparisons; docs/theory.md#genz-difficulty):
 // aᵢ = b·wᵢ/Σw with b = (9.0, 7.25, 1.85, 7.03, 20.4, 4.3) for the six families in the order above
-// (genz_normalise). genz_random_parameters draws w and u from a philox_stream.
+// (genz_normalise). genz_random_parameters draws w and u from a random_stream.
 //
 // Use them for multi-dimensional convergence studies with known answers. Derivative bounds in
 // info() are max over the cube of |∂ᵏf/∂xⱼᵏ| maximised over j; where only an upper bound is known
@@ -125,7 +125,7 @@ struct genz_parameters {
 };
 
 // w_j = 1 − U_j (in (0,1], so no aᵢ is 0: the product peak and Gaussian need aᵢ > 0) and
-// u_j = U_{s+j}, U_k = philox_stream(seed, stream_id({family})).uniform(k); w_j times the decay's
+// u_j = U_{s+j}, U_k = random_stream(seed, stream_id({family})).uniform(k); w_j times the decay's
 // factor (j⁻² or 2⁻ʲ, 1-based j); then normalised. The U_k do not depend on the decay, so the
 // three decays of one seed share u and differ only in how b is spread (a paired comparison).
 // genz_decay::none is bit for bit the draw without a decay. An exponential decay makes aⱼ ≈ b·2⁻ʲ,
@@ -134,7 +134,7 @@ struct genz_parameters {
 inline genz_parameters genz_random_parameters(genz_family f, std::size_t s, std::uint64_t seed,
                                               genz_decay decay = genz_decay::none) {
   require(s >= 1, "dimension", s, "s ≥ 1");
-  const philox_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
+  const random_stream rng(seed, stream_id({static_cast<std::uint64_t>(f)}));
   std::vector<double> w(s), u(s);
   for (std::size_t j = 0; j < s; ++j) {
     w[j] = 1.0 - rng.uniform(j);

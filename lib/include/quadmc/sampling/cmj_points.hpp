@@ -136,7 +136,7 @@ class cmj_points {
   std::uint64_t n_;
   std::uint64_t columns_ = 1;  // m
   std::uint64_t rows_ = 1;     // n
-  philox_stream rng_;
+  random_stream rng_;
   std::vector<random_permutation> samples_;         // π_g for g ≥ 1
   std::vector<random_permutation> row_offsets_;     // σ_g over the n rows
   std::vector<random_permutation> column_offsets_;  // τ_g over the m columns

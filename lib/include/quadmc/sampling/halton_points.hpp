@@ -69,7 +69,7 @@ struct affine_digit_map {
 class unrandomized_radical_inverse {
  public:
   static constexpr bool random = false;
-  unrandomized_radical_inverse(std::size_t, std::uint64_t, const philox_stream&) noexcept {}
+  unrandomized_radical_inverse(std::size_t, std::uint64_t, const random_stream&) noexcept {}
   double operator()(std::uint64_t i, std::size_t, std::uint64_t b, double inv_b) const noexcept {
     // φ_b(i) = r/b^K with r the K digits of i reversed, an integer: built exactly while b^K fits
     // 64 bits, so x is r/b^K rounded once or twice (a point k/b^K of the first b^K stays in its
@@ -96,7 +96,7 @@ class unrandomized_radical_inverse {
 class random_digit_permutation {
  public:
   static constexpr bool random = true;
-  random_digit_permutation(std::size_t s, std::uint64_t, const philox_stream& rng) {
+  random_digit_permutation(std::size_t s, std::uint64_t, const random_stream& rng) {
     const auto bases = halton_bases();
     first_.resize(s + 1);
     for (std::size_t j = 0; j < s; ++j) {
@@ -163,7 +163,7 @@ class nested_digit_scramble {
  public:
   static constexpr bool random = true;
   // `largest_index` is the largest i the set generates: it fixes the depth d_j of each base.
-  nested_digit_scramble(std::size_t s, std::uint64_t largest_index, const philox_stream& rng)
+  nested_digit_scramble(std::size_t s, std::uint64_t largest_index, const random_stream& rng)
       : seed_(s), depth_(s) {
     const auto bases = halton_bases();
     for (std::size_t j = 0; j < s; ++j) {
@@ -208,7 +208,7 @@ class halton_points {
   halton_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
       : s_(checked_dimension(dimension, n)),
         n_(n),
-        randomizer_(dimension, n - 1, philox_stream(seed, stream)),
+        randomizer_(dimension, n - 1, random_stream(seed, stream)),
         bases_(halton_bases().begin(), halton_bases().begin() + static_cast<std::ptrdiff_t>(s_)),
         inverse_(s_) {
     for (std::size_t j = 0; j < s_; ++j) inverse_[j] = 1.0 / static_cast<double>(bases_[j]);

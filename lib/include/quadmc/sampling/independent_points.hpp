@@ -36,7 +36,7 @@ class independent_points {
  private:
   std::size_t s_;
   std::uint64_t n_;
-  philox_stream rng_;
+  random_stream rng_;
 };
 
 }  // namespace quadmc

@@ -166,7 +166,7 @@ class jittered_points {
   stratum_grid grid_;
   std::uint64_t m_;
   std::uint64_t n_ = 0;
-  philox_stream rng_;
+  random_stream rng_;
 };
 
 }  // namespace quadmc

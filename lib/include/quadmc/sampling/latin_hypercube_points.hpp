@@ -134,7 +134,7 @@ class latin_hypercube_points {
  private:
   std::size_t s_;
   std::uint64_t n_;
-  philox_stream rng_;
+  random_stream rng_;
   std::vector<random_permutation> permutations_;
   // detail::latin_hypercube_lanes's tables (their pointers are taken per generate() call, so a
   // copied point set points into its own copies).

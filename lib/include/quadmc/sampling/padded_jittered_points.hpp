@@ -102,7 +102,7 @@ class padded_jittered_points {
   std::uint64_t n_;
   std::uint64_t kx_ = 1;
   std::uint64_t ky_ = 1;
-  philox_stream rng_;
+  random_stream rng_;
   std::vector<random_permutation> permutations_;
 };
 

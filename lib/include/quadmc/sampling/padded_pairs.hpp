@@ -27,7 +27,7 @@ class padded_pairs {
  public:
   // π_g for g ≥ 1 keyed by word 2^64 − 1 − (key_offset + g) of the stream, at the top of the
   // counter space that no point's uniforms reach (point_set.hpp).
-  padded_pairs(std::size_t s, std::uint64_t n, const philox_stream& rng, std::uint64_t key_offset)
+  padded_pairs(std::size_t s, std::uint64_t n, const random_stream& rng, std::uint64_t key_offset)
       : s_(s) {
     const std::size_t groups = (s + 1) / 2;
     shuffles_.reserve(groups > 0 ? groups - 1 : 0);

@@ -50,9 +50,9 @@ class padded_sobol_points {
       : s_(checked_dimension(dimension, n)),
         n_(n),
         randomizer_(dimension, static_cast<unsigned>(std::bit_width(n - 1)),
-                    philox_stream(seed, stream)),
+                    random_stream(seed, stream)),
         columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension),
-        pairs_(dimension, n, philox_stream(seed, stream), permutation_keys) {
+        pairs_(dimension, n, random_stream(seed, stream), permutation_keys) {
     const sobol_matrices matrices(std::min<std::size_t>(dimension, 2));
     for (std::size_t c = 0; c < s_; ++c) {
       const auto base = matrices.columns(c % 2);

@@ -25,7 +25,7 @@
 // is the digit of the first point that reaches it.
 //
 // Randomness is counter-based like every set's: w_j of coordinate c is uniform j·s + c of
-// philox_stream(seed, stream) for the pair's own sequence index j = π_g(i) (π_0 the identity,
+// random_stream(seed, stream) for the pair's own sequence index j = π_g(i) (π_0 the identity,
 // π_g for g ≥ 1 independent random permutations of [0, N) keyed from the top of the counter
 // space). Point j is a pure function of its partner chain j → p → … → 0 (at most 32 steps, one
 // per level): a batch computes each chain down to a table of the sequence's first points, built
@@ -73,7 +73,7 @@ class pmj02_points {
     // The first points of every coordinate's sequence, where every chain ends: up to 2^17
     // fractions in all (1 MiB; the whole set for N ≤ 2^16 in 2D), each the chain's value, so the
     // table changes no bit, only the chain's length. Its words come from one vectorized pass
-    // over the stream's uniforms [0, T·s) (philox_stream::fill_uniform), then one recurrence per
+    // over the stream's uniforms [0, T·s) (random_stream::fill_uniform), then one recurrence per
     // coordinate: a few nanoseconds per point.
     const std::uint64_t per_coordinate =
         std::bit_floor(std::max<std::uint64_t>(1, (std::uint64_t{1} << 17) / s_));
@@ -101,7 +101,7 @@ class pmj02_points {
   void generate(std::uint64_t first, std::span<double> out) const {
     require_batch(s_, n_, first, out);
     pairs_.generate(first, out, [this](std::uint64_t q, std::size_t c) {
-      return philox_stream::to_unit(fraction(q, c));
+      return random_stream::to_unit(fraction(q, c));
     });
   }
 
@@ -157,7 +157,7 @@ class pmj02_points {
 
   std::size_t s_;
   std::uint64_t n_;
-  philox_stream rng_;
+  random_stream rng_;
   const pmj02_partners* partners_;
   padded_pairs pairs_;  // π_g of the pairs g ≥ 1
   std::uint64_t table_size_ = 1;

@@ -9,7 +9,7 @@
 //    out[i*s + j] = coordinate j of point first + i, every coordinate in [0, 1).
 //  - A point is a pure function of (the set's parameters, seed, stream, point index): batches
 //    may be generated in any order and on any thread with bitwise identical results. Uniform
-//    number i·s + j of quadmc::philox_stream(seed, stream) is the jitter of coordinate j of point
+//    number i·s + j of quadmc::random_stream(seed, stream) is the jitter of coordinate j of point
 //    i; permutation keys come from the top of the counter space (index 2^64 − 1 − g), which no
 //    point reaches because N·s < 2^62 is required.
 //  - Only the dimensions asked for are generated: s is the integrand's dimension.

@@ -20,7 +20,7 @@
 // rank1_lattice_points_test.cpp checks their quality: the worst-case error of the Korobov space
 // with smoothness α falls at the proven rate N^(−α+ε) for α = 1 and 2.
 //
-// Randomness: the shift Δ_j is uniform number j of philox_stream(seed, stream) (the points use no
+// Randomness: the shift Δ_j is uniform number j of random_stream(seed, stream) (the points use no
 // other), so a point is a pure function of (s, N, seed, stream, i). With `shifted = false` the
 // lattice itself (Δ = 0): point 0 is the origin. All points share Δ, so one run cannot estimate
 // its own error: variance() is not_estimable (docs/theory.md#replicate-error-bars).
@@ -80,7 +80,7 @@ class rank1_lattice_points {
       : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j] & (n_ - 1);
-    if (shifted) philox_stream(seed, stream).fill_uniform(0, shift_);
+    if (shifted) random_stream(seed, stream).fill_uniform(0, shift_);
     blocks_ = detail::make_rank1_lattice_block_tables(z_, shift_, n_, Periodization::kind);
   }
 

@@ -12,7 +12,7 @@
 // fixed N (rank1_lattice_points gives the same points in index order, with a vector kernel).
 //
 // A point is a pure function of (s, seed, stream, q): batches may run in any order on any thread.
-// The shift is uniform number j of philox_stream(seed, stream), as rank1_lattice_points draws it,
+// The shift is uniform number j of random_stream(seed, stream), as rank1_lattice_points draws it,
 // so both sets of one stream share Δ.
 #pragma once
 
@@ -46,7 +46,7 @@ class rank1_lattice_sequence {
       : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j];
-    if (shifted) philox_stream(seed, stream).fill_uniform(0, shift_);
+    if (shifted) random_stream(seed, stream).fill_uniform(0, shift_);
   }
 
   std::uint64_t size() const noexcept { return n_; }

@@ -31,7 +31,7 @@ inline rejection_samples rejection_sample_disk(std::uint64_t n, std::uint64_t se
   require(n >= 1, "number of points N", n, "N ≥ 1");
   require(n <= (std::uint64_t{1} << 40), "number of points N", n,
           "N ≤ 2^40 (the samples are stored)");
-  const philox_stream rng(seed, stream);
+  const random_stream rng(seed, stream);
   rejection_samples out;
   out.points.reserve(2 * n);
   while (out.points.size() < 2 * n) {

@@ -19,7 +19,7 @@
 // become the double: with a randomization every coordinate is uniform on [0, 1) in 2^-53 steps.
 //
 // Randomness is counter-based: every key of a randomizer is a word of
-// philox_stream(seed, stream) taken from the top of its counter space (point_set.hpp), so a point
+// random_stream(seed, stream) taken from the top of its counter space (point_set.hpp), so a point
 // is a pure function of (s, N, seed, stream, i) and batches may run in any order on any thread.
 // One run of a randomized net cannot estimate its own error (its points are not independent):
 // variance() is not_estimable, and the error bar comes from independent replicates
@@ -74,7 +74,7 @@ inline std::uint32_t sobol_digits(std::span<const std::uint32_t, sobol_matrices:
 
 // A word of the randomization keys of one (seed, stream): word `index` counted from the top of
 // the counter space, which no point set's uniforms reach (point_set.hpp).
-inline std::uint64_t randomization_key(const philox_stream& rng, std::uint64_t index) noexcept {
+inline std::uint64_t randomization_key(const random_stream& rng, std::uint64_t index) noexcept {
   return rng.bits(std::numeric_limits<std::uint64_t>::max() - index);
 }
 
@@ -90,7 +90,7 @@ inline std::uint64_t randomization_key(const philox_stream& rng, std::uint64_t i
 struct unrandomized_digits {
   static constexpr bool random = false;
   static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::xor_constant;
-  unrandomized_digits(std::size_t, unsigned, const philox_stream&) noexcept {}
+  unrandomized_digits(std::size_t, unsigned, const random_stream&) noexcept {}
   std::uint64_t key(std::size_t) const noexcept { return 0; }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
   std::uint64_t operator()(std::uint64_t v, std::size_t) const noexcept { return v; }
@@ -102,7 +102,7 @@ struct unrandomized_digits {
 class digital_shift {
  public:
   static constexpr bool random = true;
-  digital_shift(std::size_t s, unsigned, const philox_stream& rng) : shift_(s) {
+  digital_shift(std::size_t s, unsigned, const random_stream& rng) : shift_(s) {
     for (std::size_t j = 0; j < s; ++j) shift_[j] = randomization_key(rng, j);
   }
   void prepare(std::size_t, std::span<std::uint64_t>) const noexcept {}
@@ -124,7 +124,7 @@ class digital_shift {
 class linear_matrix_scramble {
  public:
   static constexpr bool random = true;
-  linear_matrix_scramble(std::size_t s, unsigned, const philox_stream& rng)
+  linear_matrix_scramble(std::size_t s, unsigned, const random_stream& rng)
       : lower_(64 * s), shift_(s) {
     for (std::size_t j = 0; j < s; ++j) {
       shift_[j] = randomization_key(rng, j);
@@ -176,7 +176,7 @@ class owen_scramble {
  public:
   static constexpr bool random = true;
   static constexpr unsigned levels_per_hash = detail::owen_levels_per_hash;  // 63 nodes a hash
-  owen_scramble(std::size_t s, unsigned depth, const philox_stream& rng)
+  owen_scramble(std::size_t s, unsigned depth, const random_stream& rng)
       : seed_(s), depth_(depth < 64 ? depth : 64) {
     for (std::size_t j = 0; j < s; ++j) seed_[j] = randomization_key(rng, j);
   }
@@ -235,7 +235,7 @@ class owen_scramble {
 class fast_owen_scramble {
  public:
   static constexpr bool random = true;
-  fast_owen_scramble(std::size_t s, unsigned, const philox_stream& rng) : seed_(s) {
+  fast_owen_scramble(std::size_t s, unsigned, const random_stream& rng) : seed_(s) {
     for (std::size_t j = 0; j < s; ++j) seed_[j] = randomization_key(rng, j);
   }
   static constexpr detail::sobol_scramble scramble = detail::sobol_scramble::fast_owen;
@@ -294,7 +294,7 @@ class sobol_points {
         // The largest index is N − 1 + offset: its bit width is the depth below which every
         // point of the set has its own prefix.
         randomizer_(dimension, static_cast<unsigned>(std::bit_width(n - 1 + offset_)),
-                    philox_stream(seed, stream)),
+                    random_stream(seed, stream)),
         columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension) {
     const sobol_matrices matrices(dimension);
     for (std::size_t j = 0; j < s_; ++j) {

@@ -36,7 +36,7 @@ class unjittered_points {
   unjittered_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
                     std::uint64_t stream)
       : unjittered_points(dimension, n) {
-    philox_stream(seed, stream).fill_uniform(0, shift_);
+    random_stream(seed, stream).fill_uniform(0, shift_);
   }
 
   std::uint64_t size() const noexcept { return grid_.strata(); }

@@ -16,7 +16,7 @@
 // by π(digit), π one of the 24 permutations of {0, 1, 2, 3} chosen by a hash of (key, the digits
 // above it): a nested scramble of the index, so every aligned tile still takes an aligned block
 // of indices, in a random order. Coordinate d of the point is the owen_scramble of Sobol'
-// dimension d (natural order, x = C_d·index) with keys of philox_stream(seed, stream), depth T.
+// dimension d (natural order, x = C_d·index) with keys of random_stream(seed, stream), depth T.
 // Every sample is a pure function of (W, H, spp, seed, stream, c, r, i).
 #pragma once
 
@@ -45,8 +45,8 @@ class zsobol_points {
         height_(height),
         sample_bits_(checked_sample_bits(width, height, spp)),
         index_bits_(2 * resolution_bits(width, height) + sample_bits_),
-        scramble_(2, index_bits_, philox_stream(seed, stream)),
-        key_(randomization_key(philox_stream(seed, stream), permutation_key)),
+        scramble_(2, index_bits_, random_stream(seed, stream)),
+        key_(randomization_key(random_stream(seed, stream), permutation_key)),
         matrices_(2) {}
 
   std::uint64_t samples_per_pixel() const noexcept { return std::uint64_t{1} << sample_bits_; }
