@@ -42,7 +42,11 @@ TEST(ConfidenceInterval, RejectsLevelsOutsideTheOpenUnitInterval) {
 // we accept q = 0.05 if the count lies inside the central 1 − 1e-4 of Binomial(R, 0.05)
 // (false-alarm probability 1e-4), allowing the slightly optimistic intervals of small-sample
 // variance estimates (the normal z where a t would be exact) by testing the count, not a rate.
-TEST(ConfidenceInterval, CltIntervalCoversAbout95Percent) {
+// Under either generator (core/rng.hpp).
+class ConfidenceIntervalWithGenerator : public ::testing::TestWithParam<rng_kind> {};
+
+TEST_P(ConfidenceIntervalWithGenerator, CltIntervalCoversAbout95Percent) {
+  const rng_kind g = GetParam();
   const auto f = test_support::make_integrand(
       "e^(x+y)", box::unit(2), (std::numbers::e - 1) * (std::numbers::e - 1),
       [](std::span<const double> x) { return std::exp(x[0] + x[1]); });
@@ -52,15 +56,16 @@ TEST(ConfidenceInterval, CltIntervalCoversAbout95Percent) {
   const double hi = boost::math::quantile(boost::math::complement(binom, 0.5e-4));
   int miss_plain = 0, miss_jittered = 0, miss_cheb = 0;
   for (int r = 0; r < runs; ++r) {
-    const estimate p = monte_carlo(f, independent_points(2, 400, 1, r));
-    const estimate j = monte_carlo(f, jittered_points(2, 576, 2, r));  // 24², rows of 24 strata
+    const estimate p = monte_carlo(f, independent_points(2, 400, 1, r, g));
+    const estimate j = monte_carlo(f, jittered_points(2, 576, 2, r, g));  // 24², rows of 24 strata
     miss_plain += !clt_interval(p).contains(f.info().exact);
     miss_jittered += !clt_interval(j).contains(f.info().exact);
     miss_cheb += !chebyshev_interval(p).contains(f.info().exact);
   }
-  std::cout << "[ measured ] CLT 95% misses in " << runs << " runs: independent " << miss_plain
-            << ", jittered " << miss_jittered << " (accepted " << lo << "…" << hi
-            << "); Chebyshev δ = 0.05 misses: " << miss_cheb << "\n";
+  std::cout << "[ measured ] " << to_string(g) << ": CLT 95% misses in " << runs
+            << " runs: independent " << miss_plain << ", jittered " << miss_jittered
+            << " (accepted " << lo << "…" << hi << "); Chebyshev δ = 0.05 misses: " << miss_cheb
+            << "\n";
   EXPECT_GE(miss_plain, lo);
   EXPECT_LE(miss_plain, hi);
   EXPECT_GE(miss_jittered, lo);
@@ -75,5 +80,9 @@ TEST(ConfidenceInterval, CltIntervalCoversAbout95Percent) {
   // against the binomial bound (≤ 140) accepted.
   EXPECT_LE(miss_cheb, 2);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothGenerators, ConfidenceIntervalWithGenerator,
+                         ::testing::Values(rng_kind::philox4x32_10, rng_kind::ars4x32_7),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 }  // namespace

@@ -50,26 +50,34 @@ void expect_unbiased(const F& f, MakePoints make_points, const std::string& meth
 // N = 64 = 64¹ = 8² = 4³ is a valid stratified size in 1, 2 and 3 dimensions.
 constexpr std::uint64_t n = 64;
 
-TEST(MonteCarlo, EveryPointSetIsUnbiasedOnThreeIntegrands) {
-  auto check = [](const auto& f) {
+// Under either generator (core/rng.hpp): the statistics are the same, only the numbers differ.
+class MonteCarloWithGenerator : public ::testing::TestWithParam<rng_kind> {};
+
+TEST_P(MonteCarloWithGenerator, EveryPointSetIsUnbiasedOnThreeIntegrands) {
+  const rng_kind g = GetParam();
+  auto check = [g](const auto& f) {
     expect_unbiased(
-        f, [](std::size_t s, int r) { return independent_points(s, n, 1, r); }, "independent");
+        f, [g](std::size_t s, int r) { return independent_points(s, n, 1, r, g); }, "independent");
     expect_unbiased(
-        f, [](std::size_t s, int r) { return jittered_points(s, n, 2, r); }, "jittered");
+        f, [g](std::size_t s, int r) { return jittered_points(s, n, 2, r, g); }, "jittered");
     expect_unbiased(
-        f, [](std::size_t s, int r) { return unjittered_points(s, n, 3, r); },
+        f, [g](std::size_t s, int r) { return unjittered_points(s, n, 3, r, g); },
         "shifted unjittered");
     expect_unbiased(
-        f, [](std::size_t s, int r) { return padded_jittered_points(s, n, 4, r); },
+        f, [g](std::size_t s, int r) { return padded_jittered_points(s, n, 4, r, g); },
         "padded jittered");
     expect_unbiased(
-        f, [](std::size_t s, int r) { return latin_hypercube_points(s, n, 5, r); },
+        f, [g](std::size_t s, int r) { return latin_hypercube_points(s, n, 5, r, g); },
         "latin hypercube");
   };
   check(square);
   check(exponential);
   check(product);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothGenerators, MonteCarloWithGenerator,
+                         ::testing::Values(rng_kind::philox4x32_10, rng_kind::ars4x32_7),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST(MonteCarlo, UnshiftedCentresAreTheMidpointRule) {
   // Midpoint rule on 64 panels for x² on [0,2]: exact − M = (b−a)h²f″/24 = 2·(1/32)²·2/24.

@@ -64,10 +64,13 @@ struct repetitions {
   double variance = 0.0;  // sample variance of the R estimates (divisor R − 1)
 };
 
-repetitions repeat(const vegas_options& options, std::size_t count) {
+repetitions repeat(const vegas_options& options, std::size_t count,
+                   rng_kind generator = rng_kind::philox4x32_10) {
   const genz_gaussian f = narrow_gaussians();
   repetitions out;
-  for (std::size_t r = 0; r < count; ++r) out.runs.push_back(vegas(f, options, 2026, r));
+  for (std::size_t r = 0; r < count; ++r) {
+    out.runs.push_back(vegas(f, options, 2026, r, generator));
+  }
   for (const vegas_result& v : out.runs) out.mean += v.value;
   out.mean /= static_cast<double>(count);
   for (const vegas_result& v : out.runs)
@@ -114,9 +117,12 @@ TEST(Vegas, AdaptedVarianceFarBelowPlainMonteCarlo) {
 // averaged in quadrature, agrees with the spread of the estimates to within the χ² interval of
 // a sample variance on 63 degrees of freedom (two-sided 1e-4 quantiles; σ̂ itself is estimated
 // from ~10⁵ points, so its own noise is negligible beside that interval).
-TEST(Vegas, UnbiasedWithAnHonestStandardError) {
+// Under either generator (core/rng.hpp).
+class VegasWithGenerator : public ::testing::TestWithParam<rng_kind> {};
+
+TEST_P(VegasWithGenerator, UnbiasedWithAnHonestStandardError) {
   constexpr std::size_t count = 64;
-  const repetitions r = repeat({.max_evaluations = 50'000}, count);
+  const repetitions r = repeat({.max_evaluations = 50'000}, count, GetParam());
   const double exact = narrow_gaussians().info().exact;
   const double standard_error = std::sqrt(r.variance / count);
   const boost::math::students_t t(count - 1);
@@ -132,6 +138,10 @@ TEST(Vegas, UnbiasedWithAnHonestStandardError) {
   EXPECT_GE(r.variance / claimed, low);
   EXPECT_LE(r.variance / claimed, high);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothGenerators, VegasWithGenerator,
+                         ::testing::Values(rng_kind::philox4x32_10, rng_kind::ars4x32_7),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 // χ²/dof of a converged run is consistent with 1: with K combined iterations, each run's χ² is
 // χ²_{K−1} when the iterations are independent with honest σ̂, so the sum over R independent runs is

@@ -40,14 +40,15 @@ provenance sample() {
   p.compiler = "GNU 12.2.0 (\"Release\", -O3)";
   p.simd_levels_available = {"scalar", "sse2", "avx2"};
   p.simd_level = "sse2";
+  p.rng = "ars4x32_7";
   return p;
 }
 
 TEST(Provenance, MetaCsvIsTheColumnsThenOneRow) {
   EXPECT_EQ(meta_csv_text(sample()),
-            "quadmc_version,commit,compiler,simd_levels_available,simd_level\n"
+            "quadmc_version,commit,compiler,simd_levels_available,simd_level,rng\n"
             "0.1.0,9e0a32d1b2c3d4e5f60718293a4b5c6d7e8f9012-dirty,"
-            "\"GNU 12.2.0 (\"\"Release\"\", -O3)\",scalar sse2 avx2,sse2\n");
+            "\"GNU 12.2.0 (\"\"Release\"\", -O3)\",scalar sse2 avx2,sse2,ars4x32_7\n");
 }
 
 TEST(Provenance, ReadsBackWhatItWrote) {
@@ -59,6 +60,7 @@ TEST(Provenance, ReadsBackWhatItWrote) {
   EXPECT_EQ(p.compiler, expected.compiler);
   EXPECT_EQ(p.simd_levels_available, expected.simd_levels_available);
   EXPECT_EQ(p.simd_level, expected.simd_level);
+  EXPECT_EQ(p.rng, expected.rng);
 }
 
 TEST(Provenance, ReaderIgnoresAddedColumns) {
@@ -70,6 +72,8 @@ TEST(Provenance, ReaderIgnoresAddedColumns) {
   EXPECT_EQ(p.version, "0.2.0");
   EXPECT_EQ(p.commit, "unknown");
   EXPECT_EQ(p.simd_levels_available, std::vector<std::string>{"scalar"});
+  // Written before the rng column existed, when Philox was the only generator.
+  EXPECT_EQ(p.rng, "philox4x32_10");
 }
 
 TEST(Provenance, ReaderRefusesAMissingColumnOrAnotherRowCount) {

@@ -343,6 +343,23 @@ TEST(SceneErrors, TruncatedFileReportsTomlsPosition) {
   expect_error(array, line_of(array, "N = "), "");
 }
 
+TEST(ParseScene, RngNamesTheGeneratorAndIsPhiloxByDefault) {
+  EXPECT_EQ(parse_scene(valid, "scene.toml").rng, rng_kind::philox4x32_10);
+  const std::string ars = replace(valid, "seed = 7", "seed = 7\nrng = \"ars4x32_7\"");
+  EXPECT_EQ(parse_scene(ars, "scene.toml").rng, rng_kind::ars4x32_7);
+  const std::string explicit_philox =
+      replace(valid, "seed = 7", "seed = 7\nrng = \"philox4x32_10\"");
+  EXPECT_EQ(parse_scene(explicit_philox, "scene.toml").rng, rng_kind::philox4x32_10);
+  // A name it lacks: the line, the key, the value and the names it takes.
+  std::string t = replace(valid, "seed = 7", "seed = 7\nrng = \"aes\"");
+  std::string m = expect_error(t, line_of(t, "rng"), "rng");
+  EXPECT_NE(m.find("\"aes\""), std::string::npos) << m;
+  EXPECT_NE(m.find("philox4x32_10, ars4x32_7"), std::string::npos) << m;
+  t = replace(valid, "seed = 7", "seed = 7\nrng = 7");
+  m = expect_error(t, line_of(t, "rng"), "rng");
+  EXPECT_NE(m.find("philox4x32_10, ars4x32_7"), std::string::npos) << m;
+}
+
 TEST(SceneErrors, UnknownKeysAtEveryLevel) {
   std::string t = replace(valid, "seed = 7", "seed = 7\ncolour = 1");
   expect_error(t, line_of(t, "colour"), "colour");

@@ -70,7 +70,7 @@ struct plain_set {
   template <class Fn>
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options&,
                               const sample_stream& st, Fn&& fn) {
-    return fn(P(s, n, st.seed, st.stream));
+    return fn(P(s, n, st.seed, st.stream, st.rng));
   }
 };
 
@@ -418,15 +418,15 @@ struct sobol_set {
     if (o.interlacing > 1) return visit_interlaced(set, s, n, o, st, std::forward<Fn>(fn));
     switch (*set.randomization_of(o)) {
       case randomization::owen:
-        return fn(sobol_points<owen_scramble>(s, n, st.seed, st.stream, drop));
+        return fn(sobol_points<owen_scramble>(s, n, st.seed, st.stream, drop, st.rng));
       case randomization::fast_owen:
-        return fn(sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream, drop));
+        return fn(sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream, drop, st.rng));
       case randomization::lms_shift:
-        return fn(sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream, drop));
+        return fn(sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream, drop, st.rng));
       case randomization::shift:
-        return fn(sobol_points<digital_shift>(s, n, st.seed, st.stream, drop));
+        return fn(sobol_points<digital_shift>(s, n, st.seed, st.stream, drop, st.rng));
       default:
-        return fn(sobol_points<unrandomized_digits>(s, n, st.seed, st.stream, drop));
+        return fn(sobol_points<unrandomized_digits>(s, n, st.seed, st.stream, drop, st.rng));
     }
   }
 
@@ -439,12 +439,14 @@ struct sobol_set {
     const bool drop = o.drop_first_point;
     switch (*set.randomization_of(o)) {
       case randomization::owen:
-        return fn(interlaced_sobol_points<owen_scramble>(s, alpha, n, st.seed, st.stream, drop));
-      case randomization::shift:
-        return fn(interlaced_sobol_points<digital_shift>(s, alpha, n, st.seed, st.stream, drop));
-      case randomization::none:
         return fn(
-            interlaced_sobol_points<unrandomized_digits>(s, alpha, n, st.seed, st.stream, drop));
+            interlaced_sobol_points<owen_scramble>(s, alpha, n, st.seed, st.stream, drop, st.rng));
+      case randomization::shift:
+        return fn(
+            interlaced_sobol_points<digital_shift>(s, alpha, n, st.seed, st.stream, drop, st.rng));
+      case randomization::none:
+        return fn(interlaced_sobol_points<unrandomized_digits>(s, alpha, n, st.seed, st.stream,
+                                                               drop, st.rng));
       default:
         break;
     }
@@ -461,13 +463,13 @@ struct padded_sobol_set {
     require_qmc_request(set, s, n, o);
     switch (*set.randomization_of(o)) {
       case randomization::owen:
-        return fn(padded_sobol_points<owen_scramble>(s, n, st.seed, st.stream));
+        return fn(padded_sobol_points<owen_scramble>(s, n, st.seed, st.stream, st.rng));
       case randomization::fast_owen:
-        return fn(padded_sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream));
+        return fn(padded_sobol_points<fast_owen_scramble>(s, n, st.seed, st.stream, st.rng));
       case randomization::lms_shift:
-        return fn(padded_sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream));
+        return fn(padded_sobol_points<linear_matrix_scramble>(s, n, st.seed, st.stream, st.rng));
       default:
-        return fn(padded_sobol_points<digital_shift>(s, n, st.seed, st.stream));
+        return fn(padded_sobol_points<digital_shift>(s, n, st.seed, st.stream, st.rng));
     }
   }
 };
@@ -486,11 +488,11 @@ struct halton_set {
     require_qmc_request(set, s, n, o);
     switch (*set.randomization_of(o)) {
       case randomization::owen:
-        return fn(halton_points<nested_digit_scramble>(s, n, st.seed, st.stream));
+        return fn(halton_points<nested_digit_scramble>(s, n, st.seed, st.stream, st.rng));
       case randomization::permutation:
-        return fn(halton_points<random_digit_permutation>(s, n, st.seed, st.stream));
+        return fn(halton_points<random_digit_permutation>(s, n, st.seed, st.stream, st.rng));
       default:
-        return fn(halton_points<unrandomized_radical_inverse>(s, n, st.seed, st.stream));
+        return fn(halton_points<unrandomized_radical_inverse>(s, n, st.seed, st.stream, st.rng));
     }
   }
 };
@@ -507,9 +509,9 @@ struct lattice_set {
     require_qmc_request(set, s, n, o);
     const bool shifted = *set.randomization_of(o) == randomization::shift;
     if (o.periodic == periodization::baker) {
-      return fn(rank1_lattice_sequence<baker_transform>(s, n, st.seed, st.stream, shifted));
+      return fn(rank1_lattice_sequence<baker_transform>(s, n, st.seed, st.stream, shifted, st.rng));
     }
-    return fn(rank1_lattice_sequence<no_periodization>(s, n, st.seed, st.stream, shifted));
+    return fn(rank1_lattice_sequence<no_periodization>(s, n, st.seed, st.stream, shifted, st.rng));
   }
   template <class Fn>
   static decltype(auto) visit(std::size_t s, std::uint64_t n, const point_set_options& o,
@@ -519,9 +521,9 @@ struct lattice_set {
     const bool shifted = *set.randomization_of(o) == randomization::shift;
     if (is_weighted(o.periodic)) refuse_weighted(o.periodic);
     if (o.periodic == periodization::baker) {
-      return fn(rank1_lattice_points<baker_transform>(s, n, st.seed, st.stream, shifted));
+      return fn(rank1_lattice_points<baker_transform>(s, n, st.seed, st.stream, shifted, st.rng));
     }
-    return fn(rank1_lattice_points<no_periodization>(s, n, st.seed, st.stream, shifted));
+    return fn(rank1_lattice_points<no_periodization>(s, n, st.seed, st.stream, shifted, st.rng));
   }
 
   // The sample mean: with a weighted periodization, of g = f(φ(x))∏φ'(x_j) over the lattice
@@ -537,7 +539,7 @@ struct lattice_set {
     require_qmc_request(set, f.dimension(), n, o);
     const bool shifted = *set.randomization_of(o) == randomization::shift;
     const rank1_lattice_points<no_periodization> points(f.dimension(), n, st.seed, st.stream,
-                                                        shifted);
+                                                        shifted, st.rng);
     switch (o.periodic) {
       case periodization::c0:
         return periodized_monte_carlo<c0_transform>(f, points, threads);

@@ -129,7 +129,8 @@ class importance_method final : public method {
       return from_estimate(
           importance_over_file(cell.function, warp, file_points(u), context.threads));
     }
-    return from_estimate(points_.set->importance(cell.function, warp, {context.seed, cell.stream},
+    return from_estimate(points_.set->importance(cell.function, warp,
+                                                 {context.seed, cell.stream, context.rng},
                                                  cell.size.evaluations, context.threads));
   }
 

@@ -60,7 +60,8 @@ class irradiance_method final : public method {
       return from_estimate(
           irradiance_over_file(technique_, setup, file_points(u), context.threads));
     }
-    return from_estimate(points_.set->irradiance(technique_, setup, {context.seed, cell.stream},
+    return from_estimate(points_.set->irradiance(technique_, setup,
+                                                 {context.seed, cell.stream, context.rng},
                                                  cell.size.evaluations, context.threads));
   }
 

@@ -133,7 +133,7 @@ class point_set_method final : public method {
     if (cell.control == cell_control::tolerance) {
       return run_stopping(stopping_, *set_, {}, cell, context);
     }
-    return from_estimate(set_->monte_carlo(cell.function, {context.seed, cell.stream},
+    return from_estimate(set_->monte_carlo(cell.function, {context.seed, cell.stream, context.rng},
                                            cell.size.evaluations, context.threads));
   }
 

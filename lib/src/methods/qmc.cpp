@@ -218,7 +218,7 @@ class qmc_method final : public method {
       return run_stopping(*options_.stopping, *set_, options_.set, cell, context);
     }
     if (options_.combine) return run_combined(cell, context);
-    const estimate e = set_->monte_carlo(cell.function, {context.seed, cell.stream},
+    const estimate e = set_->monte_carlo(cell.function, {context.seed, cell.stream, context.rng},
                                          cell.size.evaluations, context.threads, options_.set);
     // No std_error nor error_estimate: one run of these points has none (e.std_error is NaN);
     // the replicates give them (error_bars()).
@@ -243,7 +243,7 @@ class qmc_method final : public method {
     std::vector<double> x;
     x.reserve(n * s);
     set_->points(
-        s, n, {context.seed, cell.stream},
+        s, n, {context.seed, cell.stream, context.rng},
         [&](std::uint64_t, std::span<const double> batch) {
           x.insert(x.end(), batch.begin(), batch.end());
         },
@@ -264,8 +264,8 @@ class qmc_method final : public method {
     repetition_result out;
     for (std::uint64_t r = 0; r < k; ++r) {
       const estimate e =
-          set_->monte_carlo(cell.function, {context.seed, stream_id({cell.stream, r})}, n,
-                            context.threads, options_.set);
+          set_->monte_carlo(cell.function, {context.seed, stream_id({cell.stream, r}), context.rng},
+                            n, context.threads, options_.set);
       values[r] = e.value;
       out.evaluations += e.evaluations;
     }

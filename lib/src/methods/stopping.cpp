@@ -289,8 +289,8 @@ repetition_result run_stopping(const stopping_choice& c, const point_set_entry& 
     // Replicate r draws from its own stream; the guaranteed rule's one set from the cell's.
     const auto values = [&](std::uint64_t r, std::uint64_t first, std::span<double> y) {
       const std::uint64_t stream = replicates ? stream_id({cell.stream, r}) : cell.stream;
-      set.extension_values(cell.function, {context.seed, stream}, cap, first, y, context.threads,
-                           !replicates, o);
+      set.extension_values(cell.function, {context.seed, stream, context.rng}, cap, first, y,
+                           context.threads, !replicates, o);
     };
     const extension_values source(values);
     if (replicates) {
@@ -309,9 +309,9 @@ repetition_result run_stopping(const stopping_choice& c, const point_set_entry& 
     std::uint64_t spent = 0;
     const auto stage = [&](std::uint64_t which, std::uint64_t n) {
       const std::uint64_t count = count_at_least(set, o, n, budget - spent, s);
-      const estimate run =
-          set.monte_carlo(cell.function, {context.seed, stream_id({cell.stream, which})}, count,
-                          context.threads, o);
+      const estimate run = set.monte_carlo(
+          cell.function, {context.seed, stream_id({cell.stream, which}), context.rng}, count,
+          context.threads, o);
       spent += run.evaluations;
       return stage_estimate{run.value, run.std_error, run.evaluations};
     };

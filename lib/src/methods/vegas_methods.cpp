@@ -54,7 +54,7 @@ class vegas_method final : public method {
       options.evaluations_per_iteration =
           std::min(options.evaluations_per_iteration, options.max_evaluations);
     }
-    const vegas_result r = vegas(cell.function, options, context.seed, cell.stream);
+    const vegas_result r = vegas(cell.function, options, context.seed, cell.stream, context.rng);
     repetition_result out;
     out.value = r.value;
     out.std_error = r.std_error;

@@ -388,6 +388,9 @@ std::string render_results_markdown(const run_info& info,
   }
   out += '\n';
   out += fmt::format("- seed: {}\n", info.seed);
+  out += fmt::format(
+      "- rng: {} (the methods' random streams; docs/theory.md#counter-based-generators)\n",
+      info.build.rng);
   out += info.threads_allowed != 0 && info.threads_allowed != info.threads
              ? fmt::format("- threads: {} used ({} allowed; no cell had work for more)\n",
                            info.threads, info.threads_allowed)

@@ -16,13 +16,16 @@ std::string meta_csv_text(const provenance& p) {
     levels += (levels.empty() ? "" : " ") + level;
   }
   const std::vector<std::string> header(meta_csv_columns.begin(), meta_csv_columns.end());
-  const std::vector<std::string> row = {p.version, p.commit, p.compiler, levels, p.simd_level};
+  const std::vector<std::string> row = {p.version, p.commit,     p.compiler,
+                                        levels,    p.simd_level, p.rng};
   return csv_line(header) + csv_line(row);
 }
 
 provenance read_meta_csv(const std::filesystem::path& file) {
   const csv_table table = read_csv_file(file);
-  for (const std::string_view column : meta_csv_columns) (void)table.column(column);
+  for (const std::string_view column : meta_csv_columns) {
+    if (column != "rng") (void)table.column(column);
+  }
   if (table.rows.size() != 1) {
     throw invalid_argument(fmt::format("{}: expected one row after the header, found {}",
                                        file.string(), table.rows.size()));
@@ -35,6 +38,7 @@ provenance read_meta_csv(const std::filesystem::path& file) {
   std::istringstream levels(row[table.column("simd_levels_available")]);
   for (std::string level; levels >> level;) p.simd_levels_available.push_back(level);
   p.simd_level = row[table.column("simd_level")];
+  if (table.has_column("rng")) p.rng = row[table.column("rng")];
   return p;
 }
 

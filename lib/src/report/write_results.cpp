@@ -42,6 +42,7 @@ run_info info_of(const scene_results& results, const results_options& options) {
   info.ranks = options.ranks;
   info.machine = machine_description();
   info.build = options.build;
+  info.build.rng = std::string(to_string(p.source.rng));
   info.run_seconds = results.run.seconds;
   for (const auto& skip : p.skips) info.skipped.push_back(skip.what + ": " + skip.reason);
   for (const auto& skip : results.run.skips) info.skipped.push_back(skip.what + ": " + skip.reason);

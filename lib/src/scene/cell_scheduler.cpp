@@ -14,7 +14,8 @@ namespace quadmc {
 run_session::run_session(const plan& p, const run_options& options)
     : plan_(&p),
       options_(&options),
-      context_{p.source.seed, resolve_threads(options.threads.value_or(p.source.threads))},
+      context_{p.source.seed, resolve_threads(options.threads.value_or(p.source.threads)),
+               p.source.rng},
       timing_min_seconds_(resolved_timing_min_seconds(p, options)),
       start_(std::chrono::steady_clock::now()),
       report_(static_cast<bool>(options.on_progress)) {

@@ -31,8 +31,8 @@ namespace {
 // The keys each table of a scene may hold, as the checks below use them (scene_keys() lists
 // them). A method's own keys are its descriptor's options; an integrand's other keys are its
 // family's parameters (catalogue_entry's keys).
-constexpr std::array<std::string_view, 8> top_level_keys{
-    "name", "description", "seed", "threads", "integrand", "method", "budget", "output"};
+constexpr std::array<std::string_view, 9> top_level_keys{
+    "name", "description", "seed", "rng", "threads", "integrand", "method", "budget", "output"};
 constexpr std::array<std::string_view, 7> integrand_keys{
     "family", "name", "dimension", "dimensions", "ensemble", "reference", "reference_uncertainty"};
 // The keys every [[method]] table may hold; the rest are the method's own (its descriptor's).
@@ -627,6 +627,17 @@ scene parse_root(const scene_reader& r, const toml::table& root) {
   if (const auto e = r.find(root, "description", "")) sc.description = r.string(*e, "a string");
   if (const auto e = r.find(root, "seed", "")) {
     sc.seed = r.count(*e, 0, std::numeric_limits<std::int64_t>::max(), "an integer ≥ 0");
+  }
+  if (const auto e = r.find(root, "rng", "")) {
+    // The generator of every random stream of the methods (core/rng.hpp); the integrands' own
+    // random parameters stay Philox, so both generators see the same integrands.
+    const std::string what = fmt::format("one of: {}", rng_kind_names());
+    const std::string given = r.string(*e, what);
+    try {
+      sc.rng = parse_rng_kind(given);
+    } catch (const invalid_argument&) {
+      r.expected(*e, what);
+    }
   }
   if (const auto e = r.find(root, "threads", "")) {
     sc.threads = static_cast<unsigned>(

@@ -748,9 +748,10 @@ std::string format_plan(const plan& p) {
   };
   line(fmt::format("plan for scene '{}' ({})", sc.name, sc.file));
   line(fmt::format(
-      "seed {}, threads {}, max_evaluations per cell {}, max_seconds {}, "
+      "seed {}, rng {}, threads {}, max_evaluations per cell {}, max_seconds {}, "
       "timing_min_seconds {}",
-      sc.seed, sc.threads == 0 ? std::string("0 (all cores)") : fmt::format("{}", sc.threads),
+      sc.seed, to_string(sc.rng),
+      sc.threads == 0 ? std::string("0 (all cores)") : fmt::format("{}", sc.threads),
       sc.budget.max_evaluations ? fmt::format("{}", *sc.budget.max_evaluations)
                                 : std::string("unlimited"),
       sc.budget.max_seconds ? fmt::format("{}", *sc.budget.max_seconds) : std::string("unlimited"),

@@ -20,6 +20,7 @@
 // one point each (strata_of), so that no caller branches on a set's name.
 #pragma once
 
+#include "quadmc/core/rng.hpp"
 #include "quadmc/estimators/estimate.hpp"
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/irradiance.hpp"
@@ -168,11 +169,12 @@ struct point_count_choice {
 };
 point_count_choice largest_point_count(point_count counts, std::uint64_t N, std::size_t s);
 
-// The stream of one repetition: the scene's seed keys the Philox generator, `stream` names the
-// repetition (core/rng.hpp).
+// The stream of one repetition: the scene's seed keys its generator (`rng`, Philox unless the
+// scene names ARS), `stream` names the repetition (core/rng.hpp).
 struct sample_stream {
   std::uint64_t seed = 0;
   std::uint64_t stream = 0;
+  rng_kind rng = rng_kind::philox4x32_10;
 };
 
 // A 1D density on [0, 1] sampled by inversion (sampling/inversion_warps.hpp), carried to the

@@ -499,13 +499,14 @@ struct vegas_combination {
 
 }  // namespace detail
 
-// ∫ f over f.info().domain by VEGAS+ with the Philox stream (seed, stream). Throws
+// ∫ f over f.info().domain by VEGAS+ with the random stream (seed, stream) of generator `rng`
+// (core/rng.hpp). Throws
 // invalid_argument for a budget below one iteration (16 evaluations, × iterations under budget
 // control), training_iterations ≥ iterations, a negative or non-finite tolerance, α < 0 or
 // β ∉ [0, 1], and a bad domain; non_finite_value if f returns NaN/±inf.
 template <integrand F>
 vegas_result vegas(const F& f, const vegas_options& options, std::uint64_t seed,
-                   std::uint64_t stream) {
+                   std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10) {
   const auto& info = f.info();
   const std::size_t s = f.dimension();
   require(s >= 1 && info.domain.dimension() == s, "integrand dimension", s,
@@ -524,13 +525,13 @@ vegas_result vegas(const F& f, const vegas_options& options, std::uint64_t seed,
   require(options.training_iterations < options.iterations || tolerance > 0.0,
           "training_iterations", options.training_iterations,
           "fewer than `iterations` under budget control (some must be combined)");
-  const random_stream rng(seed, stream);
+  const random_stream draws(seed, stream, rng);
   detail::vegas_state state(s, options);
   detail::vegas_combination combined;
   vegas_result out;
   std::uint64_t spent = 0;
   auto run = [&](std::uint64_t n) {
-    const detail::vegas_iteration it = state.iterate(f, info, rng, n);
+    const detail::vegas_iteration it = state.iterate(f, info, draws, n);
     spent += it.evaluations;
     ++out.iterations;
     return it;

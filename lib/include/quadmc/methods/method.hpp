@@ -19,6 +19,7 @@
 #include "quadmc/analysis/cell_statistics.hpp"
 #include "quadmc/analysis/error_prediction.hpp"
 #include "quadmc/analysis/theoretical_rate.hpp"
+#include "quadmc/core/rng.hpp"
 #include "quadmc/core/summation.hpp"
 #include "quadmc/functions/any_integrand.hpp"
 #include "quadmc/functions/catalogue.hpp"
@@ -73,6 +74,8 @@ struct integrand_traits {
 struct run_context {
   std::uint64_t seed = 0;  // the scene's seed: the key of every random stream
   unsigned threads = 1;    // as many as may be used; results do not depend on it
+  // The scene's `rng`: the generator of every random stream a method draws (core/rng.hpp).
+  rng_kind rng = rng_kind::philox4x32_10;
 };
 
 // One cell to run: the integrand instance, its size, and the stream of this repetition.

@@ -10,7 +10,7 @@
 // (two runs of one scene from different commits differ here and nowhere else).
 //
 //   meta.csv  a header line and one row:
-//     quadmc_version, commit, compiler, simd_levels_available, simd_level
+//     quadmc_version, commit, compiler, simd_levels_available, simd_level, rng
 //   Like the other CSV files (results_csv.hpp): columns may be added at the end, never renamed
 //   or removed.
 #pragma once
@@ -31,10 +31,14 @@ struct provenance {
   std::vector<std::string> simd_levels_available;  // what this CPU and build support, scalar
                                                    // first (core/simd_level.hpp)
   std::string simd_level;                          // the level the kernels ran at
+  // The generator(s) the random streams used (core/rng.hpp's names, joined by spaces where a
+  // writer ran both): the scene's `rng`. Folders written before the column read as Philox, the
+  // only generator then.
+  std::string rng = "philox4x32_10";
 };
 
-inline constexpr std::array<std::string_view, 5> meta_csv_columns = {
-    "quadmc_version", "commit", "compiler", "simd_levels_available", "simd_level"};
+inline constexpr std::array<std::string_view, 6> meta_csv_columns = {
+    "quadmc_version", "commit", "compiler", "simd_levels_available", "simd_level", "rng"};
 
 // The file name in a results folder.
 inline constexpr std::string_view meta_csv_file = "meta.csv";
@@ -43,7 +47,8 @@ inline constexpr std::string_view meta_csv_file = "meta.csv";
 std::string meta_csv_text(const provenance& p);
 
 // meta.csv read back (added columns ignored). Throws invalid_argument naming the file when it
-// cannot be read, lacks a column of meta_csv_columns, or has not exactly one row.
+// cannot be read, lacks a column of meta_csv_columns but the last (rng, added later), or has not
+// exactly one row.
 provenance read_meta_csv(const std::filesystem::path& file);
 
 }  // namespace quadmc

@@ -46,8 +46,9 @@ namespace quadmc {
 
 class cmj_points {
  public:
-  cmj_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
-      : s_(dimension), n_(n), rng_(seed, stream) {
+  cmj_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream,
+             rng_kind rng = rng_kind::philox4x32_10)
+      : s_(dimension), n_(n), rng_(seed, stream, rng) {
     require_point_set_size(dimension, n);
     if (!is_valid_size(s_, n_)) {
       const std::uint64_t k = integer_root(n_, 2);

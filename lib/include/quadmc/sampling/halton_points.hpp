@@ -205,10 +205,11 @@ class nested_digit_scramble {
 template <class Randomizer>
 class halton_points {
  public:
-  halton_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
+  halton_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream,
+                rng_kind rng = rng_kind::philox4x32_10)
       : s_(checked_dimension(dimension, n)),
         n_(n),
-        randomizer_(dimension, n - 1, random_stream(seed, stream)),
+        randomizer_(dimension, n - 1, random_stream(seed, stream, rng)),
         bases_(halton_bases().begin(), halton_bases().begin() + static_cast<std::ptrdiff_t>(s_)),
         inverse_(s_) {
     for (std::size_t j = 0; j < s_; ++j) inverse_[j] = 1.0 / static_cast<double>(bases_[j]);

@@ -18,8 +18,8 @@ namespace quadmc {
 class independent_points {
  public:
   independent_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                     std::uint64_t stream)
-      : s_(dimension), n_(n), rng_(seed, stream) {
+                     std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10)
+      : s_(dimension), n_(n), rng_(seed, stream, rng) {
     require_point_set_size(dimension, n);
   }
 

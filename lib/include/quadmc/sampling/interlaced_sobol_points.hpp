@@ -98,14 +98,15 @@ class interlaced_sobol_points {
   // N ≤ 2^32 points of s dimensions from the Sobol' points of α·s ≤ 3667 dimensions, α ∈ {1, 2,
   // 3}. As sobol_points, any N is accepted here and the methods decide which N they allow.
   interlaced_sobol_points(std::size_t dimension, unsigned alpha, std::uint64_t n,
-                          std::uint64_t seed, std::uint64_t stream, bool drop_first_point = false)
+                          std::uint64_t seed, std::uint64_t stream, bool drop_first_point = false,
+                          rng_kind rng = rng_kind::philox4x32_10)
       : s_(checked_dimension(dimension, alpha)),
         alpha_(alpha),
         inputs_(dimension * alpha),
         // The chunk of points whose αs coordinates fit the stack buffer of generate(); ≥ 1 since
         // αs ≤ 3667 < chunk_coordinates.
         chunk_(chunk_coordinates / inputs_),
-        base_(inputs_, n, seed, stream, drop_first_point) {}
+        base_(inputs_, n, seed, stream, drop_first_point, rng) {}
 
   std::uint64_t size() const noexcept { return base_.size(); }
   std::size_t dimension() const noexcept { return s_; }

@@ -52,13 +52,14 @@ void jittered_rows(std::size_t s, double k, double inv_k, const double* cell, do
 class jittered_points {
  public:
   // N = k^s points, one per stratum; rejects other N with the nearest valid sizes.
-  jittered_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
-      : jittered_points(stratum_grid::for_size(dimension, n), 1, seed, stream) {}
+  jittered_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream,
+                  rng_kind rng = rng_kind::philox4x32_10)
+      : jittered_points(stratum_grid::for_size(dimension, n), 1, seed, stream, rng) {}
 
   // k^s strata with m points each (the stratified estimator, nᵢ = m for all i).
   jittered_points(stratum_grid grid, std::uint64_t points_per_stratum, std::uint64_t seed,
-                  std::uint64_t stream)
-      : grid_(grid), m_(points_per_stratum), rng_(seed, stream) {
+                  std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10)
+      : grid_(grid), m_(points_per_stratum), rng_(seed, stream, rng) {
     require(m_ >= 1, "points per stratum m", m_, "m ≥ 1");
     require(grid_.strata() <= (std::uint64_t{1} << 62) / m_, "points per stratum m", m_,
             "m·k^s ≤ 2^62");

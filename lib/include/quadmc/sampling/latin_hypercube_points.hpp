@@ -62,8 +62,8 @@ bool latin_hypercube_place(const latin_hypercube_lanes& lanes, std::uint64_t fir
 class latin_hypercube_points {
  public:
   latin_hypercube_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                         std::uint64_t stream)
-      : s_(dimension), n_(n), rng_(seed, stream) {
+                         std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10)
+      : s_(dimension), n_(n), rng_(seed, stream, rng) {
     require_point_set_size(dimension, n);
     permutations_.reserve(s_);
     for (std::size_t j = 0; j < s_; ++j) {

@@ -46,13 +46,13 @@ class padded_sobol_points {
   // N ≤ 2^32 points in s dimensions; any N is accepted here (the catalogue asks for 2^m, the nets'
   // size).
   padded_sobol_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                      std::uint64_t stream)
+                      std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10)
       : s_(checked_dimension(dimension, n)),
         n_(n),
         randomizer_(dimension, static_cast<unsigned>(std::bit_width(n - 1)),
-                    random_stream(seed, stream)),
+                    random_stream(seed, stream, rng)),
         columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension),
-        pairs_(dimension, n, random_stream(seed, stream), permutation_keys) {
+        pairs_(dimension, n, random_stream(seed, stream, rng), permutation_keys) {
     const sobol_matrices matrices(std::min<std::size_t>(dimension, 2));
     for (std::size_t c = 0; c < s_; ++c) {
       const auto base = matrices.columns(c % 2);

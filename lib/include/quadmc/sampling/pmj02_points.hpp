@@ -64,10 +64,11 @@ class pmj02_points {
  public:
   static constexpr std::uint64_t max_points = std::uint64_t{1} << 32;  // 32 levels
 
-  pmj02_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream)
+  pmj02_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream,
+               rng_kind rng = rng_kind::philox4x32_10)
       : s_(checked_dimension(dimension, n)),
         n_(n),
-        rng_(seed, stream),
+        rng_(seed, stream, rng),
         partners_(&pmj02_partner_offsets()),
         pairs_(s_, n_, rng_, 0) {
     // The first points of every coordinate's sequence, where every chain ends: up to 2^17

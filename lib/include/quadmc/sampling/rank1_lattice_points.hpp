@@ -76,11 +76,12 @@ template <class Periodization>
 class rank1_lattice_points {
  public:
   rank1_lattice_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                       std::uint64_t stream, bool shifted = true)
+                       std::uint64_t stream, bool shifted = true,
+                       rng_kind rng = rng_kind::philox4x32_10)
       : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j] & (n_ - 1);
-    if (shifted) random_stream(seed, stream).fill_uniform(0, shift_);
+    if (shifted) random_stream(seed, stream, rng).fill_uniform(0, shift_);
     blocks_ = detail::make_rank1_lattice_block_tables(z_, shift_, n_, Periodization::kind);
   }
 

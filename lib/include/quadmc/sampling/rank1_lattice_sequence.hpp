@@ -42,11 +42,12 @@ class rank1_lattice_sequence {
  public:
   // n: the points it may be asked for (a power of two ≤ 2^20, the generating vector's range).
   rank1_lattice_sequence(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                         std::uint64_t stream, bool shifted = true)
+                         std::uint64_t stream, bool shifted = true,
+                         rng_kind rng = rng_kind::philox4x32_10)
       : s_(require_lattice_size(dimension, n)), n_(n), shift_(dimension, 0.0), z_(dimension) {
     const auto z = lattice_generating_vector();
     for (std::size_t j = 0; j < s_; ++j) z_[j] = z[j];
-    if (shifted) random_stream(seed, stream).fill_uniform(0, shift_);
+    if (shifted) random_stream(seed, stream, rng).fill_uniform(0, shift_);
   }
 
   std::uint64_t size() const noexcept { return n_; }

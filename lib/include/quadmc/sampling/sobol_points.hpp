@@ -287,14 +287,14 @@ class sobol_points {
   // accepted here; the methods decide which N they allow (a randomized net needs N = 2^m).
   // `drop_first_point` starts at index 1: the anti-pattern of docs/theory.md#sobol-anti-patterns.
   sobol_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed, std::uint64_t stream,
-               bool drop_first_point = false)
+               bool drop_first_point = false, rng_kind rng = rng_kind::philox4x32_10)
       : s_(checked_dimension(dimension, n, drop_first_point)),
         n_(n),
         offset_(drop_first_point ? 1 : 0),
         // The largest index is N − 1 + offset: its bit width is the depth below which every
         // point of the set has its own prefix.
         randomizer_(dimension, static_cast<unsigned>(std::bit_width(n - 1 + offset_)),
-                    random_stream(seed, stream)),
+                    random_stream(seed, stream, rng)),
         columns_(static_cast<std::size_t>(sobol_matrices::digits) * dimension) {
     const sobol_matrices matrices(dimension);
     for (std::size_t j = 0; j < s_; ++j) {

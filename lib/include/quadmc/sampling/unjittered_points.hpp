@@ -34,9 +34,9 @@ class unjittered_points {
   }
   // The centres shifted by one random Δ ∈ [0,1)^s modulo 1.
   unjittered_points(std::size_t dimension, std::uint64_t n, std::uint64_t seed,
-                    std::uint64_t stream)
+                    std::uint64_t stream, rng_kind rng = rng_kind::philox4x32_10)
       : unjittered_points(dimension, n) {
-    random_stream(seed, stream).fill_uniform(0, shift_);
+    random_stream(seed, stream, rng).fill_uniform(0, shift_);
   }
 
   std::uint64_t size() const noexcept { return grid_.strata(); }

@@ -117,6 +117,8 @@ struct scene {
   std::string name;
   std::string description;
   std::uint64_t seed = 0;
+  // `rng`: the generator of the methods' random streams (Philox unless the scene names ARS).
+  rng_kind rng = rng_kind::philox4x32_10;
   unsigned threads = 0;  // 0 = all cores
   std::vector<integrand_spec> integrands;
   std::vector<method_spec> methods;
