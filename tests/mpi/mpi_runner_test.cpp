@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <initializer_list>
 #include <limits>
 #include <span>
 #include <string>
@@ -50,8 +51,8 @@ quadmc::plan plan_of(const char* text) {
   return quadmc::make_plan(quadmc::parse_scene(text, "mpi_runner_test.toml"));
 }
 
-TEST(MpiRunner, EveryRepetitionIsBitwiseWhatOneProcessComputes) {
-  const quadmc::plan p = plan_of(R"(seed = 11
+// The scene of the bitwise checks: every kind of method, ensembles, a naive sum.
+constexpr const char* every_kind = R"(seed = 11
 threads = 2
 [[integrand]]
 family = "genz_gaussian"
@@ -84,10 +85,13 @@ control = "budget"
 repetitions = 2
 [budget]
 N = { from = 256, to = 262144, factor = 8 }
-)");
+)";
+
+// Every repetition of every cell of `p` under `policies` is bitwise what one process computes.
+void expect_every_repetition_bitwise(const quadmc::plan& p,
+                                     std::initializer_list<split_policy> policies) {
   const quadmc::run_output one = quadmc::run_plan(p);
-  for (const split_policy policy :
-       {split_policy::automatic, split_policy::all, split_policy::none}) {
+  for (const split_policy policy : policies) {
     quadmc_cli::mpi::mpi_scheduler scheduler(the_world, policy);
     const quadmc::run_output many = quadmc::run_plan(p, {}, scheduler);
     if (the_world.rank != 0) {
@@ -123,6 +127,19 @@ N = { from = 256, to = 262144, factor = 8 }
       }
     }
   }
+}
+
+TEST(MpiRunner, EveryRepetitionIsBitwiseWhatOneProcessComputes) {
+  expect_every_repetition_bitwise(plan_of(every_kind),
+                                  {split_policy::automatic, split_policy::all, split_policy::none});
+}
+
+// ARS-4x32-7 has Philox's counter layout (core/rng.hpp), so a rank's chunks draw what one
+// process's would: the same check, with the policy that splits the most.
+TEST(MpiRunner, EveryRepetitionUnderArsIsBitwiseWhatOneProcessComputes) {
+  const quadmc::plan p = plan_of((std::string("rng = \"ars4x32_7\"\n") + every_kind).c_str());
+  ASSERT_EQ(p.source.rng, quadmc::rng_kind::ars4x32_7);
+  expect_every_repetition_bitwise(p, {split_policy::all});
 }
 
 // `auto` splits the costly cells whose method shares chunks — the naive sum too, split exactly
