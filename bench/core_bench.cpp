@@ -5,11 +5,13 @@
 // Use it to see what the hot-path building blocks cost per sample (a budget for point sets and
 // estimators), not for accuracy: the accuracy of these is tested in tests/core/. Counters are
 // items per second (Google Benchmark's kIsIterationInvariantRate), one item = one uniform or one
-// summed term. Source of the generator: Salmon et al., SC'11 (Philox4x32-10).
+// summed term. The generators: Philox4x32-10 and ARS-4x32-7 ([Salmon et al. 2011 (Random123)];
+// docs/theory.md#counter-based-generators); `range(1)` picks one (0 Philox, 1 ARS).
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "quadmc/core/parallel_reduce.hpp"
@@ -21,7 +23,9 @@ namespace {
 // fill_uniform over a batch of `range(0)` values; batch 256 is what the estimators use.
 void BM_fill_uniform(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  const quadmc::random_stream rng(1, quadmc::stream_id({1}));
+  const auto generator = static_cast<quadmc::rng_kind>(state.range(1));
+  state.SetLabel(std::string(quadmc::to_string(generator)));
+  const quadmc::random_stream rng(1, quadmc::stream_id({1}), generator);
   std::vector<double> out(n);
   std::uint64_t first = 0;
   for (auto _ : state) {
@@ -33,11 +37,13 @@ void BM_fill_uniform(benchmark::State& state) {
   state.counters["uniforms_per_second"] =
       benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_fill_uniform)->Arg(256)->Arg(4096)->Arg(1 << 20);
+BENCHMARK(BM_fill_uniform)->ArgsProduct({{256, 4096, 1 << 20}, {0, 1}});
 
 // uniform(i) one at a time: what a caller pays for not batching.
 void BM_uniform_one_at_a_time(benchmark::State& state) {
-  const quadmc::random_stream rng(1, quadmc::stream_id({2}));
+  const auto generator = static_cast<quadmc::rng_kind>(state.range(0));
+  state.SetLabel(std::string(quadmc::to_string(generator)));
+  const quadmc::random_stream rng(1, quadmc::stream_id({2}), generator);
   std::uint64_t i = 0;
   for (auto _ : state) {
     double s = 0;
@@ -47,7 +53,7 @@ void BM_uniform_one_at_a_time(benchmark::State& state) {
   state.counters["uniforms_per_second"] =
       benchmark::Counter(256, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_uniform_one_at_a_time);
+BENCHMARK(BM_uniform_one_at_a_time)->Arg(0)->Arg(1);
 
 std::vector<double> terms(std::size_t n) {
   std::vector<double> x(n);
