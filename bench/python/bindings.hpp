@@ -10,6 +10,8 @@
 // while C++ computes, never while Python objects are touched.
 #pragma once
 
+#include "quadmc/core/rng.hpp"
+
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
@@ -43,5 +45,10 @@ std::optional<std::vector<double>> numbers_of(const pybind11::handle& iterable);
 // (pybind11's own conversion would raise TypeError for −1 without naming it).
 std::uint64_t to_count(const pybind11::handle& value, std::string_view parameter,
                        std::uint64_t minimum);
+
+// The keyword `rng` of a function that draws a method's random numbers: "philox4x32_10" or
+// "ars4x32_7" as a scene's top-level `rng` names the generator (core/rng.hpp), else
+// invalid_argument naming rng (a non-string too, which pybind11 would make a TypeError).
+quadmc::rng_kind to_rng(const pybind11::handle& value);
 
 }  // namespace quadmc_python

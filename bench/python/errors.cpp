@@ -5,6 +5,7 @@
 #include "bindings.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/rng.hpp"
 
 #include <fmt/format.h>
 
@@ -57,6 +58,14 @@ std::uint64_t to_count(const py::handle& value, std::string_view parameter, std:
                                    fmt::format("an integer in [{}, 2^64 - 1]", minimum));
   }
   return number.cast<std::uint64_t>();
+}
+
+quadmc::rng_kind to_rng(const py::handle& value) {
+  if (!py::isinstance<py::str>(value)) {
+    throw quadmc::invalid_argument("rng", quoted(value),
+                                   fmt::format("one of {}", quadmc::rng_kind_names()));
+  }
+  return quadmc::parse_rng_kind(value.cast<std::string>(), "rng");
 }
 
 }  // namespace quadmc_python

@@ -23,8 +23,9 @@
 //
 // Streams: repetition r uses stream_id({name_id(name), 0, name_id(label), N, r}) keyed by `seed`,
 // the stream a scene with that seed gives the cell (integrand `name`, its instance 0, the method's
-// default label, budget.N = N, repetition r: lib/src/scene/plan.cpp). The same arguments give the
-// same bits.
+// default label, budget.N = N, repetition r: lib/src/scene/plan.cpp), drawn by the generator `rng`
+// names, as a scene's top-level `rng` (run_context::rng; Philox4x32-10 by default, or ARS-4x32-7:
+// docs/theory.md#counter-based-generators). The same arguments give the same bits.
 //
 // Errors: an exception raised by f leaves evaluate as pybind11's error_already_set, unwinds the
 // kernel (parallel_reduce rethrows the lowest chunk's exception after joining), and pybind11
@@ -268,7 +269,8 @@ py::dict to_dict(const integration& done, std::uint64_t n) {
 
 py::dict integrate(const py::object& f, const std::string& method, const py::object& n,
                    const py::object& s, const py::object& seed, const py::object& repetitions,
-                   const py::object& threads, const py::object& name, const py::dict& options) {
+                   const py::object& threads, const py::object& name, const py::object& rng,
+                   const py::dict& options) {
   const quadmc::any_integrand integrand = to_integrand(f, s);
   const bool callable = !py::isinstance<quadmc::any_integrand>(f);
   const auto thread_count = static_cast<unsigned>(to_count(threads, "threads", 0));
@@ -296,7 +298,8 @@ py::dict integrate(const py::object& f, const std::string& method, const py::obj
   std::uint64_t runs = to_count(repetitions, "repetitions", 1);
   if (m->kind() == quadmc::method_kind::deterministic) runs = 1;
   const quadmc::run_context context{to_count(seed, "seed", 0),
-                                    callable ? 1U : quadmc::resolve_threads(thread_count)};
+                                    callable ? 1U : quadmc::resolve_threads(thread_count),
+                                    to_rng(rng)};
   const integration done =
       run_repetitions(*m, integrand, size, control, N, runs, py::str(name), context);
   return to_dict(done, N);
@@ -307,7 +310,7 @@ py::dict integrate(const py::object& f, const std::string& method, const py::obj
 void add_integrate(py::module_& m) {
   m.def("_integrate", &integrate, py::arg("f"), py::arg("method"), py::arg("n"), py::arg("s"),
         py::arg("seed"), py::arg("repetitions"), py::arg("threads"), py::arg("name"),
-        py::arg("options"),
+        py::arg("rng"), py::arg("options"),
         "The repetitions of quadmc.integrate as a dict of lists (quadmc/__init__.py wraps it).");
 }
 

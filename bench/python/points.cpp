@@ -1,10 +1,12 @@
-// quadmc.points(set, n, s, seed=0, stream=0, randomization=None, **options): the points of any
-// set of the catalogue (estimators/point_set_catalogue.hpp) as an (n, s) float64 array, bitwise
-// the numbers `quadmc points` writes for the same set, options, seed and stream: both take them
-// from the entry's own points(), which this writes straight into the array's buffer with the GIL
-// released. The set's options are Python keywords (randomization="owen", allow_any_n=True); a
-// key the set lacks is refused, as `quadmc points` refuses its flag, even when its value is the
-// default, so that a typo never passes for a choice.
+// quadmc.points(set, n, s, seed=0, stream=0, randomization=None, rng="philox4x32_10",
+// **options): the points of any set of the catalogue (estimators/point_set_catalogue.hpp) as an
+// (n, s) float64 array, bitwise the numbers `quadmc points` writes for the same set, options,
+// seed, stream and generator (--rng): both take them from the entry's own points(), which this
+// writes straight into the array's buffer with the GIL released. `rng` is the generator of the
+// set's random numbers, Philox4x32-10 or ARS-4x32-7 (docs/theory.md#counter-based-generators),
+// as a scene's `rng` is its methods'. The set's options are Python keywords (randomization="owen",
+// allow_any_n=True); a key the set lacks is refused, as `quadmc points` refuses its flag, even when
+// its value is the default, so that a typo never passes for a choice.
 #include "bindings.hpp"
 
 #include "quadmc/core/errors.hpp"
@@ -79,12 +81,12 @@ const quadmc::point_set_entry& find_set(const std::string& name) {
 py::array_t<double> points(const std::string& set_name, const py::object& n_value,
                            const py::object& s_value, const py::object& seed_value,
                            const py::object& stream_value, const py::object& randomization,
-                           const py::kwargs& keywords) {
+                           const py::object& rng, const py::kwargs& keywords) {
   const quadmc::point_set_entry& set = find_set(set_name);
   const std::uint64_t n = to_count(n_value, "n", 1);
   const std::uint64_t s = to_count(s_value, "s", 1);
   const quadmc::sample_stream stream{to_count(seed_value, "seed", 0),
-                                     to_count(stream_value, "stream", 0)};
+                                     to_count(stream_value, "stream", 0), to_rng(rng)};
   py::dict given(keywords);
   if (!randomization.is_none()) given["randomization"] = randomization;
   const quadmc::point_set_options options = options_for(set, given);
@@ -118,13 +120,17 @@ py::array_t<double> points(const std::string& set_name, const py::object& n_valu
 void add_points(py::module_& m) {
   m.def("points", &points, py::arg("set"), py::arg("n"), py::arg("s"), py::arg("seed") = 0,
         py::arg("stream") = 0, py::arg("randomization") = py::none(),
+        py::arg("rng") = "philox4x32_10",
         R"(The n points of a point set in s dimensions as an (n, s) float64 array.
 
-Bitwise the numbers `quadmc points SET --n N --s S --seed SEED --stream STREAM` writes.
+Bitwise the numbers `quadmc points SET --n N --s S --seed SEED --stream STREAM --rng RNG` writes.
 set: a name of quadmc.point_sets(); randomization and the set's other options (periodization,
 allow_any_n=True, drop_first_point=True) as keywords, as quadmc.point_sets() lists them.
-Raises ValueError naming the parameter for an unknown set or key, a bad value, or an n the set
-cannot hold (N = 2^m for a randomized net, k^s for a grid).)");
+rng: the generator of the set's random numbers, "philox4x32_10" (Philox4x32-10, the default) or
+"ars4x32_7" (ARS-4x32-7), as a scene's top-level rng; the two give different points for the same
+seed (an unrandomized set, such as randomization="none", is the same under both).
+Raises ValueError naming the parameter for an unknown set or key, a bad value (rng included), or
+an n the set cannot hold (N = 2^m for a randomized net, k^s for a grid).)");
 }
 
 }  // namespace quadmc_python

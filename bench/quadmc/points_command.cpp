@@ -4,6 +4,7 @@
 #include "cli_validators.hpp"
 
 #include "quadmc/core/errors.hpp"
+#include "quadmc/core/rng.hpp"
 #include "quadmc/estimators/point_set_catalogue.hpp"
 #include "quadmc/sampling/discrepancy.hpp"
 #include "quadmc/sampling/net_quality.hpp"
@@ -68,11 +69,17 @@ CLI::App* add_points_subcommand(CLI::App& app, points_request& request) {
   points->add_option("--s", request.s, "Dimension s ≥ 1")
       ->required()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
-  points->add_option("--seed", request.seed, "Seed K ≥ 0 (the Philox key)")
+  points->add_option("--seed", request.seed, "Seed K ≥ 0 (the key of the --rng generator)")
       ->required()
       ->check(non_negative_integer());
   points->add_option("--stream", request.stream, "Stream of the seed (default 0)")
       ->check(non_negative_integer());
+  points
+      ->add_option(
+          "--rng", request.rng,
+          fmt::format("Generator of the set's random numbers: one of {} (default {})",
+                      quadmc::rng_kind_names(), quadmc::to_string(quadmc::rng_kind::philox4x32_10)))
+      ->type_name("NAME");
   for (const set_key& k : set_keys()) {
     std::string help;
     for (std::size_t i = 0; i < k.sets.size(); ++i) {
@@ -192,6 +199,7 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
                                    fmt::format("one of: {}", quadmc::point_set_names()));
   }
   const quadmc::point_set_options options = options_for(*set, r);
+  const quadmc::sample_stream stream{r.seed, r.stream, quadmc::parse_rng_kind(r.rng, "--rng")};
   // The dimension first, so that a set that cannot have s dimensions blames --s, not --n.
   if (const std::string problem = quadmc::dimension_problem(*set, r.s, options); !problem.empty()) {
     throw quadmc::invalid_argument("--s", std::to_string(r.s), problem);
@@ -234,7 +242,7 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
     std::vector<double> x;
     x.reserve(r.n * r.s);
     set->points(
-        r.s, r.n, {r.seed, r.stream},
+        r.s, r.n, stream,
         [&](std::uint64_t, std::span<const double> batch) {
           x.insert(x.end(), batch.begin(), batch.end());
         },
@@ -247,7 +255,7 @@ void run_points(const points_request& r, const std::function<bool(std::string_vi
     if (!emit(text)) return;
     try {
       set->points(
-          r.s, r.n, {r.seed, r.stream},
+          r.s, r.n, stream,
           [&](std::uint64_t, std::span<const double> x) {
             text.clear();
             auto out = std::back_inserter(text);

@@ -1,7 +1,8 @@
 // End-to-end tests of `quadmc points` (bench/quadmc/points_command.hpp) and of a scene with the
 // quasi-Monte Carlo methods: the CSV of a point set (the unrandomized Sobol' points by value,
-// the same seed giving the same bytes), the one-line errors for what a set refuses, and a run
-// whose convergence.csv carries the replicate and discrepancy columns.
+// the same seed giving the same bytes, --rng's generator other bytes), the one-line errors for
+// what a set refuses, and a run whose convergence.csv carries the replicate and discrepancy
+// columns.
 #include "quadmc/report/results_csv.hpp"
 #include "quadmc_command.hpp"
 
@@ -170,6 +171,61 @@ TEST(PointsCommand, PassesEachSetsOwnFlagsToIt) {
                        "none", "--drop-first-point"});
   ASSERT_EQ(plain.exit_status, 0) << describe(plain);
   EXPECT_EQ(plain.out, "x1,x2\n0.5,0.5\n0.75,0.25\n0.25,0.75\n");
+}
+
+// --rng names the generator of the set's random numbers (docs/theory.md#counter-based-generators):
+// ARS-4x32-7 gives other points than the default Philox4x32-10 for the same seed, the same bytes
+// every time; philox4x32_10 named is the default; a set that draws nothing is the same under both.
+// The command has no --threads: its points are one serial pass over the set.
+TEST(PointsCommand, RngNamesTheGeneratorOfTheRandomPoints) {
+  scratch_folder dir;
+  for (const std::vector<std::string>& set :
+       {std::vector<std::string>{"independent"}, std::vector<std::string>{"jittered"},
+        std::vector<std::string>{"sobol", "--randomization", "owen"}}) {
+    std::vector<std::string> args{"points", set[0], "--n", "64", "--s", "2", "--seed", "3"};
+    args.insert(args.end(), set.begin() + 1, set.end());
+    const command_result philox = run_quadmc(dir, args);
+    ASSERT_EQ(philox.exit_status, 0) << describe(philox);
+    std::vector<std::string> named = args;
+    named.insert(named.end(), {"--rng", "philox4x32_10"});
+    EXPECT_EQ(run_quadmc(dir, named).out, philox.out) << set[0];
+    std::vector<std::string> with_ars = args;
+    with_ars.insert(with_ars.end(), {"--rng", "ars4x32_7"});
+    const command_result ars = run_quadmc(dir, with_ars);
+    ASSERT_EQ(ars.exit_status, 0) << describe(ars);
+    EXPECT_EQ(std::count(ars.out.begin(), ars.out.end(), '\n'), 65) << set[0];
+    EXPECT_EQ(ars.out.rfind("x1,x2\n", 0), 0u) << set[0];
+    EXPECT_NE(ars.out, philox.out) << set[0];
+    EXPECT_EQ(run_quadmc(dir, with_ars).out, ars.out) << set[0];
+  }
+  const std::vector<std::string> fixed{
+      "points", "sobol", "--n", "8", "--s", "2", "--seed", "3", "--randomization", "none"};
+  std::vector<std::string> fixed_ars = fixed;
+  fixed_ars.insert(fixed_ars.end(), {"--rng", "ars4x32_7"});
+  EXPECT_EQ(run_quadmc(dir, fixed_ars).out, run_quadmc(dir, fixed).out);
+  const command_result help = run_quadmc(dir, {"points", "--help"});
+  EXPECT_EQ(help.exit_status, 0) << describe(help);
+  EXPECT_NE(help.out.find("--rng"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("philox4x32_10, ars4x32_7"), std::string::npos) << help.out;
+}
+
+TEST(PointsCommand, RefusesAnRngThatNamesNoGeneratorInOneLine) {
+  expect_points_error(
+      {"points", "independent", "--n", "8", "--s", "2", "--seed", "1", "--rng", "mt19937"},
+      "invalid --rng = \"mt19937\"", "expected one of philox4x32_10, ars4x32_7");
+  // Names are exact: no other case, no prefix.
+  expect_points_error(
+      {"points", "independent", "--n", "8", "--s", "2", "--seed", "1", "--rng", "ARS4x32_7"},
+      "--rng", "one of philox4x32_10, ars4x32_7");
+  expect_points_error(
+      {"points", "independent", "--n", "8", "--s", "2", "--seed", "1", "--rng", "philox"}, "--rng",
+      "one of philox4x32_10, ars4x32_7");
+  // A missing value is a usage error, as for every option.
+  scratch_folder dir;
+  const command_result bare =
+      run_quadmc(dir, {"points", "independent", "--n", "8", "--s", "2", "--seed", "1", "--rng"});
+  EXPECT_EQ(bare.exit_status, 2) << describe(bare);
+  EXPECT_NE(bare.err.find("--rng"), std::string::npos) << describe(bare);
 }
 
 constexpr const char* qmc_scene = R"(name = "qmc"

@@ -1,8 +1,10 @@
 """quadmc.integrate: a method of the registry on a catalogue Integrand or a Python callable, run as
 a scene's cell (bench/python/integrate.cpp). A numpy twin of a catalogue integrand gives the
-catalogue's estimate; the same arguments give the same bits; errors raised by the callable reach
-Python as they were raised; bad input is ValueError with the library's one-line text."""
+catalogue's estimate; the same arguments give the same bits; rng names the generator of the
+method's numbers as a scene's rng does; errors raised by the callable reach Python as they were
+raised; bad input is ValueError with the library's one-line text."""
 import math
+from statistics import NormalDist
 
 import numpy as np
 import pytest
@@ -87,6 +89,53 @@ def test_the_thread_count_does_not_change_a_bit(catalogue):
     assert one.values == two.values and one.std_error == two.std_error
 
 
+# False-alarm probability ≤ 1e-4: half of it is the two-sided normal tail beyond
+# z = Φ⁻¹(1 − 5e-5/2) ≈ 4.06 standard errors; the other half is room for the standard error being
+# estimated (at N = 2^16 its relative error is about 0.6 % for this bounded integrand, which moves
+# the tail by about 1 %) and for the mean of 2^16 bounded values being only nearly normal. The seed
+# is fixed: it had that chance of failing when chosen, and fails for good only if ARS's numbers
+# or the estimate are wrong.
+FALSE_ALARM = 1e-4
+Z = NormalDist().inv_cdf(1 - FALSE_ALARM / 4)
+
+
+def test_ars_runs_and_its_estimate_is_within_z_standard_errors(catalogue):
+    # ARS-4x32-7 (docs/theory.md#counter-based-generators) drives the method's points through
+    # run_context::rng; the integrand's own parameters are the same under both generators.
+    ars = quadmc.integrate(catalogue, "plain_mc", 2**16, seed=17, rng="ars4x32_7")
+    philox = quadmc.integrate(catalogue, "plain_mc", 2**16, seed=17)
+    assert ars.evaluations == 2**16 and ars.std_error > 0
+    assert abs(ars.value - catalogue.exact) <= Z * ars.std_error, (ars.value, catalogue.exact)
+    assert ars.values != philox.values  # other numbers from the same seed and stream
+    assert quadmc.integrate(catalogue, "plain_mc", 2**16, seed=17, rng="ars4x32_7").values == \
+        ars.values
+    # A callable sees the same points as the catalogue integrand under ARS too.
+    twin_ars = quadmc.integrate(twin, "plain_mc", 2**16, s=4, seed=17, rng="ars4x32_7",
+                                name="genz_gaussian_s4")
+    assert abs(twin_ars.value - ars.value) <= RELATIVE * abs(ars.value)
+
+
+def test_the_default_generator_is_philox(catalogue):
+    for method in ("plain_mc", "sobol"):
+        default = quadmc.integrate(catalogue, method, 1024, seed=4, repetitions=2)
+        philox = quadmc.integrate(catalogue, method, 1024, seed=4, repetitions=2,
+                                  rng="philox4x32_10")
+        assert default.values == philox.values, method
+
+
+def test_ars_gives_the_values_of_a_scene_with_rng_ars(catalogue):
+    # The cell of a scene with rng = "ars4x32_7", the same seed and integrand name, one repetition:
+    # its estimate_mean is the one value, written as the shortest text that reads back to it.
+    scene = {"name": "ars", "seed": 9, "rng": "ars4x32_7", "threads": 1,
+             "integrand": [{"family": "genz_gaussian", "dimension": 4, "a": A, "u": U}],
+             "method": [{"name": "plain_mc", "repetitions": 1}],
+             "budget": {"N": [4096]}, "output": {"plots": False}}
+    row = quadmc.run(scene).convergence[0]
+    got = quadmc.integrate(catalogue, "plain_mc", 4096, seed=9, rng="ars4x32_7")
+    assert (row["integrand"], row["method"]) == ("genz_gaussian_s4", "plain_mc")
+    assert got.values == [row["estimate_mean"]]
+
+
 def test_the_result_folds_the_repetitions(catalogue):
     r = quadmc.integrate(catalogue, "plain_mc", 4096, seed=1, repetitions=4)
     assert r.value == math.fsum(r.values) / 4
@@ -131,6 +180,10 @@ def test_a_return_of_the_wrong_length_names_f():
     (lambda: quadmc.integrate(twin, "simpson", 2, s=4), r"invalid n = 2: .*smallest grid"),
     (lambda: quadmc.integrate(twin, "no_such_method", 100, s=4), r"no_such_method"),
     (lambda: quadmc.integrate(twin, "plain_mc", 100, s=4, bogus=1), r"bogus"),
+    (lambda: quadmc.integrate(twin, "plain_mc", 100, s=4, rng="mt19937"),
+     r'^invalid rng = "mt19937": expected one of philox4x32_10, ars4x32_7$'),
+    (lambda: quadmc.integrate(twin, "plain_mc", 100, s=4, rng=1),
+     r"^invalid rng = 1: expected one of philox4x32_10, ars4x32_7$"),
     (lambda: quadmc.integrate(twin, "simpson", 100, s=2, panels=[2, 4]),
      r"invalid n = 100: expected one of the sizes `panels` gives: \[9, 25\]"),
 ])

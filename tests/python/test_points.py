@@ -1,7 +1,8 @@
 """quadmc.points against `quadmc points`: bitwise the same numbers for every set of the catalogue
 and every combination of its options (each randomization, each periodization, each flag on and
 off), at two (n, s) every set holds, n = 16 = 2^4 = 4^2 and n = 64 = 2^6 = 4^3 = 8^2, and at
-n = 100, s = 5, which the grids and the nets refuse (unless allow_any_n): both refuse alike."""
+n = 100, s = 5, which the grids and the nets refuse (unless allow_any_n): both refuse alike; and
+under either generator, rng="philox4x32_10" (the default) or "ars4x32_7" as `--rng`."""
 import itertools
 
 import numpy as np
@@ -29,9 +30,11 @@ def cases():
                                    id=f"{point_set['name']}-{options}-n{n}-s{s}")
 
 
-def command_args(name, options, n, s, seed, stream):
+def command_args(name, options, n, s, seed, stream, rng=None):
     args = ["points", name, "--n", str(n), "--s", str(s), "--seed", str(seed),
             "--stream", str(stream)]
+    if rng is not None:
+        args += ["--rng", rng]
     for key, value in options.items():
         flag = "--" + key.replace("_", "-")
         if value is True:
@@ -80,6 +83,52 @@ def test_points_are_the_commands_csv_bitwise(command, name, options, n, s, seed,
                               f"{expected.flat[differ[0]]!r}")
 
 
+def assert_same_bits(x, expected, what):
+    assert x.shape == expected.shape, what
+    differ = np.flatnonzero(expected.view(np.uint64) != x.view(np.uint64))
+    assert differ.size == 0, f"{what}: first difference at flat index {int(differ[0])}"
+
+
+# Every set with its default options under ARS-4x32-7 (docs/theory.md#counter-based-generators):
+# the module and `quadmc points --rng` hand the generator to the same entry, so the bits agree
+# for the other generator too, not only for Philox, which every case above draws from.
+@pytest.mark.parametrize("name", [p["name"] for p in quadmc.point_sets()])
+def test_ars_points_are_the_commands_rng_csv_bitwise(command, name):
+    n, s, seed, stream = SIZES[1]
+    result = command(*command_args(name, {}, n, s, seed, stream, rng="ars4x32_7"))
+    assert result.returncode == 0, f"{name}: command refused: {result.stderr}"
+    x = quadmc.points(name, n, s, seed=seed, stream=stream, rng="ars4x32_7")
+    assert_same_bits(x, parse_csv(result.stdout, s), f"{name} --rng ars4x32_7")
+
+
+@pytest.mark.parametrize("name", [p["name"] for p in quadmc.point_sets()])
+def test_the_default_generator_is_philox(name):
+    n, s, seed, stream = SIZES[1]
+    assert_same_bits(quadmc.points(name, n, s, seed=seed, stream=stream),
+                     quadmc.points(name, n, s, seed=seed, stream=stream, rng="philox4x32_10"),
+                     f"{name}: default against rng=\"philox4x32_10\"")
+
+
+@pytest.mark.parametrize("name, options", [("independent", {}), ("jittered", {}),
+                                           ("latin_hypercube", {}),
+                                           ("sobol", {"randomization": "owen"}),
+                                           ("lattice", {})])
+def test_ars_draws_other_points_than_philox(name, options):
+    philox = quadmc.points(name, 64, 3, seed=11, **options)
+    ars = quadmc.points(name, 64, 3, seed=11, rng="ars4x32_7", **options)
+    assert np.all((ars >= 0) & (ars < 1))
+    # Two generators agreeing on a 53-bit uniform has probability 2^-53 per coordinate: any
+    # equal row would mean the keyword did not reach the set.
+    assert not np.any(np.all(philox == ars, axis=1)), name
+
+
+def test_an_unrandomized_set_is_the_same_under_both_generators():
+    # It draws no random numbers.
+    assert_same_bits(quadmc.points("sobol", 64, 3, seed=11, randomization="none"),
+                     quadmc.points("sobol", 64, 3, seed=11, randomization="none",
+                                   rng="ars4x32_7"), "sobol none")
+
+
 def test_points_lie_in_the_unit_cube_and_depend_on_the_seed():
     a = quadmc.points("sobol", 256, 4, seed=1, randomization="owen")
     b = quadmc.points("sobol", 256, 4, seed=2, randomization="owen")
@@ -109,6 +158,8 @@ def error_text(command, args):
     # The lattice's weighted periodizations weight the points: no equal-weight points to give.
     (lambda: quadmc.points("lattice", 16, 2, periodization="c1sin"),
      ["--n", "16", "--s", "2", "--periodization", "c1sin"], "--periodization", "periodization"),
+    (lambda: quadmc.points("sobol", 16, 2, rng="mt19937"),
+     ["--n", "16", "--s", "2", "--rng", "mt19937"], "--rng", "rng"),
 ])
 def test_refusals_are_the_commands_text(command, module_call, args, flag, keyword):
     set_name = "sobol"
@@ -129,6 +180,10 @@ def test_refusals_are_the_commands_text(command, module_call, args, flag, keywor
     (lambda: quadmc.points("sobol", 16, 2, interlacing="2"),
      "invalid interlacing = 2: expected an integer, one of 1, 2, 3"),
     (lambda: quadmc.points("sobol", 16, 2, interlacing=4), "invalid interlacing = 4: expected one of 1, 2, 3"),
+    (lambda: quadmc.points("sobol", 16, 2, rng="philox"),
+     'invalid rng = "philox": expected one of philox4x32_10, ars4x32_7'),
+    (lambda: quadmc.points("sobol", 16, 2, rng=None),
+     "invalid rng = None: expected one of philox4x32_10, ars4x32_7"),
 ])
 def test_bad_arguments_are_value_errors_naming_the_parameter(call, parameter):
     with pytest.raises(ValueError) as error:

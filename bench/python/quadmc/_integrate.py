@@ -59,7 +59,8 @@ def _fold(done):
                        values=list(values))
 
 
-def integrate(f, method, n, s=None, seed=0, repetitions=1, threads=0, name=None, **options):
+def integrate(f, method, n, s=None, seed=0, repetitions=1, threads=0, name=None,
+              rng="philox4x32_10", **options):
     """Integrates f with `method` (a name of quadmc.methods()) at N = n, as a scene's cell.
 
     f: a quadmc.Integrand (quadmc.integrand(...)), or any callable taking an (m, s) float64 array
@@ -73,11 +74,15 @@ def integrate(f, method, n, s=None, seed=0, repetitions=1, threads=0, name=None,
         `name` (default "<family>_s<s>", the name of a scene's [[integrand]] with dimension = s;
         "python_s<s>" for a callable), the method's default label, budget.N = n, repetition r:
         the same arguments give the same bits.
+    rng: the generator of the method's random numbers, "philox4x32_10" (Philox4x32-10, the
+        default) or "ars4x32_7" (ARS-4x32-7), as a scene's top-level rng: the same seed gives
+        other values under the other. A catalogue Integrand's own random parameters are drawn
+        when quadmc.integrand makes it, by Philox under both. ValueError naming rng otherwise.
     """
     if name is None:
         if isinstance(f, Integrand):
             name = f"{f.name}_s{f.dimension}"
         else:
             name = f"python_s{s}"
-    done = _integrate(f, method, n, s, seed, repetitions, threads, str(name), options)
+    done = _integrate(f, method, n, s, seed, repetitions, threads, str(name), rng, options)
     return _fold(done)
