@@ -4,6 +4,7 @@
 #include "boost_math_methods.hpp"
 #include "cubature_methods.hpp"
 #include "gsl_monte_methods.hpp"
+#include "memory_write.hpp"
 #include "peer_method.hpp"
 #include "qmc_point_peers.hpp"
 #include "quadmc_methods.hpp"
@@ -13,6 +14,7 @@
 
 #include "quadmc/core/batching.hpp"
 #include "quadmc/core/rng.hpp"
+#include "quadmc/core/simd_level.hpp"
 #include "quadmc/estimators/monte_carlo.hpp"
 #include "quadmc/functions/genz.hpp"
 #include "quadmc/sampling/independent_points.hpp"
@@ -27,6 +29,7 @@
 #include <ctime>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -168,9 +171,9 @@ peer_method integrand_only(const F& f, std::uint64_t throughput_n, unsigned thre
 }
 
 // Every method measured on f: the integrand alone at 1 and 2 threads, the scalar loop, quadmc's own
-// at 1 and 2 threads (ladders at one thread and for the five classic ones only), GSL's three,
-// Boost's naive_monte_carlo at 1 and default threads, cubature's two, and for s = 1 Boost's three
-// 1D rules.
+// at 1 and 2 threads (ladders at one thread and for the five classic ones only; plain MC under
+// each generator), GSL's three, Boost's naive_monte_carlo at 1 and default threads, cubature's
+// two, and for s = 1 Boost's three 1D rules.
 template <class F>
 std::vector<peer_method> methods_for(const F& f, const configuration& c, double variance) {
   const std::size_t s = f.dimension();
@@ -192,6 +195,11 @@ std::vector<peer_method> methods_for(const F& f, const configuration& c, double 
     const auto& ladder = threads == 1 ? c.ladder : none;
     m.push_back(quadmc_monte_carlo<independent_points>("quadmc plain MC", f, threads, ladder,
                                                        c.throughput_n));
+    // The same estimator and points with ARS's uniforms instead of Philox's: the generator's
+    // cost is most of plain MC's beyond the integrand at s = 8 (bench/peers/profile_notes.md),
+    // and ARS's is a few AES instructions per block (docs/theory.md#counter-based-generators).
+    m.push_back(quadmc_monte_carlo<independent_points>(plain_mc_ars_method, f, threads, ladder,
+                                                       c.throughput_n, rng_kind::ars4x32_7));
     m.push_back(
         quadmc_monte_carlo<jittered_points>("quadmc jittered", f, threads, ladder, c.throughput_n));
     m.push_back(quadmc_monte_carlo<latin_hypercube_points>("quadmc Latin hypercube", f, threads,
@@ -396,6 +404,100 @@ void measure_methods(const configuration& c, study& out) {
     const auto lim = limit.find({r.integrand, r.s});
     if (lim != limit.end()) r.ratio_to_integrand_only = r.rate / lim->second;
   }
+}
+
+void measure_uniforms(const configuration& c, study& out) {
+  std::cerr << "uniforms per second" << std::flush;
+  struct writer {
+    std::string method, family, kernel;
+    bool in_cache = true;  // false: only into the large buffer (streaming stores bypass the cache)
+    // Writes the buffer as the `fill`-th fill of the run.
+    std::function<void(std::span<double>, std::uint64_t fill)> write;
+  };
+  std::vector<writer> writers;
+  // Philox's kernel is the level's pmuludq lanes, Random123's own code at scalar
+  // (lib/src/core/philox_blocks.cpp); ARS names its own.
+  const simd_level level = active_simd_level();
+  const std::string philox_kernel = level == simd_level::scalar
+                                        ? std::string("Random123 (scalar)")
+                                        : fmt::format("pmuludq ({})", to_string(level));
+  for (const rng_kind g : {rng_kind::philox4x32_10, rng_kind::ars4x32_7}) {
+    const random_stream stream(base_seed, stream_id({0x0f11}), g);
+    writers.push_back(
+        {fmt::format("quadmc fill_uniform {}", to_string(g)), "quadmc",
+         g == rng_kind::ars4x32_7 ? std::string(quadmc::detail::ars_kernel()) : philox_kernel, true,
+         [stream](std::span<double> out, std::uint64_t fill) {
+           // Each fill draws the next uniforms of the stream, as consecutive batches of a point
+           // set do; the generator's cost does not depend on the index.
+           stream.fill_uniform(fill * out.size(), out);
+         }});
+  }
+  for (const store_kind k : {store_kind::ordinary, store_kind::streaming}) {
+    writers.push_back(
+        {k == store_kind::ordinary ? ordinary_stores_method : "write doubles (streaming stores)",
+         "memory", std::string(write_kernel(k)), k == store_kind::ordinary,
+         [k](std::span<double> out, std::uint64_t fill) {
+           write_doubles(out, 0.25 + static_cast<double>(fill), k);
+         }});
+  }
+  aligned_doubles cache(c.uniform_cache_doubles);
+  aligned_doubles memory(c.uniform_memory_doubles);
+  struct buffer {
+    std::span<double> doubles;
+    std::uint64_t fills;  // per run: ≥ throughput_n doubles, so that a run is not timer-bound
+  };
+  const auto fills = [&c](std::uint64_t n) {
+    return std::max<std::uint64_t>(1, (c.throughput_n + n - 1) / n);
+  };
+  const std::vector<buffer> buffers{{cache.span(), fills(c.uniform_cache_doubles)},
+                                    {memory.span(), fills(c.uniform_memory_doubles)}};
+  std::vector<std::optional<timed_run>> best(writers.size() * buffers.size());
+  for (int round = 0; round < c.uniform_rounds; ++round) {
+    for (std::size_t b = 0; b < buffers.size(); ++b) {
+      for (std::size_t w = 0; w < writers.size(); ++w) {
+        if (b == 0 && !writers[w].in_cache) continue;
+        const buffer& buf = buffers[b];
+        const timed_run t = best_of(
+            [&] {
+              for (std::uint64_t fill = 0; fill < buf.fills; ++fill) {
+                writers[w].write(buf.doubles, fill);
+                // The stores are observed here, so no fill of the run can be dropped as dead.
+                asm volatile("" : : "r"(buf.doubles.data()) : "memory");
+              }
+              return run_result{buf.doubles.front() + buf.doubles.back(),
+                                buf.fills * buf.doubles.size()};
+            },
+            1, 0.0, 1);
+        auto& kept = best[b * writers.size() + w];
+        if (!kept || t.seconds < kept->seconds) kept = t;
+      }
+    }
+    std::cerr << "." << std::flush;
+  }
+  for (std::size_t b = 0; b < buffers.size(); ++b) {
+    for (std::size_t w = 0; w < writers.size(); ++w) {
+      const auto& kept = best[b * writers.size() + w];
+      if (!kept) continue;
+      row r;
+      r.run = "uniforms";
+      r.method = writers[w].method;
+      r.family = writers[w].family;
+      r.integrand = "(uniforms only)";
+      r.s = 1;
+      r.threads = 1;
+      r.n = buffers[b].doubles.size();
+      r.control = "doubles per buffer";
+      r.evaluations = static_cast<double>(kept->result.evaluations);
+      r.seconds = kept->seconds;
+      r.cpu_seconds = kept->cpu_seconds;
+      r.rate = r.evaluations / r.seconds;
+      r.abs_error = NAN;
+      r.repetitions = c.uniform_rounds;
+      r.kernel = writers[w].kernel;
+      out.rows.push_back(r);
+    }
+  }
+  std::cerr << "\n";
 }
 
 void measure_qmc_points(const configuration& c, study& out) {

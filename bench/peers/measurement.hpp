@@ -30,6 +30,15 @@ namespace quadmc::peers {
 // message) and sets out.repro.
 void measure_methods(const configuration& c, study& out);
 
+// Uniforms per second of random_stream::fill_uniform under each generator (Philox4x32-10 and
+// ARS-4x32-7, docs/theory.md#counter-based-generators) at the active SIMD level, beside the rate
+// at which this core writes doubles at all (memory_write.hpp: ordinary vector stores of one value,
+// and streaming stores into the large buffer), into a buffer in cache and one in memory
+// (configuration::uniform_*): rows with run = "uniforms" (evaluations = doubles written per run,
+// rate = doubles per second, kernel = what wrote them), one thread, timed in rounds over the
+// writers like the throughput rows, the best run of each kept. A measurement, never a check.
+void measure_uniforms(const configuration& c, study& out);
+
 // Points per second of quadmc's quasi-Monte Carlo sets and of Boost.Random's, GSL's and scipy's
 // generators (qmc_point_peers.hpp) for each s of c.qmc_dimensions at N = c.qmc_points, one
 // thread: rows with run = "points" (evaluations = points, rate = points per second), in rounds

@@ -1,7 +1,7 @@
 // quadmc's own methods as peers: plain Monte Carlo over independent, jittered and Latin hypercube
-// points (estimators/monte_carlo.hpp), over scrambled Sobol', Halton and lattice points, and the
-// tensor-product Simpson and trapezoid rules (rules/tensor_product.hpp), with the sizes each one
-// accepts.
+// points (estimators/monte_carlo.hpp) under either generator (core/rng.hpp), over scrambled
+// Sobol', Halton and lattice points, and the tensor-product Simpson and trapezoid rules
+// (rules/tensor_product.hpp), with the sizes each one accepts.
 //
 // Use it from the peers driver only. Sizes: independent and Latin hypercube points take any N;
 // jittered points need N = k^s (k = round(N^{1/s}), so the nearest such size is measured);
@@ -76,11 +76,12 @@ inline std::vector<std::uint64_t> distinct_sorted(std::vector<std::uint64_t> v) 
 }
 
 // One run of plain Monte Carlo over point set P with N points: P built from (s, N, seed,
-// stream_id({N})), the call both the point-set and the quasi-Monte Carlo methods time.
-template <class P, class F>
-auto monte_carlo_run(const F& f, unsigned threads) {
-  return [&f, threads](std::uint64_t n, std::uint64_t seed) {
-    const P points(f.dimension(), n, seed, stream_id({n}));
+// stream_id({N}), extra...), the call both the point-set and the quasi-Monte Carlo methods time.
+// `extra`: the constructor's further arguments, e.g. the generator of a random point set.
+template <class P, class F, class... Extra>
+auto monte_carlo_run(const F& f, unsigned threads, Extra... extra) {
+  return [&f, threads, extra...](std::uint64_t n, std::uint64_t seed) {
+    const P points(f.dimension(), n, seed, stream_id({n}), extra...);
     const estimate e = monte_carlo(f, points, threads);
     return run_result{e.value, e.evaluations};
   };
@@ -88,11 +89,12 @@ auto monte_carlo_run(const F& f, unsigned threads) {
 
 // Plain Monte Carlo with point set P (any of the three: same constructor shape). The point set
 // is built inside the run (for Latin hypercube points that includes its s permutations), with
-// stream id stream_id({N}) under the run's seed.
+// stream id stream_id({N}) under the run's seed, its uniforms drawn by `rng` (Philox, the
+// library's default, or ARS: docs/theory.md#counter-based-generators).
 template <class P, class F>
 peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
-                               const std::vector<std::uint64_t>& ladder,
-                               std::uint64_t throughput_n) {
+                               const std::vector<std::uint64_t>& ladder, std::uint64_t throughput_n,
+                               rng_kind rng = rng_kind::philox4x32_10) {
   const std::size_t s = f.dimension();
   auto size = [s](std::uint64_t n) {
     if constexpr (std::is_same_v<P, jittered_points>) return jittered_size(n, s);
@@ -111,7 +113,7 @@ peer_method quadmc_monte_carlo(std::string name, const F& f, unsigned threads,
   if constexpr (std::is_same_v<P, jittered_points>) {
     m.throughput_control = jittered_size_at_least(throughput_n, s);
   }
-  m.run = monte_carlo_run<P>(f, threads);
+  m.run = monte_carlo_run<P>(f, threads, rng);
   return m;
 }
 

@@ -1,14 +1,15 @@
-// quadmc_peers: quadmc's plain Monte Carlo, jittered and Latin hypercube points, scrambled Sobol',
-// Halton and lattice points and tensor Simpson/trapezoid, each beside the integrand alone on a
-// batch in cache (the limit of its rate), and the performance targets marked met or missed
-// (targets.hpp), measured in one run beside what a user would otherwise pick — a hand-written
-// xoshiro256+ loop, GSL plain/MISER/VEGAS, Boost.Math naive_monte_carlo and its 1D rules,
-// cubature's hcubature/pcubature — on the same integrands (Genz oscillatory and Gaussian, the sum
-// of coordinates) with the same references, for s ∈ {1, 2, 4, 8}: evaluations per second, time to
-// 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the answer; and quasi-Monte Carlo
-// point generation (quadmc's Sobol', Halton and lattice sets beside Boost.Random, GSL and
-// scipy.stats.qmc: qmc_point_peers.hpp) in points per second; and the Python module `quadmc`
-// against scipy.stats.qmc and against its own C++ (python_module_speed.hpp).
+// quadmc_peers: quadmc's plain Monte Carlo (on Philox's uniforms and on ARS's), jittered and Latin
+// hypercube points, scrambled Sobol', Halton and lattice points and tensor Simpson/trapezoid, each
+// beside the integrand alone on a batch in cache (the limit of its rate), and the performance
+// targets marked met or missed (targets.hpp), measured in one run beside what a user would
+// otherwise pick — a hand-written xoshiro256+ loop, GSL plain/MISER/VEGAS, Boost.Math
+// naive_monte_carlo and its 1D rules, cubature's hcubature/pcubature — on the same integrands (Genz
+// oscillatory and Gaussian, the sum of coordinates) with the same references, for s ∈ {1, 2, 4, 8}:
+// evaluations per second, time to 10⁻³ and 10⁻⁵, peak memory, and whether a fixed seed fixes the
+// answer; and quasi-Monte Carlo point generation (quadmc's Sobol', Halton and lattice sets beside
+// Boost.Random, GSL and scipy.stats.qmc: qmc_point_peers.hpp) in points per second; and the Python
+// module `quadmc` against scipy.stats.qmc and against its own C++ (python_module_speed.hpp); and
+// the two generators' uniforms per second beside the rate at which the core writes doubles at all.
 //
 //   quadmc_peers [--out DIR] [--quick]        writes DIR/peers.csv, DIR/meta.csv, DIR/README.md
 //   quadmc_peers --one METHOD INTEGRAND S N THREADS
@@ -16,15 +17,17 @@
 //   /usr/bin/python3 bench/peers/plot_peers.py DIR   then draws DIR/work_precision_*.svg
 //
 // This file is the command line and the order of the steps; the steps live in
-// measurement.hpp (ladder and throughput), peak_memory.hpp (`--one` and the memory table) and
-// report.hpp (CSV and Markdown). Not a test and not part of CI: the full run takes about three
-// minutes on 2 cores, and nothing in it is asserted (targets are reported, met or not).
-// Exit status: 0 done, 1 a failed run (one line on stderr), 2 a command-line error.
+// measurement.hpp (ladder, throughput, uniforms per second), peak_memory.hpp (`--one` and the
+// memory table) and report.hpp (CSV and Markdown). Not a test and not part of CI: the full run
+// takes about three minutes on 2 cores, and nothing in it is asserted (targets are reported, met or
+// not). Exit status: 0 done, 1 a failed run (one line on stderr), 2 a command-line error.
 #include "build_provenance.hpp"
 #include "measurement.hpp"
 #include "peak_memory.hpp"
 #include "report.hpp"
 #include "study.hpp"
+
+#include "quadmc/core/rng.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -80,11 +83,16 @@ int study_command(const std::filesystem::path& out, bool quick) {
   const configuration c = quick ? quick_configuration() : configuration{};
   study st;
   st.build = quadmc::bench::build_provenance();
+  // Both generators run here: "quadmc plain MC" and the point sets on Philox, the library's
+  // default, "quadmc plain MC (ARS)" and a row of the uniforms table on ARS.
+  st.build.rng =
+      fmt::format("{} {}", to_string(rng_kind::philox4x32_10), to_string(rng_kind::ars4x32_7));
   st.load_before = load_average();
   auto since_start = [&start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   measure_methods(c, st);
+  measure_uniforms(c, st);
   st.phase_seconds.push_back(since_start());
   measure_qmc_points(c, st);
   measure_python_module(c, st);
@@ -99,8 +107,8 @@ int study_command(const std::filesystem::path& out, bool quick) {
   write_meta_csv(out / quadmc::meta_csv_file, st);
   write_markdown_report(out / "README.md", c, st);
   std::cerr << fmt::format(
-      "wrote {}/peers.csv, meta.csv and README.md in {:.0f} s (methods {:.0f} s, QMC points and "
-      "the Python module {:.0f} s, peak memory {:.0f} s)\n",
+      "wrote {}/peers.csv, meta.csv and README.md in {:.0f} s (methods and uniforms {:.0f} s, QMC "
+      "points and the Python module {:.0f} s, peak memory {:.0f} s)\n",
       out.string(), st.wall_seconds, st.phase_seconds[0], st.phase_seconds[1], st.phase_seconds[2]);
   return 0;
 }

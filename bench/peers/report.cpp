@@ -4,6 +4,7 @@
 #include "targets.hpp"
 #include "time_to_accuracy.hpp"
 
+#include "quadmc/core/rng.hpp"
 #include "quadmc/core/simd_level.hpp"
 
 #include <fmt/format.h>
@@ -94,7 +95,14 @@ class report {
   report(const configuration& c, const study& st) : c_(c), st_(st) {
     for (const row& r : st.rows) {
       if (r.run == "python") continue;  // the Python module's section reads st.python_module
-      if (r.run == "points") {          // no integrand: the QMC section reads them itself
+      if (r.run == "uniforms") {        // no integrand: the uniforms section reads them itself
+        uniforms_[{r.method, r.n}] = r;
+        if (std::find(writers_.begin(), writers_.end(), r.method) == writers_.end()) {
+          writers_.push_back(r.method);
+        }
+        continue;
+      }
+      if (r.run == "points") {  // no integrand: the QMC section reads them itself
         points_[{r.method, r.s}] = r;
         if (std::find(generators_.begin(), generators_.end(), r.method) == generators_.end()) {
           generators_.push_back(r.method);
@@ -144,15 +152,17 @@ class report {
         quadmc::to_string(quadmc::active_simd_level()), __VERSION__, QUADMC_PEERS_BUILD,
         GSL_VERSION, BOOST_LIB_VERSION, st_.wall_seconds,
         st_.phase_seconds.size() == 3
-            ? fmt::format(" (methods {:.0f} s, QMC points and the Python module {:.0f} s, peak "
-                          "memory {:.0f} s)",
+            ? fmt::format(" (methods and uniforms {:.0f} s, QMC points and the Python module "
+                          "{:.0f} s, peak memory {:.0f} s)",
                           st_.phase_seconds[0], st_.phase_seconds[1], st_.phase_seconds[2])
             : std::string(),
         st_.load_before, st_.load_after);
     // The same fields, in the same words, as the header of a `quadmc run` page and meta.csv.
-    o << fmt::format("- quadmc: {}, commit {}\n- compiler: {}\n- SIMD levels available: {}\n\n",
-                     st_.build.version, st_.build.commit, st_.build.compiler,
-                     fmt::join(st_.build.simd_levels_available, ", "));
+    o << fmt::format(
+        "- quadmc: {}, commit {}\n- compiler: {}\n- SIMD levels available: {}\n- rng: {} (the "
+        "methods' random streams; docs/theory.md#counter-based-generators)\n\n",
+        st_.build.version, st_.build.commit, st_.build.compiler,
+        fmt::join(st_.build.simd_levels_available, ", "), st_.build.rng);
     o << "How it is timed: std::chrono::steady_clock around one whole call of each method "
          "(set-up included: point-set construction, GSL state and generator allocation). "
          "**Throughput** rows: N ≥ 2^22 = 4194304 evaluations (2^22 for the Monte Carlo and "
@@ -179,13 +189,22 @@ class report {
          "peers.csv); its two-thread run (chunks of 48 calls taken from one counter, nothing "
          "else shared) is printed beside the two-thread targets (see \"Targets\"). "
          "**Ladder** rows (work-precision): N = 10², 10^2.5, …, 10⁶ with one thread, for the "
-         "peers and quadmc's plain, jittered, Latin hypercube and tensor methods (the Sobol', "
-         "Halton and lattice methods are measured for throughput only; their work-precision "
-         "curves are in results/default); random methods with "
+         "peers and quadmc's plain (both generators), jittered, Latin hypercube and tensor "
+         "methods (the Sobol', Halton and lattice methods are measured for throughput only; "
+         "their work-precision curves are in results/default); random methods with "
       << c_.repetitions
       << " independent seeds, error = RMS over the seeds, time = median over the seeds; each "
          "run repeated at least twice (Boost naive_monte_carlo: once) and until 2 ms have "
          "passed (≤ 100 times), and its fastest repetition kept.\n\n";
+    o << fmt::format(
+        "quadmc's generators (docs/theory.md#counter-based-generators): every quadmc row draws "
+        "its uniforms from Philox4x32-10, the library's default, except `{}`, the same "
+        "estimator on the same layout of uniforms drawn from ARS-4x32-7 instead (AES rounds; at "
+        "this run's SIMD level its kernel is {}). Both are counter-based, so its estimates are "
+        "as reproducible, on 1 or 2 threads, as plain MC's; they differ from them only in the "
+        "numbers drawn, not in their distribution. Each generator's own rate, beside the rate at "
+        "which this core writes doubles at all, is in \"Uniforms per second\".\n\n",
+        plain_mc_ars_method, quadmc::detail::ars_kernel());
     o << "Peers, as called: GSL `gsl_monte_plain/miser/vegas_integrate` with `gsl_rng_mt19937` "
          "(GSL's default), calls = N (VEGAS: N/5 per iteration × its default 5 iterations); "
          "Boost `naive_monte_carlo` with error goal √(V̂/N) (it is goal-driven and polls every "
@@ -200,6 +219,7 @@ class report {
          "evaluations are counted in every adapter, never assumed.\n\n";
     targets(o);
     throughput(o);
+    uniforms(o);
     qmc_points(o);
     python_module(o);
     accuracy(o);
@@ -307,9 +327,9 @@ class report {
       }
       lines.push_back(fmt::format(
           "**Fastest to an absolute error of {}** (one thread; \"≤\": below it at the ladder's "
-          "first point; quadmc's methods on this ladder are plain, jittered, Latin hypercube and "
-          "tensor, its Sobol', lattice, Genz–Malik and sparse grids meet the peers in "
-          "results/time_to_error): {}.",
+          "first point; quadmc's methods on this ladder are plain (Philox and ARS), jittered, "
+          "Latin hypercube and tensor, its Sobol', lattice, Genz–Malik and sparse grids meet the "
+          "peers in results/time_to_error): {}.",
           eps == 1e-3 ? "10⁻³" : "10⁻⁵",
           per_integrand.empty() ? std::string("none reached it")
                                 : fmt::format("{}", fmt::join(per_integrand, "; "))));
@@ -362,9 +382,9 @@ class report {
          "the table); a ratio with a note in parentheses is shown for information and not "
          "counted: tensor rules at s = 1 (the goal is stated for s ≥ 2: in 1D a grid saves "
          "only the one uniform per point that plain MC draws), plain MC against the integrand "
-         "alone at s < 8 (the goal is stated for s = 8), and the two-thread ratio of a method "
-         "whose run is smaller than 2^22 points (the lattice holds at most 2^20; the Halton "
-         "set is measured at 2^20 to keep the study short).\n\n"
+         "alone at s < 8, with either generator (the goal is stated for s = 8), and the "
+         "two-thread ratio of a method whose run is smaller than 2^22 points (the lattice holds "
+         "at most 2^20; the Halton set is measured at 2^20 to keep the study short).\n\n"
       << targets_table(lines, c_.dimensions)
       << fmt::format(
              "\n**{} of {} measured ratios met**, {} missed; {} not measurable (⚠). Memory "
@@ -425,6 +445,69 @@ class report {
       }
       o << "\n";
     }
+  }
+
+  // Each generator's uniforms per second beside the rate at which this core stores doubles at
+  // all, in cache and in memory: how much of plain MC's cost beyond the integrand is the
+  // generator's, and where a generator is held by the memory writes rather than by itself.
+  void uniforms(std::ostringstream& o) const {
+    if (uniforms_.empty()) return;
+    const std::uint64_t small = c_.uniform_cache_doubles;
+    const std::uint64_t large = c_.uniform_memory_doubles;
+    const std::string ordinary = ordinary_stores_method;
+    const std::uint64_t fills = std::max<std::uint64_t>(1, (c_.throughput_n + small - 1) / small);
+    o << "## Uniforms per second: Philox and ARS against the memory write rate\n\n"
+      << fmt::format(
+             "One thread, SIMD level {}; ARS kernel `{}` (`quadmc::detail::ars_kernel()`). "
+             "`random_stream::fill_uniform` (core/rng.hpp: the call every random point set "
+             "makes) under each generator writes uniforms into a buffer of {} doubles ({} KiB, "
+             "which stays in the first-level data cache), filled again and again, each time "
+             "with the next uniforms of the stream, {} times per run ({} doubles), and into a "
+             "buffer of {} doubles ({} MiB, meant to be larger than the caches, so that the "
+             "stores go to memory), filled once per run. Beside them, the write rate itself, "
+             "measured the same way: the same buffers written with one value by ordinary "
+             "stores, the widest vector stores of the level (bench/peers/memory_write.hpp), and "
+             "the large one also by streaming (non-temporal) stores, which write around the "
+             "caches without reading each line first. Both buffers are 64-byte aligned and "
+             "written once before any timing (no page faults in a timed run). Every writer runs "
+             "once per round, {} rounds, std::chrono::steady_clock around the run; its fastest "
+             "run is kept. G doubles per second, GB/s = 8 bytes × that, and the rate as a "
+             "fraction of the ordinary stores into the same buffer. A measurement, not a "
+             "target.\n\n",
+             quadmc::to_string(quadmc::active_simd_level()), quadmc::detail::ars_kernel(), small,
+             small * sizeof(double) / 1024, fills, fills * small, large,
+             large * sizeof(double) >> 20, c_.uniform_rounds);
+    o << fmt::format(
+        "| writer | kernel | {} KiB buffer: G doubles/s (GB/s) | of the stores | {} MiB buffer: "
+        "G doubles/s (GB/s) | of the stores |\n|---|---|---:|---:|---:|---:|\n",
+        small * sizeof(double) / 1024, large * sizeof(double) >> 20);
+    for (const std::string& w : writers_) {
+      std::string kernel;
+      std::string cells;
+      for (const std::uint64_t n : {small, large}) {
+        const auto it = uniforms_.find({w, n});
+        const auto store = uniforms_.find({ordinary, n});
+        if (it == uniforms_.end()) {
+          cells += " — | — |";
+          continue;
+        }
+        const row& r = it->second;
+        kernel = r.kernel;
+        const double cores = r.cpu_seconds / r.seconds;
+        cells += fmt::format(
+            " {:.3g} ({:.3g} GB/s){} | {} |", r.rate / 1e9, r.rate * sizeof(double) / 1e9,
+            cores < 0.75 ? fmt::format(" ⚠ ({:.2f} cores)", cores) : "",
+            store != uniforms_.end() ? fmt::format("{:.2f}", r.rate / store->second.rate)
+                                     : std::string("—"));
+      }
+      o << fmt::format("| {} | {} |{}\n", w, kernel, cells);
+    }
+    o << "\nA generator whose rate in the large buffer is close to the ordinary stores' is held "
+         "there by the memory writes, not by its own arithmetic: a faster generator would not "
+         "fill a large array faster. Plain MC never writes its uniforms to memory: it draws "
+         "them into a batch of 256 points in cache (core/batching.hpp), so the small buffer's "
+         "rate is the one its throughput rows pay. ⚠: the kept run got less than 0.75 of a core "
+         "(CPU time / wall time).\n\n";
   }
 
   // Points per second of the QMC generators, the ratios of quadmc's sets to the peer of the
@@ -771,8 +854,10 @@ class report {
   std::map<key, std::vector<ladder_point>> ladder_;
   std::vector<std::string> integrands_;
   std::vector<std::pair<std::string, unsigned>> methods_;
-  std::map<std::pair<std::string, std::size_t>, row> points_;  // QMC rows by (generator, s)
-  std::vector<std::string> generators_;                        // in order of first appearance
+  std::map<std::pair<std::string, std::size_t>, row> points_;      // QMC rows by (generator, s)
+  std::map<std::pair<std::string, std::uint64_t>, row> uniforms_;  // by (writer, buffer doubles)
+  std::vector<std::string> writers_;     // of the uniforms rows, in order of first appearance
+  std::vector<std::string> generators_;  // in order of first appearance
 };
 
 }  // namespace
@@ -782,21 +867,22 @@ void write_csv(const std::filesystem::path& path, const std::vector<row>& rows) 
   if (!out) throw std::runtime_error("cannot write " + path.string());
   out << "method,integrand,s,threads,N,evaluations,seconds,evals_per_second,abs_error,"
          "ratio_to_scalar_loop,run,family,control,repetitions,cpu_seconds,"
-         "ratio_to_integrand_only,seconds_min,seconds_max\n";
+         "ratio_to_integrand_only,seconds_min,seconds_max,kernel\n";
   for (const row& r : rows) {
     out << fmt::format(
-        "{},{},{},{},{},{:.0f},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{}\n", r.method,
+        "{},{},{},{},{},{:.0f},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{},{}\n", r.method,
         r.integrand, r.s, r.threads, r.n, r.evaluations, r.seconds, r.rate,
         std::isnan(r.abs_error) ? std::string() : fmt::format("{:.6g}", r.abs_error),
         r.ratio_to_scalar_loop ? fmt::format("{:.4f}", *r.ratio_to_scalar_loop) : std::string(),
         r.run, r.family, r.control, r.repetitions,
-        (r.run == "throughput" || r.run == "points") && !std::isnan(r.cpu_seconds)
+        (r.run == "throughput" || r.run == "points" || r.run == "uniforms") &&
+                !std::isnan(r.cpu_seconds)
             ? fmt::format("{:.6g}", r.cpu_seconds)
             : std::string(),
         r.ratio_to_integrand_only ? fmt::format("{:.4f}", *r.ratio_to_integrand_only)
                                   : std::string(),
         std::isnan(r.seconds_min) ? std::string() : fmt::format("{:.6g}", r.seconds_min),
-        std::isnan(r.seconds_max) ? std::string() : fmt::format("{:.6g}", r.seconds_max));
+        std::isnan(r.seconds_max) ? std::string() : fmt::format("{:.6g}", r.seconds_max), r.kernel);
   }
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string() + " completely");

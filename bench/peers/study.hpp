@@ -28,6 +28,14 @@ inline constexpr std::uint64_t base_seed = 0x5eed0007;
 // batch_points points already in cache (measurement.cpp), under this method name.
 inline constexpr const char* integrand_only_method = "integrand only (batch in cache)";
 
+// quadmc's plain Monte Carlo as "quadmc plain MC" draws Philox4x32-10's uniforms (the library's
+// default); under this name, the same estimator on ARS-4x32-7's
+// (docs/theory.md#counter-based-generators).
+inline constexpr const char* plain_mc_ars_method = "quadmc plain MC (ARS)";
+
+// The uniforms rows' yardstick (measure_uniforms): ordinary stores of doubles, under this name.
+inline constexpr const char* ordinary_stores_method = "write doubles (ordinary stores)";
+
 struct configuration {
   std::vector<std::size_t> dimensions{1, 2, 4, 8};
   std::vector<std::uint64_t> ladder{100, 316, 1000, 3162, 10000, 31623, 100000, 316228, 1000000};
@@ -64,6 +72,17 @@ struct configuration {
   // contender. A round of the three groups takes about 0.3 s on 2 cores, so 15 rounds (and one
   // to warm up) cost ~5 s, and give a median that a burst of load moves little.
   int python_module_rounds = 15;
+  // Uniforms per second against the memory write rate (measure_uniforms): each generator's
+  // random_stream::fill_uniform and plain stores of doubles, into a buffer of
+  // uniform_cache_doubles (32 KiB, which stays in the first-level data cache) filled again and
+  // again up to throughput_n doubles per run, and into one of uniform_memory_doubles (64 MiB,
+  // meant to go to memory: on the 2-core AMD EPYC with AVX-512, 512-bit stores into 64 MiB ran
+  // at 27–35 GB/s, into 256–512 MiB at 24–26, into 16 MiB at 70–74) filled once per run; in
+  // rounds over the writers, best of uniform_rounds. The best runs of a round add up to 14 ms
+  // there, so the rounds cost about a second.
+  std::uint64_t uniform_cache_doubles = 4096;
+  std::uint64_t uniform_memory_doubles = std::uint64_t{8} << 20;
+  int uniform_rounds = 30;
 };
 
 // `--quick`: a smoke run (small N, seconds); its numbers are not for the record.
@@ -81,13 +100,17 @@ inline configuration quick_configuration() {
   c.rss_sizes = {10000, 1000000};
   c.qmc_points = std::uint64_t{1} << 12;
   c.python_module_rounds = 2;
+  c.uniform_memory_doubles = std::uint64_t{1} << 20;
+  c.uniform_rounds = 3;
   return c;
 }
 
 // One line of peers.csv.
 struct row {
-  // "throughput", "ladder", "points" (QMC point generation, no integrand) or "python" (the
-  // Python module: seconds is the median of its rounds, seconds_min/max their range)
+  // "throughput", "ladder", "points" (QMC point generation, no integrand), "uniforms" (a
+  // generator's uniforms or plain stores of doubles into a buffer, no integrand: rate = doubles
+  // per second) or "python" (the Python module: seconds is the median of its rounds,
+  // seconds_min/max their range)
   std::string run;
   std::string method;
   std::string family;
@@ -106,6 +129,9 @@ struct row {
   // Throughput rows: rate / the integrand-only rate (same integrand and s, one thread).
   std::optional<double> ratio_to_integrand_only;
   double seconds_min = NAN, seconds_max = NAN;  // python rows: the range of the rounds
+  // uniforms rows: the kernel that wrote the doubles at the active SIMD level (Philox: the
+  // level; ARS: detail::ars_kernel(); stores: their instruction); empty elsewhere.
+  std::string kernel;
 };
 
 // quadmc's plain MC at 1 and 2 threads must agree bit for bit; Boost's naive_monte_carlo at a

@@ -75,6 +75,21 @@ std::vector<target_spec> performance_targets(std::uint64_t two_thread_min_n) {
                0,
                false,
                ""});
+  // The same goal with ARS's uniforms: at s = 8 plain MC draws eight per point, and Philox's
+  // cost several times the integrand's there (bench/peers/profile_notes.md), ARS's a few AES
+  // instructions per block (docs/theory.md#counter-based-generators).
+  t.push_back({"plain MC with ARS (1 thread) / integrand only (batch in cache)",
+               "throughput",
+               plain_mc_ars_method,
+               1,
+               integrand_only_method,
+               1,
+               0.5,
+               genz,
+               {8},
+               0,
+               false,
+               ""});
   for (const char* m :
        {"quadmc plain MC", "quadmc jittered", "quadmc Latin hypercube", "quadmc tensor Simpson",
         "quadmc tensor trapezoid", "quadmc sobol lms_shift", "quadmc sobol fast_owen",
