@@ -8,6 +8,10 @@
 
 #include <bit>
 
+#if defined(__x86_64__)
+#include <cpuid.h>
+#endif
+
 namespace quadmc::detail {
 namespace {
 
@@ -26,17 +30,21 @@ constexpr std::uint8_t gf_mul(std::uint8_t a, std::uint8_t b) noexcept {
 
 // The S-box ([FIPS-197] §5.1.1): the multiplicative inverse (0 ↦ 0), then the affine map
 // b ⊕ rotl(b,1) ⊕ rotl(b,2) ⊕ rotl(b,3) ⊕ rotl(b,4) ⊕ 0x63. Derived here rather than typed in, so
-// no table can hold a typo; the known answers check the result.
+// no table can hold a typo; the known answers check the result. The inverse comes from the powers
+// of the generator 3 (x = 3^k, x⁻¹ = 3^(255−k)): 255 products, where a search for each inverse
+// would exceed clang's constexpr step limit.
 constexpr std::array<std::uint8_t, 256> make_sbox() noexcept {
+  std::array<std::uint8_t, 255> power{};  // power[k] = 3^k
+  std::array<std::uint8_t, 256> log{};    // log[3^k] = k
+  std::uint8_t p = 1;
+  for (unsigned k = 0; k < 255; ++k) {
+    power[k] = p;
+    log[p] = static_cast<std::uint8_t>(k);
+    p = gf_mul(p, 3);
+  }
   std::array<std::uint8_t, 256> sbox{};
   for (unsigned x = 0; x < 256; ++x) {
-    std::uint8_t inverse = 0;
-    for (unsigned y = 1; y < 256 && x != 0; ++y) {
-      if (gf_mul(static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y)) == 1) {
-        inverse = static_cast<std::uint8_t>(y);
-        break;
-      }
-    }
+    const std::uint8_t inverse = x == 0 ? 0 : power[(255 - log[x]) % 255];
     sbox[x] = static_cast<std::uint8_t>(inverse ^ std::rotl(inverse, 1) ^ std::rotl(inverse, 2) ^
                                         std::rotl(inverse, 3) ^ std::rotl(inverse, 4) ^ 0x63);
   }
@@ -111,11 +119,17 @@ bool cpu_has_aes() noexcept {
 #endif
 }
 
+// VAES with the AVX-512 state the OS saves: CPUID leaf 7 reports VAES in ECX bit 9 (clang 14's
+// __builtin_cpu_supports has no "vaes"); AVX512F's check includes the OS's (XGETBV), and the
+// kernel's conversion needs AVX512DQ.
 bool cpu_has_vaes_avx512() noexcept {
 #if defined(__x86_64__)
-  static const bool has = __builtin_cpu_supports("vaes") != 0 &&
-                          __builtin_cpu_supports("avx512f") != 0 &&
-                          __builtin_cpu_supports("avx512dq") != 0;
+  static const bool has = [] {
+    unsigned a = 0, b = 0, c = 0, d = 0;
+    const bool vaes = __get_cpuid_count(7, 0, &a, &b, &c, &d) != 0 && (c & (1u << 9)) != 0;
+    return vaes && __builtin_cpu_supports("avx512f") != 0 &&
+           __builtin_cpu_supports("avx512dq") != 0;
+  }();
   return has;
 #else
   return false;
