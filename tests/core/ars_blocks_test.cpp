@@ -30,11 +30,11 @@
 
 namespace {
 
-using words = std::array<std::uint32_t, 4>;
+using ars_block = std::array<std::uint32_t, 4>;
 using quadmc::test_support::simd_level_guard;
 
 struct ars_known_answer {
-  words counter, key, output;
+  ars_block counter, key, output;
 };
 
 // Random123 tests/kat_vectors: ars4x32 10 (ctr, key → output).
@@ -50,7 +50,7 @@ const ars_known_answer ars4x32_10_kat[] = {
      {0xbb3743b1, 0x9f635551, 0xecbc87fc, 0xa19478a9}},
 };
 
-bool cpu_has_aes() {
+bool cpu_has_aes_ni() {
 #if defined(__x86_64__)
   return __builtin_cpu_supports("aes") != 0;
 #else
@@ -60,8 +60,8 @@ bool cpu_has_aes() {
 
 // Counters and keys that cross every word boundary: zeros, ones, π's digits, a carry in each
 // 64-bit half of the key schedule (which adds its Weyl constants per 64-bit lane, not per word).
-std::vector<std::pair<words, words>> varied_inputs() {
-  std::vector<std::pair<words, words>> inputs;
+std::vector<std::pair<ars_block, ars_block>> ars_varied_inputs() {
+  std::vector<std::pair<ars_block, ars_block>> inputs;
   for (const ars_known_answer& kat : ars4x32_10_kat) inputs.emplace_back(kat.counter, kat.key);
   inputs.push_back({{1, 2, 3, 4}, {0xffffffff, 0xffffffff, 0xffffffff, 0xffffffff}});
   inputs.push_back({{0xdeadbeef, 0, 0, 0x80000000}, {0x61c88646, 0xffffffff, 0x4a3a2a1a, 0}});
@@ -84,22 +84,22 @@ TEST(Ars4x32, SoftwareAesMatchesRandom123PublishedKnownAnswers) {
 
 #if defined(QUADMC_ARS_REFERENCE)
 TEST(Ars4x32, Random123ItselfGivesItsPublishedKnownAnswers) {
-  if (!cpu_has_aes()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
+  if (!cpu_has_aes_ni()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
   for (const ars_known_answer& kat : ars4x32_10_kat) {
     EXPECT_EQ(quadmc::test_support::random123_ars4x32(10, kat.counter, kat.key), kat.output);
   }
 }
 
 TEST(Ars4x32, SoftwareAndAesNiEqualRandom123AtSevenAndTenRounds) {
-  if (!cpu_has_aes()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
+  if (!cpu_has_aes_ni()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
   const simd_level_guard guard;
-  for (const auto& [counter, key] : varied_inputs()) {
+  for (const auto& [counter, key] : ars_varied_inputs()) {
     for (const unsigned rounds : {7u, 10u}) {
       EXPECT_EQ(quadmc::detail::ars4x32_software(counter, key, rounds),
                 quadmc::test_support::random123_ars4x32(rounds, counter, key))
           << rounds << " rounds, counter word 0 " << counter[0];
     }
-    const words reference = quadmc::test_support::random123_ars4x32(7, counter, key);
+    const ars_block reference = quadmc::test_support::random123_ars4x32(7, counter, key);
     for (const quadmc::simd_level level : quadmc::available_simd_levels()) {
       quadmc::set_simd_level(level);
       EXPECT_EQ(quadmc::detail::ars4x32_7(counter, key), reference)
@@ -109,11 +109,12 @@ TEST(Ars4x32, SoftwareAndAesNiEqualRandom123AtSevenAndTenRounds) {
 }
 
 // Uniform number `index` of (seed, stream) straight from Random123's ars.h and rng.hpp's
-// documented layout (key = (seed low, seed high, 0, 0), counter = (index/2 as two words, stream
-// as two words), word index%2, top 53 bits): an independent reference, not random_stream itself.
-double reference_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t index) {
+// documented layout (key = (seed low, seed high, 0, 0), counter = (index/2 as two ars_block, stream
+// as two ars_block), word index%2, top 53 bits): an independent reference, not random_stream
+// itself.
+double ars_reference_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t index) {
   const std::uint64_t block = index >> 1;
-  const words r = quadmc::test_support::random123_ars4x32(
+  const ars_block r = quadmc::test_support::random123_ars4x32(
       7,
       {static_cast<std::uint32_t>(block), static_cast<std::uint32_t>(block >> 32),
        static_cast<std::uint32_t>(stream), static_cast<std::uint32_t>(stream >> 32)},
@@ -124,7 +125,7 @@ double reference_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t
 }
 
 TEST(ArsBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
-  if (!cpu_has_aes()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
+  if (!cpu_has_aes_ni()) GTEST_SKIP() << "this CPU has no AES-NI, which Random123's ars.h needs";
   const simd_level_guard guard;
   // Starts crossing the tails of every kernel (8 and 32 blocks per step, 4 per VAES register),
   // odd indices, and the carry from the low to the high counter word at block 2³² (index 2³³).
@@ -146,12 +147,12 @@ TEST(ArsBlocks, EveryLevelEqualsRandom123ForAnyStartAndLength) {
         std::vector<double> out(length, -1.0);
         rng.fill_uniform(first, out);
         for (std::size_t k = 0; k < length; ++k) {
-          ASSERT_EQ(out[k], reference_uniform(seed, stream, first + k))
+          ASSERT_EQ(out[k], ars_reference_uniform(seed, stream, first + k))
               << "level " << quadmc::to_string(level) << " (" << quadmc::detail::ars_kernel()
               << "), first " << first << ", length " << length << ", k " << k;
         }
         if (length > 0) {
-          ASSERT_EQ(rng.uniform(first), reference_uniform(seed, stream, first));
+          ASSERT_EQ(rng.uniform(first), ars_reference_uniform(seed, stream, first));
         }
       }
     }
@@ -187,9 +188,9 @@ TEST(ArsBlocks, TheWidestKernelThisCpuHasRunsAtTheTopLevel) {
   const bool vaes = __get_cpuid_count(7, 0, &a, &b, &c, &d) != 0 && (c & (1u << 9)) != 0 &&
                     __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
   const std::string_view expected =
-      !cpu_has_aes() || quadmc::detected_simd_level() == quadmc::simd_level::scalar ? "software"
-      : vaes && quadmc::detected_simd_level() == quadmc::simd_level::avx512         ? "vaes"
-                                                                                    : "aesni";
+      !cpu_has_aes_ni() || quadmc::detected_simd_level() == quadmc::simd_level::scalar ? "software"
+      : vaes && quadmc::detected_simd_level() == quadmc::simd_level::avx512            ? "vaes"
+                                                                                       : "aesni";
   EXPECT_EQ(quadmc::detail::ars_kernel(), expected);
 #else
   EXPECT_EQ(quadmc::detail::ars_kernel(), "software");
