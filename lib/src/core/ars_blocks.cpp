@@ -147,6 +147,16 @@ ars_path active_path() {
   return ars_path::aesni;
 }
 
+// active_path() where nothing may throw: an invalid QUADMC_SIMD gives software, the same bits;
+// the batched kernels, which may throw, report it.
+ars_path path_or_software() noexcept {
+  try {
+    return active_path();
+  } catch (...) {
+    return ars_path::software;
+  }
+}
+
 }  // namespace
 
 ars_words ars4x32_software(const ars_words& counter, const ars_words& key,
@@ -177,13 +187,7 @@ void ars_uniform_blocks_software(const ars_counter_key& k, std::uint64_t first_b
 
 ars_words ars4x32_7(const ars_words& counter, const ars_words& key) noexcept {
 #if defined(__x86_64__)
-  bool aes = false;
-  try {
-    aes = active_path() != ars_path::software;
-  } catch (...) {
-    // An invalid QUADMC_SIMD: the same bits in software; the batched kernels report it.
-  }
-  if (aes) return ars4x32_7_aesni(counter, key);
+  if (path_or_software() != ars_path::software) return ars4x32_7_aesni(counter, key);
 #endif
   return ars4x32_software(counter, key, ars_rounds);
 }
@@ -206,17 +210,13 @@ void ars_uniform_blocks(std::uint32_t key0, std::uint32_t key1, std::uint32_t st
 }
 
 std::string_view ars_kernel() noexcept {
-  try {
-    switch (active_path()) {
-      case ars_path::vaes:
-        return "vaes";
-      case ars_path::aesni:
-        return "aesni";
-      default:
-        return "software";
-    }
-  } catch (...) {
-    return "software";  // an invalid QUADMC_SIMD: the run itself reports it
+  switch (path_or_software()) {
+    case ars_path::vaes:
+      return "vaes";
+    case ars_path::aesni:
+      return "aesni";
+    default:
+      return "software";
   }
 }
 
