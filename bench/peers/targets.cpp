@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 namespace quadmc::peers {
 
@@ -63,33 +64,17 @@ std::vector<target_spec> performance_targets(std::uint64_t two_thread_min_n) {
   per_evaluation("quadmc sobol fast_owen", 1.0);
   per_evaluation("quadmc sobol owen", 0.5);
   per_evaluation("quadmc lattice shift", 1.5);
-  t.push_back({"plain MC (1 thread) / integrand only (batch in cache)",
-               "throughput",
-               mc,
-               1,
-               integrand_only_method,
-               1,
-               0.5,
-               genz,
-               {8},
-               0,
-               false,
-               ""});
-  // The same goal with ARS's uniforms: at s = 8 plain MC draws eight per point, and Philox's
-  // cost several times the integrand's there (bench/peers/profile_notes.md), ARS's a few AES
-  // instructions per block (docs/theory.md#counter-based-generators).
-  t.push_back({"plain MC with ARS (1 thread) / integrand only (batch in cache)",
-               "throughput",
-               plain_mc_ars_method,
-               1,
-               integrand_only_method,
-               1,
-               0.5,
-               genz,
-               {8},
-               0,
-               false,
-               ""});
+  // Plain MC against the integrand alone at s = 8, under each generator: at s = 8 plain MC draws
+  // eight uniforms per point, and Philox's cost several times the integrand's there
+  // (bench/peers/profile_notes.md), ARS's a few AES instructions per block
+  // (docs/theory.md#counter-based-generators).
+  for (const auto& [label, method] :
+       {std::pair{"plain MC (1 thread) / integrand only (batch in cache)", mc},
+        std::pair{"plain MC with ARS (1 thread) / integrand only (batch in cache)",
+                  std::string(plain_mc_ars_method)}}) {
+    t.push_back(
+        {label, "throughput", method, 1, integrand_only_method, 1, 0.5, genz, {8}, 0, false, ""});
+  }
   for (const char* m :
        {"quadmc plain MC", "quadmc jittered", "quadmc Latin hypercube", "quadmc tensor Simpson",
         "quadmc tensor trapezoid", "quadmc sobol lms_shift", "quadmc sobol fast_owen",
